@@ -1,0 +1,1 @@
+//! Cam mechanisms: motion laws, sizing, profiles (no I/O).

@@ -1,0 +1,18 @@
+//! `tmm forces`.
+
+use std::path::PathBuf;
+
+use tmm_report::Error;
+
+/// Arguments of `tmm forces`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The task file (TOML)
+    pub file: Option<PathBuf>,
+}
+
+/// Run the command.
+pub fn run(a: &Args) -> Result<(), Error> {
+    let _ = a;
+    Err(Error::input("forces", "not available yet"))
+}

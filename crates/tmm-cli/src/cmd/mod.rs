@@ -1,0 +1,9 @@
+//! One file per subcommand; each has `Args` (clap) and `run`.
+
+pub mod cam;
+pub mod common;
+pub mod forces;
+pub mod gear;
+pub mod linkage;
+pub mod planetary;
+pub mod run;

@@ -1,0 +1,59 @@
+//! `tmm` — the Theory of Mechanisms and Machines (ТММ) on the command line.
+//!
+//! Each subcommand lives in its own file under `cmd/`; this file only parses
+//! the command line and turns errors into messages and exit codes
+//! (2: bad input, 1: a failed write).
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+mod cmd;
+
+/// tmm: the Theory of Mechanisms and Machines (ТММ) course project and everyday
+/// mechanism calculations — lever mechanisms, forces, gears, planetary trains, cams.
+#[derive(Parser)]
+#[command(name = "tmm", version, about, long_about = None, after_help = AFTER_HELP)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+const AFTER_HELP: &str = "Units: values take units (\"120 mm\", \"900 rpm\", \"15 deg\", \"3 kN\"); a plain number is SI, except angles (degrees).\nJSON output (--json) is SI with angles in radians.\nExit codes: 0 done, 2 bad input, 1 a file could not be written.\nExamples:\n  tmm run                                   the embedded default course project into ./tmm-out/\n  tmm run examples/seed-001-fourbar.toml    every section of a task file\n  tmm linkage examples/seed-001-fourbar.toml --at 15";
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run every section of a task file (or, with no file, the embedded default course project) into an output folder
+    Run(cmd::run::Args),
+    /// Lever mechanism: structure (Assur groups) and kinematics (12 positions, plans, diagrams)
+    Linkage(cmd::linkage::Args),
+    /// Kinetostatics: inertia loads, reactions, balancing torque, Zhukovsky's lever, strength of a link
+    Forces(cmd::forces::Args),
+    /// Involute spur gear pair with profile shift: geometry, checks, blocking contour, meshing drawing
+    #[command(subcommand)]
+    Gear(cmd::gear::GearCommand),
+    /// Planetary gear train: tooth numbers for a ratio and number of planets
+    Planetary(cmd::planetary::Args),
+    /// Cam mechanism: motion law, minimum size, profile
+    Cam(cmd::cam::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Run(a) => cmd::run::run(a),
+        Command::Linkage(a) => cmd::linkage::run(a),
+        Command::Forces(a) => cmd::forces::run(a),
+        Command::Gear(a) => cmd::gear::run(a),
+        Command::Planetary(a) => cmd::planetary::run(a),
+        Command::Cam(a) => cmd::cam::run(a),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            let code = e.exit_code();
+            eprintln!("{:?}", miette::Report::new(e));
+            ExitCode::from(code as u8)
+        }
+    }
+}

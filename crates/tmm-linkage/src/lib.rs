@@ -1,0 +1,1 @@
+//! Planar lever mechanisms: description, structural analysis, kinematics, kinetostatics (no I/O).

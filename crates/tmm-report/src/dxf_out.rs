@@ -1,0 +1,98 @@
+//! DXF drawings for AutoCAD and KOMPAS: a thin layer over the `dxf` crate with
+//! named, coloured layers and the entities tmm draws (lines, polylines, circles,
+//! arcs, text). Coordinates are in millimetres (the unit CAD users expect);
+//! callers convert from SI.
+
+use dxf::entities::{Arc, Circle, Entity, EntityType, Line, LwPolyline, Text};
+use dxf::enums::{AcadVersion, Units};
+use dxf::tables::Layer;
+use dxf::{Color, Drawing, LwPolylineVertex, Point};
+
+/// A DXF document under construction.
+pub struct DxfDoc {
+    drawing: Drawing,
+    layer: String,
+}
+
+impl Default for DxfDoc {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl DxfDoc {
+    /// An empty AutoCAD 2000 drawing in millimetres.
+    pub fn new() -> Self {
+        let mut drawing = Drawing::new();
+        drawing.header.version = AcadVersion::R2000;
+        drawing.header.default_drawing_units = Units::Millimeters;
+        DxfDoc { drawing, layer: "0".to_string() }
+    }
+
+    /// Add a layer with an AutoCAD colour index (1 red, 2 yellow, 3 green,
+    /// 4 cyan, 5 blue, 6 magenta, 7 white/black) and make it current.
+    pub fn layer(&mut self, name: &str, aci: u8) {
+        if !self.drawing.layers().any(|l| l.name == name) {
+            self.drawing.add_layer(Layer { name: name.to_string(), color: Color::from_index(aci), ..Default::default() });
+        }
+        self.layer = name.to_string();
+    }
+
+    fn add(&mut self, t: EntityType) {
+        let mut e = Entity::new(t);
+        e.common.layer = self.layer.clone();
+        self.drawing.add_entity(e);
+    }
+
+    /// A line segment (mm).
+    pub fn line(&mut self, a: (f64, f64), b: (f64, f64)) {
+        if [a.0, a.1, b.0, b.1].iter().all(|v| v.is_finite()) {
+            self.add(EntityType::Line(Line::new(Point::new(a.0, a.1, 0.0), Point::new(b.0, b.1, 0.0))));
+        }
+    }
+
+    /// A polyline through points (mm); non-finite points are dropped.
+    pub fn polyline(&mut self, pts: &[(f64, f64)], closed: bool) {
+        let mut p = LwPolyline::default();
+        p.vertices = pts.iter().filter(|q| q.0.is_finite() && q.1.is_finite()).map(|&(x, y)| LwPolylineVertex { x, y, ..Default::default() }).collect();
+        if p.vertices.len() < 2 {
+            return;
+        }
+        p.set_is_closed(closed);
+        self.add(EntityType::LwPolyline(p));
+    }
+
+    /// A circle (mm).
+    pub fn circle(&mut self, c: (f64, f64), r: f64) {
+        if [c.0, c.1, r].iter().all(|v| v.is_finite()) && r > 0.0 {
+            self.add(EntityType::Circle(Circle::new(Point::new(c.0, c.1, 0.0), r)));
+        }
+    }
+
+    /// An arc (mm) from `a0` to `a1` degrees, counter-clockwise.
+    pub fn arc(&mut self, c: (f64, f64), r: f64, a0_deg: f64, a1_deg: f64) {
+        if [c.0, c.1, r, a0_deg, a1_deg].iter().all(|v| v.is_finite()) && r > 0.0 {
+            self.add(EntityType::Arc(Arc::new(Point::new(c.0, c.1, 0.0), r, a0_deg, a1_deg)));
+        }
+    }
+
+    /// Text (mm).
+    pub fn text(&mut self, at: (f64, f64), height: f64, value: &str) {
+        if at.0.is_finite() && at.1.is_finite() {
+            let t = Text { location: Point::new(at.0, at.1, 0.0), text_height: height, value: value.to_string(), ..Default::default() };
+            self.add(EntityType::Text(t));
+        }
+    }
+
+    /// Write the drawing to a file.
+    pub fn save(&self, path: &std::path::Path) -> Result<(), crate::Error> {
+        self.drawing.save_file(path).map_err(|e| crate::Error::io(path, e))
+    }
+
+    /// The drawing as DXF text (for tests).
+    pub fn to_text(&self) -> Result<String, crate::Error> {
+        let mut buf = Vec::new();
+        self.drawing.save(&mut buf).map_err(|e| crate::Error::Io(e.to_string()))?;
+        Ok(String::from_utf8_lossy(&buf).into_owned())
+    }
+}

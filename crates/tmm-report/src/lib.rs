@@ -1,0 +1,33 @@
+//! The edge between tmm's core crates and its users: task files (TOML) with
+//! located errors, human tables, JSON documents, SVG and DXF drawings.
+//!
+//! One folder per area of the course project; each reads its own section of
+//! the task file and writes its own outputs:
+//!
+//! | module | section | core crate |
+//! | --- | --- | --- |
+//! | [`linkage`] | `[linkage]` | `tmm-linkage` (structure, kinematics) |
+//! | [`forces`] | `[forces]` | `tmm-linkage` (kinetostatics, strength) |
+//! | [`gear`] | `[gear]` | `tmm-gears` |
+//! | [`planetary`] | `[planetary]` | `tmm-planetary` |
+//! | [`cam`] | `[cam]` | `tmm-cams` |
+//!
+//! Shared pieces: [`error`] (the one error type, exit codes), [`task`]
+//! (sources, quantities with units), [`svg`] (a canvas and a plotter),
+//! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
+
+pub mod cam;
+pub mod dxf_out;
+pub mod error;
+pub mod forces;
+pub mod gear;
+pub mod linkage;
+pub mod output;
+pub mod planetary;
+pub mod run;
+pub mod svg;
+pub mod task;
+
+pub use error::Error;
+pub use output::SectionOutput;
+pub use task::TaskSource;

@@ -1,0 +1,432 @@
+//! A small SVG canvas in world coordinates (metres or any model unit, y up),
+//! mapped onto paper in millimetres (y down), with the primitives the course
+//! drawings need: lines, polylines, circles, arcs, arrows, text, dashed and
+//! thin/thick line styles, and a plot frame with axes.
+//!
+//! Every drawing module of tmm-report builds on this one file.
+
+use std::fmt::Write as _;
+
+/// Line style of a stroke.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Style {
+    /// Stroke width on paper, mm.
+    pub width: f64,
+    /// Stroke colour (`#rrggbb` or a CSS name).
+    pub color: &'static str,
+    /// Dash pattern on paper, mm (None: solid).
+    pub dash: Option<(f64, f64)>,
+    /// Fill colour (None: no fill).
+    pub fill: Option<&'static str>,
+}
+
+impl Style {
+    /// Thick solid black line (contour lines, ГОСТ 2.303 "сплошная основная").
+    pub const THICK: Style = Style { width: 0.7, color: "#000000", dash: None, fill: None };
+    /// Thin solid line (construction, dimension lines).
+    pub const THIN: Style = Style { width: 0.25, color: "#000000", dash: None, fill: None };
+    /// Thin dash-dot line (centre lines, pitch circles).
+    pub const AXIS: Style = Style { width: 0.25, color: "#000000", dash: Some((6.0, 1.5)), fill: None };
+    /// Thin dashed line (hidden or auxiliary).
+    pub const DASHED: Style = Style { width: 0.25, color: "#000000", dash: Some((2.0, 1.5)), fill: None };
+
+    /// The same style in another colour.
+    pub const fn colored(self, color: &'static str) -> Style {
+        Style { color, ..self }
+    }
+    /// The same style with another width.
+    pub const fn widened(self, width: f64) -> Style {
+        Style { width, ..self }
+    }
+    /// The same style filled.
+    pub const fn filled(self, fill: &'static str) -> Style {
+        Style { fill: Some(fill), ..self }
+    }
+}
+
+/// Text anchor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Anchor {
+    /// Text starts at the point.
+    Start,
+    /// Text is centred on the point.
+    Middle,
+    /// Text ends at the point.
+    End,
+}
+
+/// An SVG document: a paper of `width × height` mm, with a world window.
+#[derive(Debug, Clone)]
+pub struct Canvas {
+    width: f64,
+    height: f64,
+    scale: f64,
+    ox: f64,
+    oy: f64,
+    body: String,
+}
+
+impl Canvas {
+    /// A blank paper of the given size in mm, world = paper (1 unit = 1 mm, y up,
+    /// origin at the bottom-left corner).
+    pub fn new(width_mm: f64, height_mm: f64) -> Self {
+        Canvas { width: width_mm, height: height_mm, scale: 1.0, ox: 0.0, oy: 0.0, body: String::new() }
+    }
+
+    /// Map the world box `[xmin, xmax] × [ymin, ymax]` into the paper box
+    /// `(left, bottom, width, height)` mm, keeping the aspect ratio (centred).
+    /// Returns the scale: paper mm per world unit.
+    pub fn fit(&mut self, world: (f64, f64, f64, f64), paper: (f64, f64, f64, f64)) -> f64 {
+        let (xmin, xmax, ymin, ymax) = world;
+        let (left, bottom, w, h) = paper;
+        let ww = (xmax - xmin).abs().max(1e-12);
+        let wh = (ymax - ymin).abs().max(1e-12);
+        let s = (w / ww).min(h / wh);
+        self.scale = s;
+        self.ox = left + 0.5 * (w - s * ww) - s * xmin;
+        self.oy = bottom + 0.5 * (h - s * wh) - s * ymin;
+        s
+    }
+
+    /// Set the mapping directly: paper = origin + scale · world (y up).
+    pub fn set_transform(&mut self, scale: f64, origin_mm: (f64, f64)) {
+        self.scale = scale;
+        self.ox = origin_mm.0;
+        self.oy = origin_mm.1;
+    }
+
+    /// The current scale, paper mm per world unit.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// World point to paper coordinates (mm, y down as SVG wants).
+    pub fn to_paper(&self, x: f64, y: f64) -> (f64, f64) {
+        (self.ox + self.scale * x, self.height - (self.oy + self.scale * y))
+    }
+
+    fn style_attr(s: &Style) -> String {
+        let mut a = format!("stroke=\"{}\" stroke-width=\"{:.3}\" fill=\"{}\"", s.color, s.width, s.fill.unwrap_or("none"));
+        if let Some((d, g)) = s.dash {
+            let _ = write!(a, " stroke-dasharray=\"{d:.2} {g:.2}\"");
+        }
+        a
+    }
+
+    /// A line segment between two world points.
+    pub fn line(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
+        if !finite(&[a.0, a.1, b.0, b.1]) {
+            return;
+        }
+        let (x1, y1) = self.to_paper(a.0, a.1);
+        let (x2, y2) = self.to_paper(b.0, b.1);
+        let _ = writeln!(self.body, "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {} stroke-linecap=\"round\"/>", Self::style_attr(&s));
+    }
+
+    /// An open polyline through world points (non-finite points are skipped).
+    pub fn polyline(&mut self, pts: &[(f64, f64)], s: Style) {
+        self.poly(pts, s, false);
+    }
+
+    /// A closed polygon through world points.
+    pub fn polygon(&mut self, pts: &[(f64, f64)], s: Style) {
+        self.poly(pts, s, true);
+    }
+
+    fn poly(&mut self, pts: &[(f64, f64)], s: Style, closed: bool) {
+        let mut d = String::new();
+        for &(x, y) in pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
+            let (px, py) = self.to_paper(x, y);
+            let _ = write!(d, "{px:.3},{py:.3} ");
+        }
+        if d.is_empty() {
+            return;
+        }
+        let tag = if closed { "polygon" } else { "polyline" };
+        let _ = writeln!(self.body, "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>", d.trim_end(), Self::style_attr(&s));
+    }
+
+    /// A circle of world radius `r`.
+    pub fn circle(&mut self, c: (f64, f64), r: f64, s: Style) {
+        if !finite(&[c.0, c.1, r]) {
+            return;
+        }
+        let (x, y) = self.to_paper(c.0, c.1);
+        let _ = writeln!(self.body, "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{:.3}\" {}/>", (r * self.scale).abs(), Self::style_attr(&s));
+    }
+
+    /// A dot of paper radius `r_mm` (a joint, a point of a plan).
+    pub fn dot(&mut self, c: (f64, f64), r_mm: f64, fill: &'static str) {
+        if !finite(&[c.0, c.1]) {
+            return;
+        }
+        let (x, y) = self.to_paper(c.0, c.1);
+        let _ = writeln!(self.body, "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{r_mm:.3}\" fill=\"{fill}\" stroke=\"#000\" stroke-width=\"0.25\"/>");
+    }
+
+    /// A revolute joint: a small open circle of paper radius `r_mm`.
+    pub fn joint(&mut self, c: (f64, f64), r_mm: f64) {
+        self.dot(c, r_mm, "#ffffff");
+    }
+
+    /// A fixed pivot: a joint with the hatched ground triangle beneath it.
+    pub fn fixed_pivot(&mut self, c: (f64, f64), r_mm: f64) {
+        let (x, y) = self.to_paper(c.0, c.1);
+        if !finite(&[x, y]) {
+            return;
+        }
+        let h = 3.0 * r_mm;
+        let _ = writeln!(
+            self.body,
+            "<polygon points=\"{x:.3},{y:.3} {:.3},{:.3} {:.3},{:.3}\" fill=\"none\" stroke=\"#000\" stroke-width=\"0.35\"/>",
+            x - h,
+            y + 1.6 * h,
+            x + h,
+            y + 1.6 * h
+        );
+        for i in 0..5 {
+            let hx = x - 1.3 * h + i as f64 * 0.65 * h;
+            let _ = writeln!(self.body, "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" stroke=\"#000\" stroke-width=\"0.25\"/>", hx + 0.6 * h, y + 1.6 * h, hx, y + 2.3 * h);
+        }
+        self.joint(c, r_mm);
+    }
+
+    /// A circular arc of world radius `r` from angle `a0` to `a1` (rad, CCW).
+    pub fn arc(&mut self, c: (f64, f64), r: f64, a0: f64, a1: f64, s: Style) {
+        let n = ((a1 - a0).abs() / 0.02).ceil().clamp(2.0, 2000.0) as usize;
+        let pts: Vec<(f64, f64)> = (0..=n)
+            .map(|i| {
+                let a = a0 + (a1 - a0) * i as f64 / n as f64;
+                (c.0 + r * a.cos(), c.1 + r * a.sin())
+            })
+            .collect();
+        self.polyline(&pts, s);
+    }
+
+    /// An arrow from `a` to `b` (world) with a head of paper length `head_mm`.
+    pub fn arrow(&mut self, a: (f64, f64), b: (f64, f64), s: Style, head_mm: f64) {
+        if !finite(&[a.0, a.1, b.0, b.1]) {
+            return;
+        }
+        let (x1, y1) = self.to_paper(a.0, a.1);
+        let (x2, y2) = self.to_paper(b.0, b.1);
+        let (dx, dy) = (x2 - x1, y2 - y1);
+        let len = (dx * dx + dy * dy).sqrt();
+        let _ = writeln!(self.body, "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {}/>", Self::style_attr(&Style { fill: None, ..s }));
+        if len < 1e-9 {
+            return;
+        }
+        let h = head_mm.min(0.5 * len);
+        let (ux, uy) = (dx / len, dy / len);
+        let (bx, by) = (x2 - h * ux, y2 - h * uy);
+        let w = 0.3 * h;
+        let _ = writeln!(
+            self.body,
+            "<polygon points=\"{x2:.3},{y2:.3} {:.3},{:.3} {:.3},{:.3}\" fill=\"{}\" stroke=\"none\"/>",
+            bx - w * uy,
+            by + w * ux,
+            bx + w * uy,
+            by - w * ux,
+            s.color
+        );
+    }
+
+    /// Text at a world point, `size_mm` high.
+    pub fn text(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor) {
+        self.text_colored(at, text, size_mm, anchor, "#000000");
+    }
+
+    /// Coloured text at a world point.
+    pub fn text_colored(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor, color: &str) {
+        if !finite(&[at.0, at.1]) {
+            return;
+        }
+        let (x, y) = self.to_paper(at.0, at.1);
+        self.text_paper((x, y), text, size_mm, anchor, color);
+    }
+
+    /// Text at a paper position (mm from the top-left corner).
+    pub fn text_paper(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor, color: &str) {
+        let a = match anchor {
+            Anchor::Start => "start",
+            Anchor::Middle => "middle",
+            Anchor::End => "end",
+        };
+        let _ = writeln!(
+            self.body,
+            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
+            at.0,
+            at.1,
+            escape(text)
+        );
+    }
+
+    /// A line on paper coordinates (mm from the top-left corner).
+    pub fn line_paper(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
+        let _ = writeln!(self.body, "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" {}/>", a.0, a.1, b.0, b.1, Self::style_attr(&s));
+    }
+
+    /// Open a group (`<g>`) with an id, e.g. a layer; close it with [`Canvas::end_group`].
+    pub fn begin_group(&mut self, id: &str) {
+        let _ = writeln!(self.body, "<g id=\"{}\">", escape(id));
+    }
+
+    /// Close the last group.
+    pub fn end_group(&mut self) {
+        self.body.push_str("</g>\n");
+    }
+
+    /// The SVG document.
+    pub fn finish(&self) -> String {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">\n<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{}</svg>\n",
+            self.body,
+            w = self.width,
+            h = self.height
+        )
+    }
+}
+
+fn finite(xs: &[f64]) -> bool {
+    xs.iter().all(|x| x.is_finite())
+}
+
+/// Escape text for XML.
+pub fn escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// One curve of a plot: a name, points and a colour.
+#[derive(Debug, Clone)]
+pub struct Series<'a> {
+    /// Legend text.
+    pub name: &'a str,
+    /// The points (x, y).
+    pub points: &'a [(f64, f64)],
+    /// Line colour.
+    pub color: &'static str,
+}
+
+/// A line plot with axes, ticks, labels and a legend on a `width × height` mm
+/// paper: the kinematic diagrams, the balancing torque over the cycle, the
+/// specific sliding, the motion laws.
+pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], width: f64, height: f64) -> String {
+    let mut c = Canvas::new(width, height);
+    let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for s in series {
+        for &(x, y) in s.points.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
+            xmin = xmin.min(x);
+            xmax = xmax.max(x);
+            ymin = ymin.min(y);
+            ymax = ymax.max(y);
+        }
+    }
+    if !xmin.is_finite() {
+        (xmin, xmax, ymin, ymax) = (0.0, 1.0, 0.0, 1.0);
+    }
+    ymin = ymin.min(0.0);
+    ymax = ymax.max(0.0);
+    if (ymax - ymin) < 1e-300 {
+        ymax = ymin + 1.0;
+    }
+    if (xmax - xmin) < 1e-300 {
+        xmax = xmin + 1.0;
+    }
+    let (yt0, yt1, ystep) = nice_ticks(ymin, ymax, 6);
+    let (xt0, xt1, xstep) = nice_ticks(xmin, xmax, 8);
+    let (left, bottom, pw, ph) = (22.0, 16.0, width - 30.0, height - 30.0);
+    // independent scales on x and y
+    let sx = pw / (xt1 - xt0);
+    let sy = ph / (yt1 - yt0);
+    let map = |x: f64, y: f64| (left + (x - xt0) * sx, height - (bottom + (y - yt0) * sy));
+    c.text_paper((width / 2.0, 7.0), title, 4.0, Anchor::Middle, "#000");
+    // grid and ticks
+    let grid = Style { width: 0.1, color: "#bbbbbb", dash: None, fill: None };
+    let mut y = yt0;
+    while y <= yt1 + 0.5 * ystep {
+        let (x0p, yp) = map(xt0, y);
+        let (x1p, _) = map(xt1, y);
+        c.line_paper((x0p, yp), (x1p, yp), grid);
+        c.text_paper((x0p - 1.5, yp + 1.0), &fmt_tick(y, ystep), 2.6, Anchor::End, "#000");
+        y += ystep;
+    }
+    let mut x = xt0;
+    while x <= xt1 + 0.5 * xstep {
+        let (xp, y0p) = map(x, yt0);
+        let (_, y1p) = map(x, yt1);
+        c.line_paper((xp, y0p), (xp, y1p), grid);
+        c.text_paper((xp, y0p + 4.0), &fmt_tick(x, xstep), 2.6, Anchor::Middle, "#000");
+        x += xstep;
+    }
+    // axes through zero
+    let (ax0, ay0) = map(xt0, 0.0f64.clamp(yt0, yt1));
+    let (ax1, _) = map(xt1, 0.0f64.clamp(yt0, yt1));
+    c.line_paper((ax0, ay0), (ax1, ay0), Style::THIN.widened(0.35));
+    let (bx, by0) = map(xt0, yt0);
+    let (_, by1) = map(xt0, yt1);
+    c.line_paper((bx, by0), (bx, by1), Style::THIN.widened(0.35));
+    c.text_paper(((ax0 + ax1) / 2.0, height - 3.0), xlabel, 3.0, Anchor::Middle, "#000");
+    let _ = writeln!(
+        c.body,
+        "<text x=\"5\" y=\"{:.2}\" font-size=\"3\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"middle\" transform=\"rotate(-90 5 {:.2})\">{}</text>",
+        height / 2.0,
+        height / 2.0,
+        escape(ylabel)
+    );
+    for (k, s) in series.iter().enumerate() {
+        let mut d = String::new();
+        let mut pen = false;
+        for &(x, y) in s.points {
+            if !(x.is_finite() && y.is_finite()) {
+                pen = false;
+                continue;
+            }
+            let (px, py) = map(x, y);
+            let _ = write!(d, "{}{px:.3},{py:.3} ", if pen { "L" } else { "M" });
+            pen = true;
+        }
+        let _ = writeln!(c.body, "<path d=\"{}\" stroke=\"{}\" stroke-width=\"0.45\" fill=\"none\"/>", d.trim_end(), s.color);
+        if series.len() > 1 || !s.name.is_empty() {
+            let ly = 14.0 + 4.5 * k as f64;
+            c.line_paper((width - 48.0, ly - 1.0), (width - 42.0, ly - 1.0), Style { width: 0.6, color: s.color, dash: None, fill: None });
+            c.text_paper((width - 40.0, ly), s.name, 2.8, Anchor::Start, "#000");
+        }
+    }
+    c.finish()
+}
+
+/// Round tick marks covering `[lo, hi]` with about `n` steps: (first, last, step).
+///
+/// ```
+/// let (a, b, s) = tmm_report::svg::nice_ticks(0.0, 9.3, 5);
+/// assert_eq!((a, b, s), (0.0, 10.0, 2.0));
+/// ```
+pub fn nice_ticks(lo: f64, hi: f64, n: usize) -> (f64, f64, f64) {
+    let span = (hi - lo).abs().max(1e-300);
+    let raw = span / n.max(1) as f64;
+    let mag = 10f64.powf(raw.log10().floor());
+    let norm = raw / mag;
+    let step = mag
+        * if norm <= 1.0 {
+            1.0
+        } else if norm <= 2.0 {
+            2.0
+        } else if norm <= 2.5 {
+            2.5
+        } else if norm <= 5.0 {
+            5.0
+        } else {
+            10.0
+        };
+    ((lo / step).floor() * step, (hi / step).ceil() * step, step)
+}
+
+fn fmt_tick(v: f64, step: f64) -> String {
+    let v = if v.abs() < 1e-9 * step { 0.0 } else { v };
+    let decimals = (-step.log10().floor()).max(0.0) as usize;
+    if v.abs() >= 1e5 || (v != 0.0 && v.abs() < 1e-3) {
+        format!("{v:.2e}")
+    } else {
+        format!("{v:.decimals$}")
+    }
+}

@@ -1,0 +1,126 @@
+//! Task files (TOML): the source text, quantities with units, and the
+//! conversion of parse errors into located [`Error`]s.
+//!
+//! Each area (`linkage`, `forces`, `gear`, `planetary`, `cam`) reads its own
+//! section from the whole text with its own `serde` structs, so byte spans
+//! point into the file the user wrote.
+
+use std::ops::Range;
+
+use serde::Deserialize;
+use tmm_geom::units::{self, Dim};
+
+use crate::Error;
+
+/// A task file's name (for messages) and text.
+#[derive(Debug, Clone)]
+pub struct TaskSource {
+    /// The name shown in messages, e.g. `examples/seed-001-fourbar.toml`.
+    pub name: String,
+    /// The whole TOML text.
+    pub text: String,
+}
+
+/// The top-level sections a task file may have.
+pub const SECTIONS: &[&str] = &["title", "linkage", "forces", "gear", "planetary", "cam"];
+
+impl TaskSource {
+    /// A task from its name and text.
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
+        TaskSource { name: name.into(), text: text.into() }
+    }
+
+    /// 1-based line and column of a byte offset.
+    ///
+    /// ```
+    /// let t = tmm_report::TaskSource::new("t.toml", "a = 1\nbb = 2\n");
+    /// assert_eq!(t.line_col(8), (2, 3));
+    /// ```
+    pub fn line_col(&self, offset: usize) -> (usize, usize) {
+        let off = offset.min(self.text.len());
+        let before = &self.text[..off];
+        let line = before.matches('\n').count() + 1;
+        let col = before.rfind('\n').map_or(off, |p| off - p - 1) + 1;
+        (line, col)
+    }
+
+    /// Deserialize the whole file into `T` (an area's view of the file),
+    /// turning a TOML or schema error into a located [`Error`].
+    pub fn parse<T: for<'de> Deserialize<'de>>(&self, section: &str) -> Result<T, Error> {
+        toml::from_str::<T>(&self.text).map_err(|e| self.toml_error(section, &e))
+    }
+
+    /// A `toml` error as a located input error.
+    pub fn toml_error(&self, section: &str, e: &toml::de::Error) -> Error {
+        let msg = e.message().trim().to_string();
+        match e.span() {
+            Some(span) => Error::at(self, span, section, msg),
+            None => Error::input(&format!("{}: {section}", self.name), msg),
+        }
+    }
+
+    /// Check that every top-level key is a known section.
+    pub fn check_sections(&self) -> Result<toml::Table, Error> {
+        let doc: toml::Spanned<toml::Table> = self.parse("task file")?;
+        let table = doc.into_inner();
+        for key in table.keys() {
+            if !SECTIONS.contains(&key.as_str()) {
+                let pos = self.find_key(key).unwrap_or(0..0);
+                return Err(Error::at(self, pos, key, "unknown section").with_help(format!("a task file has the sections {}", SECTIONS.join(", "))));
+            }
+        }
+        Ok(table)
+    }
+
+    fn find_key(&self, key: &str) -> Option<Range<usize>> {
+        let needle = format!("[{key}");
+        self.text.find(&needle).map(|p| p + 1..p + 1 + key.len()).or_else(|| self.text.find(key).map(|p| p..p + key.len()))
+    }
+}
+
+/// A quantity as written in a task file: a plain number or a string with a unit.
+#[derive(Debug, Clone, Deserialize, PartialEq)]
+#[serde(untagged)]
+pub enum RawQty {
+    /// A number, SI (degrees for an angle).
+    Num(f64),
+    /// A string with a unit, e.g. `"120 mm"`.
+    Text(String),
+}
+
+/// A quantity with its place in the file.
+pub type Qty = toml::Spanned<RawQty>;
+
+/// Convert a task-file quantity to SI, or say which field is malformed.
+///
+/// ```
+/// use tmm_report::task::{qty, TaskSource, Qty};
+/// use tmm_geom::units::Dim;
+/// #[derive(serde::Deserialize)] struct F { l: Qty }
+/// let t = TaskSource::new("t.toml", "l = \"120 mm\"\n");
+/// let f: F = t.parse("l").unwrap();
+/// assert!((qty(&t, "l", &f.l, Dim::Length).unwrap() - 0.12).abs() < 1e-15);
+/// let bad = TaskSource::new("t.toml", "l = \"12 kg\"\n");
+/// let f: F = bad.parse("l").unwrap();
+/// let e = qty(&bad, "l", &f.l, Dim::Length).unwrap_err();
+/// assert_eq!(e.exit_code(), 2);
+/// assert!(e.to_string().starts_with("t.toml:1:5: l:"));
+/// ```
+pub fn qty(task: &TaskSource, field: &str, q: &Qty, dim: Dim) -> Result<f64, Error> {
+    let r = match q.get_ref() {
+        RawQty::Num(x) => units::from_number(*x, dim),
+        RawQty::Text(s) => units::parse(s, dim),
+    };
+    r.map_err(|e| Error::at(task, q.span(), field, e))
+}
+
+/// Parse a command-line quantity (`--module "5 mm"`), naming the option on error.
+///
+/// ```
+/// use tmm_geom::units::Dim;
+/// assert!((tmm_report::task::arg_qty("--module", "5 mm", Dim::Length).unwrap() - 0.005).abs() < 1e-15);
+/// assert_eq!(tmm_report::task::arg_qty("--module", "5 kg", Dim::Length).unwrap_err().exit_code(), 2);
+/// ```
+pub fn arg_qty(option: &str, text: &str, dim: Dim) -> Result<f64, Error> {
+    units::parse(text, dim).map_err(|e| Error::input(option, e))
+}
