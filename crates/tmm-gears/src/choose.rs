@@ -1,0 +1,1 @@
+//! Choosing x1, x2 by a named criterion.

@@ -1,0 +1,1 @@
+//! Tooth profiles by simulating generation with the rack cutter.

@@ -1,0 +1,71 @@
+//! The basic rack profile (исходный контур) that generates the wheels.
+
+use crate::GearError;
+
+/// The basic rack (исходный контур, GOST 13755-81 / ISO 53): profile angle α,
+/// addendum coefficient ha*, clearance coefficient c*, boundary-height
+/// coefficient hl* (коэффициент граничной высоты: the straight flank spans
+/// hl*·m in all).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BasicRack {
+    /// Profile angle α, rad (угол профиля).
+    pub alpha: f64,
+    /// Addendum coefficient ha* (коэффициент высоты головки).
+    pub ha: f64,
+    /// Clearance coefficient c* (коэффициент радиального зазора).
+    pub c: f64,
+    /// Boundary-height coefficient hl* (коэффициент граничной высоты).
+    pub hl: f64,
+}
+
+impl Default for BasicRack {
+    /// GOST 13755-81: α = 20°, ha* = 1, c* = 0.25, hl* = 2.
+    fn default() -> Self {
+        BasicRack { alpha: 20f64.to_radians(), ha: 1.0, c: 0.25, hl: 2.0 }
+    }
+}
+
+impl BasicRack {
+    /// Check the ranges: 5° < α < 45°, ha* > 0, c* ≥ 0, ha* ≤ hl* − ha* + … such
+    /// that the cutter's tip fillet has a non-negative radius.
+    pub fn validate(&self) -> Result<(), GearError> {
+        if !(self.alpha.is_finite() && self.alpha > 5f64.to_radians() && self.alpha < 45f64.to_radians()) {
+            return Err(GearError::Rack("the profile angle α must lie between 5° and 45°"));
+        }
+        if !(self.ha.is_finite() && self.ha > 0.0 && self.ha <= 3.0) {
+            return Err(GearError::Rack("ha* must lie in (0, 3]"));
+        }
+        if !(self.c.is_finite() && self.c >= 0.0 && self.c <= 1.0) {
+            return Err(GearError::Rack("c* must lie in [0, 1]"));
+        }
+        if !(self.hl.is_finite() && self.hl > self.ha && self.hl <= 2.0 * self.ha + self.c) {
+            return Err(GearError::Rack("hl* must lie in (ha*, 2·ha* + c*]"));
+        }
+        Ok(())
+    }
+
+    /// Height of the cutter's straight flank above its reference line, in
+    /// modules: `hl* − ha*` (the part that cuts the dedendum involute).
+    ///
+    /// ```
+    /// assert_eq!(tmm_gears::BasicRack::default().flank_depth(), 1.0);
+    /// ```
+    #[inline]
+    pub fn flank_depth(&self) -> f64 {
+        self.hl - self.ha
+    }
+
+    /// Cutter tip fillet radius in modules, ρf* = (ha* + c* − (hl* − ha*)) / (1 − sin α):
+    /// the circle tangent to the tip line at depth (ha* + c*)·m and to the flank
+    /// where the straight part ends (derived here, docs/gears.md §Rack; gives
+    /// GOST 13755-81's ρf* = 0.38 for the default rack).
+    ///
+    /// ```
+    /// let r = tmm_gears::BasicRack::default().fillet_radius();
+    /// assert!((r - 0.38).abs() < 0.001);
+    /// ```
+    #[inline]
+    pub fn fillet_radius(&self) -> f64 {
+        (2.0 * self.ha + self.c - self.hl) / (1.0 - self.alpha.sin())
+    }
+}

@@ -1,0 +1,119 @@
+//! What the user gives for one pair: tooth numbers, module, shifts, rack, kind.
+
+use std::f64::consts::PI;
+
+use tmm_geom::involute::inv;
+
+use crate::{BasicRack, GearError};
+
+/// External pair (внешнее зацепление) or internal pair with wheel 2 a ring
+/// (внутреннее зацепление).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Kind {
+    /// Two external wheels.
+    #[default]
+    External,
+    /// Wheel 2 is a ring gear (internal teeth).
+    Internal,
+}
+
+/// The data of one pair (исходные данные).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairSpec {
+    /// Pinion tooth number z1 (число зубьев шестерни).
+    pub z1: u32,
+    /// Wheel tooth number z2 (число зубьев колеса).
+    pub z2: u32,
+    /// Module m, metres (модуль).
+    pub m: f64,
+    /// Pinion profile shift coefficient x1 (коэффициент смещения).
+    pub x1: f64,
+    /// Wheel profile shift coefficient x2. For a ring, positive x2 moves the
+    /// cutter away from the ring axis (GOST 19274-73 sign).
+    pub x2: f64,
+    /// The basic rack.
+    pub rack: BasicRack,
+    /// External or internal.
+    pub kind: Kind,
+}
+
+impl PairSpec {
+    /// An external pair on the default rack.
+    pub fn external(z1: u32, z2: u32, m: f64, x1: f64, x2: f64) -> Self {
+        PairSpec { z1, z2, m, x1, x2, rack: BasicRack::default(), kind: Kind::External }
+    }
+
+    /// Check everything that does not need the geometry.
+    pub fn validate(&self) -> Result<(), GearError> {
+        self.rack.validate()?;
+        if !(self.m.is_finite() && self.m > 0.0) {
+            return Err(GearError::Module(self.m));
+        }
+        if !self.x1.is_finite() {
+            return Err(GearError::Shift { wheel: 1 });
+        }
+        if !self.x2.is_finite() {
+            return Err(GearError::Shift { wheel: 2 });
+        }
+        let zmin = smallest_cuttable(&self.rack);
+        if self.z1 < zmin {
+            return Err(GearError::TooFewTeeth { wheel: 1, z: self.z1, min: zmin });
+        }
+        match self.kind {
+            Kind::External => {
+                if self.z2 < zmin {
+                    return Err(GearError::TooFewTeeth { wheel: 2, z: self.z2, min: zmin });
+                }
+            }
+            Kind::Internal => {
+                if self.z2 <= self.z1 {
+                    return Err(GearError::InternalAssembly(format!("the ring needs more teeth than the pinion (z2 = {} ≤ z1 = {})", self.z2, self.z1)));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The least shift that avoids undercut by the rack,
+/// `xmin = (hl* − ha*) − z·sin²α / 2` (seed 001, sheet 2, §IV.1; GOST 16532-70
+/// writes `ha* − z·sin²α/2` for the standard rack where hl* − ha* = ha*).
+///
+/// ```
+/// let r = tmm_gears::BasicRack::default();
+/// // 17 teeth are the classical limit: xmin ≈ 0.
+/// assert!(tmm_gears::spec::xmin(17, &r).abs() < 0.01);
+/// ```
+#[inline]
+pub fn xmin(z: u32, rack: &BasicRack) -> f64 {
+    let s = rack.alpha.sin();
+    rack.flank_depth() - z as f64 * s * s / 2.0
+}
+
+/// Tip thickness of a lone external wheel with shift `x` and no tip shortening,
+/// in modules: `sa/m = (da/m)·(s/d + inv α − inv αa)` (GOST 16532-70, table 4).
+/// Returns `None` when the tip circle is inside the base circle.
+pub fn lone_tip_thickness(z: u32, x: f64, rack: &BasicRack) -> Option<f64> {
+    let zf = z as f64;
+    let d = zf;
+    let da = d + 2.0 * (rack.ha + x);
+    let db = d * rack.alpha.cos();
+    if da <= db {
+        return None;
+    }
+    let aa = (db / da).acos();
+    let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
+    Some(da * (s / d + inv(rack.alpha) - inv(aa)))
+}
+
+/// The smallest tooth number a rack can cut with neither undercut nor a pointed
+/// tip: the least `z` whose tooth at `x = xmin(z)` still has `sa > 0`
+/// (defined here; docs/gears.md §Smallest tooth number).
+///
+/// ```
+/// // For the 20° rack a shifted 7-tooth pinion is still possible.
+/// assert!(tmm_gears::spec::smallest_cuttable(&tmm_gears::BasicRack::default()) <= 7);
+/// ```
+pub fn smallest_cuttable(rack: &BasicRack) -> u32 {
+    (1..200).find(|&z| lone_tip_thickness(z, xmin(z, rack).max(-10.0), rack).is_some_and(|s| s > 0.0)).unwrap_or(200)
+}
