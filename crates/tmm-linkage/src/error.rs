@@ -1,0 +1,69 @@
+//! Errors of the linkage core: a description that is not a mechanism, and a
+//! mechanism that cannot be assembled or whose velocities are singular.
+
+/// What is wrong with a mechanism or a solve.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum LinkageError {
+    /// The description itself is inconsistent (unknown name, duplicate, zero
+    /// length…). `field` names the part of the description.
+    #[error("{field}: {message}")]
+    Description {
+        /// The part of the description (`links.2`, `input.link`, …).
+        field: String,
+        /// What is wrong and what would be valid.
+        message: String,
+    },
+    /// The degree of freedom is not 1.
+    #[error("the mechanism has {dof} degrees of freedom (W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {w}); a mechanism driven by one crank needs 1{detail}")]
+    Mobility {
+        /// DOF from the rank of the constraint equations.
+        dof: i64,
+        /// Chebyshev's W.
+        w: i64,
+        /// Moving links.
+        n: usize,
+        /// Lower pairs.
+        p5: usize,
+        /// Higher pairs.
+        p4: usize,
+        /// Extra explanation.
+        detail: String,
+    },
+    /// The mechanism does not decompose into the input and Assur groups.
+    #[error("structure: {0}")]
+    Structure(String),
+    /// A group cannot be assembled at a crank angle.
+    #[error("cannot be assembled at φ = {phi_deg:.4}°: group {group}: {reason}")]
+    Assembly {
+        /// Crank angle, degrees.
+        phi_deg: f64,
+        /// The group (`II(2,3) RRR`).
+        group: String,
+        /// Why (`|BD| = 0.91 m > BC + CD = 0.86 m`).
+        reason: String,
+    },
+    /// The mechanism cannot be assembled over whole ranges of the crank angle.
+    #[error("cannot be assembled for crank angles {ranges}: {reason}")]
+    AssemblyRanges {
+        /// The ranges, e.g. `102.5°…157.5°`.
+        ranges: String,
+        /// The first reason met.
+        reason: String,
+    },
+    /// The velocity (or acceleration) equations of a group are singular: the
+    /// group is at a dead centre (мёртвое положение группы).
+    #[error("singular velocity equations at φ = {phi_deg:.4}°: group {group} is at a dead centre (its links are aligned)")]
+    Singular {
+        /// Crank angle, degrees.
+        phi_deg: f64,
+        /// The group.
+        group: String,
+    },
+}
+
+impl LinkageError {
+    /// A description error.
+    pub fn desc(field: impl Into<String>, message: impl Into<String>) -> Self {
+        LinkageError::Description { field: field.into(), message: message.into() }
+    }
+}

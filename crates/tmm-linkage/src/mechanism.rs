@@ -1,0 +1,754 @@
+//! A mechanism compiled from its description into a solution plan: links and
+//! pairs numbered, the crank, and the ordered Assur groups each with its own
+//! solver (closed form for the five dyads, Newton for larger groups).
+//! Kinematics, forces and dynamics all walk this one plan.
+
+use std::collections::HashMap;
+use std::f64::consts::PI;
+
+use tmm_geom::{Vec2, perp};
+
+use crate::constraints::{self, Mode};
+use crate::dyad::{DyadFail, DyadGeom, KnownGuide, KnownPoint};
+use crate::error::LinkageError;
+use crate::model::{FRAME, HintKind, MechanismDef};
+use crate::state::{LinkState, PointState, conj, rot};
+use crate::structure::{self, GroupInfo, PairKind, PairLink, Structure, roman};
+
+/// A lower pair between two links.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Pair {
+    /// Revolute pair at a point: local coordinates on each link.
+    R {
+        /// One link.
+        a: usize,
+        /// The other link.
+        b: usize,
+        /// The point on `a`, local.
+        la: Vec2,
+        /// The point on `b`, local.
+        lb: Vec2,
+        /// Index of the named point.
+        point: usize,
+    },
+    /// Prismatic pair: `slider` moves along a line of `guide`.
+    P {
+        /// The sliding link.
+        slider: usize,
+        /// The link carrying the guide.
+        guide: usize,
+        /// The slider's point on the line, slider-local.
+        ps: Vec2,
+        /// A point of the line, guide-local.
+        q: Vec2,
+        /// Unit direction of the line, guide-local.
+        d: Vec2,
+        /// `u_slider = u_guide · rel`.
+        rel: Vec2,
+        /// Index of the slider's named point.
+        point: usize,
+    },
+}
+
+impl Pair {
+    /// The two links of the pair.
+    pub fn links(&self) -> (usize, usize) {
+        match *self {
+            Pair::R { a, b, .. } => (a, b),
+            Pair::P { slider, guide, .. } => (slider, guide),
+        }
+    }
+    /// The named point of the pair.
+    pub fn point(&self) -> usize {
+        match *self {
+            Pair::R { point, .. } | Pair::P { point, .. } => point,
+        }
+    }
+    /// R or P.
+    pub fn kind(&self) -> PairKind {
+        match self {
+            Pair::R { .. } => PairKind::R,
+            Pair::P { .. } => PairKind::P,
+        }
+    }
+}
+
+/// A named point: the link it is fixed on and its local coordinates there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedPoint {
+    /// The name (`A`, `S2`).
+    pub name: String,
+    /// The link (0: frame).
+    pub link: usize,
+    /// Local coordinates, m.
+    pub local: Vec2,
+}
+
+/// The input crank.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Crank {
+    /// The crank link.
+    pub link: usize,
+    /// Global position of the fixed pivot.
+    pub pivot: Vec2,
+    /// The pivot on the crank, local.
+    pub pivot_local: Vec2,
+    /// Unit direction pivot → pin on the crank, local.
+    pub dir_local: Vec2,
+    /// Crank radius |pivot → pin|, m.
+    pub radius: f64,
+    /// ω1, rad/s (signed).
+    pub omega: f64,
+    /// ε1, rad/s².
+    pub eps: f64,
+    /// The pin's point index.
+    pub pin: usize,
+    /// The pivot's point index.
+    pub pivot_point: usize,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+enum Solver {
+    Dyad(DyadGeom),
+    General,
+}
+
+/// One Assur group with its solver.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Group {
+    /// Class, order, kind, links.
+    pub info: GroupInfo,
+    solver: Solver,
+    /// Assembly branch of a dyad (±1).
+    pub sign: f64,
+    /// The pairs of the group (outer and inner), for general solves.
+    pairs: Vec<usize>,
+}
+
+impl Group {
+    /// Short label: `II(2,3) RRR`.
+    pub fn label(&self) -> String {
+        format!("{}({}) {}", roman(self.info.class), self.info.links.join(","), self.info.kind)
+    }
+    /// The dyad geometry, when the group is a dyad.
+    pub fn dyad(&self) -> Option<&DyadGeom> {
+        match &self.solver {
+            Solver::Dyad(d) => Some(d),
+            Solver::General => None,
+        }
+    }
+}
+
+/// A compiled mechanism.
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    /// Link names; `[0]` is the frame.
+    pub link_names: Vec<String>,
+    /// Centres of mass, local.
+    pub mass_centers: Vec<Vec2>,
+    /// All named points.
+    pub points: Vec<NamedPoint>,
+    /// All pairs.
+    pub pairs: Vec<Pair>,
+    /// The crank.
+    pub crank: Crank,
+    /// Assur groups in solving order.
+    pub groups: Vec<Group>,
+    /// Structure (W, groups, formula, class).
+    pub structure: Structure,
+    /// The output link.
+    pub output: usize,
+    /// Crank angle at which the assembly branch was chosen, rad.
+    pub assembly_angle: f64,
+    /// The assembled state at `assembly_angle` (warm start for Newton groups).
+    init: Vec<LinkState>,
+    has_general: bool,
+    scale: f64,
+}
+
+/// A solved position; reused between solves so that solving allocates nothing.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// Crank angle φ, rad (absolute angle of pivot → pin).
+    pub phi: f64,
+    /// Link states, indexed as [`Mechanism::link_names`].
+    pub links: Vec<LinkState>,
+    /// Point states, indexed as [`Mechanism::points`].
+    pub points: Vec<PointState>,
+    jac: Vec<f64>,
+    rhs: Vec<f64>,
+    warm: Option<f64>,
+}
+
+fn de(field: impl Into<String>, message: impl Into<String>) -> LinkageError {
+    LinkageError::desc(field, message)
+}
+
+fn unit(v: Vec2) -> Vec2 {
+    v * (1.0 / v.hypot())
+}
+
+fn polar(a: f64) -> Vec2 {
+    Vec2::new(a.cos(), a.sin())
+}
+
+impl Mechanism {
+    /// Compile a description: check it, number it, find its structure, build
+    /// the solvers and choose the assembly branch from the hints.
+    pub fn new(def: &MechanismDef) -> Result<Self, LinkageError> {
+        // --- links
+        let mut link_names = vec![FRAME.to_string()];
+        let mut mass_centers = vec![Vec2::ZERO];
+        let mut index: HashMap<&str, usize> = HashMap::new();
+        index.insert(FRAME, 0);
+        for (i, l) in def.links.iter().enumerate() {
+            if l.name.is_empty() {
+                return Err(de(format!("links[{i}].name"), "a link needs a name"));
+            }
+            if index.insert(l.name.as_str(), link_names.len()).is_some() {
+                return Err(de(format!("links[{i}].name"), format!("duplicate link name `{}` (link names must be unique; `frame` is reserved)", l.name)));
+            }
+            if l.points.is_empty() {
+                return Err(de(format!("links.{}", l.name), "a link needs at least one point"));
+            }
+            for (k, (pn, p)) in l.points.iter().enumerate() {
+                if !(p.x.is_finite() && p.y.is_finite()) {
+                    return Err(de(format!("links.{}.{pn}", l.name), "coordinates must be finite"));
+                }
+                if l.points[..k].iter().any(|(q, _)| q == pn) {
+                    return Err(de(format!("links.{}.{pn}", l.name), format!("duplicate point `{pn}` on link `{}`", l.name)));
+                }
+            }
+            if l.points.len() >= 2 && (l.points[1].1 - l.points[0].1).hypot() <= 1e-12 {
+                return Err(de(format!("links.{}.length", l.name), format!("zero length: `{}` and `{}` coincide; a link length must be > 0", l.points[0].0, l.points[1].0)));
+            }
+            link_names.push(l.name.clone());
+            mass_centers.push(l.mass_center);
+        }
+        let nl = link_names.len();
+        // --- points and revolute pairs
+        let mut points: Vec<NamedPoint> = Vec::new();
+        let mut occ: Vec<Vec<(usize, Vec2)>> = Vec::new();
+        let mut pidx: HashMap<String, usize> = HashMap::new();
+        for (name, p) in &def.fixed {
+            if pidx.contains_key(name) {
+                return Err(de(format!("fixed.{name}"), format!("duplicate fixed point `{name}`")));
+            }
+            if !(p.x.is_finite() && p.y.is_finite()) {
+                return Err(de(format!("fixed.{name}"), "coordinates must be finite"));
+            }
+            pidx.insert(name.clone(), points.len());
+            points.push(NamedPoint { name: name.clone(), link: 0, local: *p });
+            occ.push(vec![(0, *p)]);
+        }
+        for (li, l) in def.links.iter().enumerate() {
+            for (pn, p) in &l.points {
+                match pidx.get(pn) {
+                    Some(&k) => occ[k].push((li + 1, *p)),
+                    None => {
+                        pidx.insert(pn.clone(), points.len());
+                        points.push(NamedPoint { name: pn.clone(), link: li + 1, local: *p });
+                        occ.push(vec![(li + 1, *p)]);
+                    }
+                }
+            }
+        }
+        let mut pairs = Vec::new();
+        for (k, o) in occ.iter().enumerate() {
+            for &(lb, pb) in &o[1..] {
+                pairs.push(Pair::R { a: o[0].0, b: lb, la: o[0].1, lb: pb, point: k });
+            }
+        }
+        // --- prismatic pairs
+        for (i, s) in def.sliders.iter().enumerate() {
+            let f = |x: &str| format!("sliders[{i}].{x}");
+            let slider = *index.get(s.slider.as_str()).ok_or_else(|| de(f("link"), format!("unknown link `{}`", s.slider)))?;
+            if slider == 0 {
+                return Err(de(f("link"), "the frame cannot slide"));
+            }
+            let guide = *index.get(s.guide_link.as_str()).ok_or_else(|| de(f("guide.link"), format!("unknown link `{}` (a link name or `frame`)", s.guide_link)))?;
+            if guide == slider {
+                return Err(de(f("guide.link"), "a link cannot slide on itself"));
+            }
+            let ps = def.links[slider - 1].point(&s.point).ok_or_else(|| de(f("point"), format!("unknown point `{}` on link `{}`", s.point, s.slider)))?;
+            if !(s.angle.is_finite() && s.angle_on_slider.is_finite() && s.through.x.is_finite() && s.through.y.is_finite()) {
+                return Err(de(f("guide"), "the guide must be finite"));
+            }
+            let dd = polar(s.angle);
+            let rel = rot(dd, conj(polar(s.angle_on_slider)));
+            pairs.push(Pair::P { slider, guide, ps, q: s.through, d: dd, rel, point: pidx[&s.point] });
+        }
+        // --- input crank
+        let inp = def.input.as_ref().ok_or_else(|| de("input", "the mechanism needs an input crank (input.link)"))?;
+        let cl = *index.get(inp.link.as_str()).ok_or_else(|| de("input.link", format!("unknown link `{}`", inp.link)))?;
+        if cl == 0 {
+            return Err(de("input.link", "the input must be a moving link"));
+        }
+        let cdef = &def.links[cl - 1];
+        let pivot_local = cdef.point(&inp.pivot).ok_or_else(|| de("input.pivot", format!("`{}` is not a point of the crank `{}`", inp.pivot, inp.link)))?;
+        let pin_local = cdef.point(&inp.pin).ok_or_else(|| de("input.pin", format!("`{}` is not a point of the crank `{}`", inp.pin, inp.link)))?;
+        let pivot = def.fixed.iter().find(|(n, _)| *n == inp.pivot).map(|(_, p)| *p).ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
+        let radius = (pin_local - pivot_local).hypot();
+        if radius <= 1e-12 {
+            return Err(de("input", "zero crank length"));
+        }
+        if !(inp.omega.is_finite() && inp.omega != 0.0 && inp.epsilon.is_finite()) {
+            return Err(de("input.speed", "the crank speed must be finite and non-zero"));
+        }
+        let crank = Crank {
+            link: cl,
+            pivot,
+            pivot_local,
+            dir_local: unit(pin_local - pivot_local),
+            radius,
+            omega: inp.omega,
+            eps: inp.epsilon,
+            pin: pidx[&inp.pin],
+            pivot_point: pidx[&inp.pivot],
+        };
+        // --- connectivity
+        for (l, name) in link_names.iter().enumerate().skip(1) {
+            if !pairs.iter().any(|p| {
+                let (a, b) = p.links();
+                a == l || b == l
+            }) {
+                return Err(de(format!("links.{name}"), format!("link `{name}` shares no point with any other link or the frame")));
+            }
+        }
+        // --- structure
+        let plinks: Vec<PairLink> = pairs.iter().map(|p| PairLink { a: p.links().0, b: p.links().1, kind: p.kind() }).collect();
+        let n = nl - 1;
+        let p5 = pairs.len();
+        let w = 3 * n as i64 - 2 * p5 as i64;
+        let decomposed = structure::decompose(nl, &plinks, cl);
+        let raw_groups = match decomposed {
+            Ok(g) => g,
+            Err(left) => {
+                let names: Vec<&str> = left.iter().map(|&l| link_names[l].as_str()).collect();
+                if w != 1 {
+                    return Err(LinkageError::Mobility { dof: w, w, n, p5, p4: 0, detail: format!("; links {} do not form Assur groups", names.join(", ")) });
+                }
+                return Err(LinkageError::Structure(format!("links {} do not form Assur groups on the crank `{}`", names.join(", "), inp.link)));
+            }
+        };
+        let mut groups = Vec::new();
+        let mut infos = Vec::new();
+        for (mut set, mut pids) in raw_groups {
+            let (class, order, kind) = structure::classify(&mut set, &mut pids, &plinks);
+            let info = GroupInfo { class, order, kind, links: set.iter().map(|&l| link_names[l].clone()).collect(), link_ids: set.clone(), pair_ids: pids.clone() };
+            let solver = if class == 2 { Solver::Dyad(build_dyad(&set, &pids, &pairs)?) } else { Solver::General };
+            infos.push(info.clone());
+            groups.push(Group { info, solver, sign: 1.0, pairs: pids });
+        }
+        let class = infos.iter().map(|g| g.class).max().unwrap_or(1);
+        let mut formula = format!("I(0,{})", link_names[cl]);
+        for g in &infos {
+            formula.push_str(&format!(" → {}({})", roman(g.class), g.links.join(",")));
+        }
+        let output = match &def.output {
+            Some(o) => *index.get(o.as_str()).filter(|&&i| i != 0).ok_or_else(|| de("output", format!("unknown link `{o}`")))?,
+            None => default_output(&groups, &pairs, cl),
+        };
+        let scale = points.iter().map(|p| p.local.hypot()).fold(radius, f64::max).max(1e-9);
+        let structure = Structure { dof: w, n, p5, p4: 0, groups: infos, formula, class, dof_rank: w, redundant: 0, passive: 0 };
+        let has_general = groups.iter().any(|g| g.solver == Solver::General);
+        let mut m = Mechanism {
+            link_names,
+            mass_centers,
+            points,
+            pairs,
+            crank,
+            groups,
+            structure,
+            output,
+            assembly_angle: def.assembly_angle,
+            init: Vec::new(),
+            has_general,
+            scale,
+        };
+        m.choose_branches(def)?;
+        m.count_rank()?;
+        Ok(m)
+    }
+
+    /// Index of a link by name.
+    pub fn link(&self, name: &str) -> Option<usize> {
+        self.link_names.iter().position(|n| n == name)
+    }
+
+    /// Index of a point by name.
+    pub fn point(&self, name: &str) -> Option<usize> {
+        self.points.iter().position(|p| p.name == name)
+    }
+
+    /// A fresh solution buffer for this mechanism.
+    pub fn solution(&self) -> Solution {
+        let n = 3 * self.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(2);
+        Solution {
+            phi: f64::NAN,
+            links: if self.init.is_empty() { vec![LinkState::default(); self.link_names.len()] } else { self.init.clone() },
+            points: vec![PointState::default(); self.points.len()],
+            jac: vec![0.0; n * n],
+            rhs: vec![0.0; n],
+            warm: None,
+        }
+    }
+
+    /// Solve positions, velocities and accelerations of every link and point at
+    /// crank angle `phi` (rad). Allocates nothing.
+    pub fn solve(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
+        if self.has_general {
+            // Newton groups follow their branch from the nearest solved angle.
+            let from = sol.warm.unwrap_or_else(|| {
+                sol.links.clone_from(&self.init);
+                self.assembly_angle
+            });
+            let gap = tmm_geom::angle::diff(from, phi);
+            let steps = (gap.abs() / (2.0 * PI / 180.0)).ceil() as usize;
+            for k in 1..steps {
+                let p = from + gap * k as f64 / steps as f64;
+                self.solve_once(p, sol)?;
+            }
+        }
+        self.solve_once(phi, sol)
+    }
+
+    fn solve_once(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
+        sol.phi = phi;
+        sol.links[0] = LinkState::default();
+        let c = &self.crank;
+        let (s, co) = phi.sin_cos();
+        let u = rot(Vec2::new(co, s), conj(c.dir_local));
+        let piv = PointState { p: c.pivot, v: Vec2::ZERO, a: Vec2::ZERO };
+        sol.links[c.link] = LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps);
+        for g in &self.groups {
+            match &g.solver {
+                Solver::Dyad(dy) => {
+                    if let Err(e) = dy.solve(g.sign, &mut sol.links) {
+                        sol.warm = None;
+                        return Err(self.fail(g, phi, e));
+                    }
+                }
+                Solver::General => {
+                    if let Err(e) = self.solve_general(g, sol) {
+                        sol.warm = None;
+                        return Err(self.fail(g, phi, e));
+                    }
+                }
+            }
+        }
+        for (i, p) in self.points.iter().enumerate() {
+            sol.points[i] = sol.links[p.link].point(p.local);
+        }
+        sol.warm = Some(phi);
+        Ok(())
+    }
+
+    fn fail(&self, g: &Group, phi: f64, e: DyadFail) -> LinkageError {
+        match e {
+            DyadFail::Singular => LinkageError::Singular { phi_deg: phi.to_degrees(), group: g.label() },
+            _ => LinkageError::Assembly { phi_deg: phi.to_degrees(), group: g.label(), reason: e.to_string() },
+        }
+    }
+
+    fn solve_general(&self, g: &Group, sol: &mut Solution) -> Result<(), DyadFail> {
+        let prs: Vec<&Pair> = g.pairs.iter().map(|&i| &self.pairs[i]).collect();
+        let unknown = &g.info.link_ids;
+        let n = 3 * unknown.len();
+        constraints::newton(&prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::CircleLine { h: f64::NAN, r: f64::NAN })?;
+        for mode in [Mode::Velocity, Mode::Acceleration] {
+            constraints::assemble(&prs, unknown, &sol.links, mode, &mut sol.jac, &mut sol.rhs);
+            if !constraints::solve_dense(&mut sol.jac[..n * n], &mut sol.rhs[..n], n, 1e-11) {
+                return Err(DyadFail::Singular);
+            }
+            for (k, &l) in unknown.iter().enumerate() {
+                let s = &mut sol.links[l];
+                let x = Vec2::new(sol.rhs[3 * k], sol.rhs[3 * k + 1]);
+                if mode == Mode::Velocity {
+                    s.v = x;
+                    s.omega = sol.rhs[3 * k + 2];
+                } else {
+                    s.a = x;
+                    s.eps = sol.rhs[3 * k + 2];
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Choose each dyad's branch and each general group's start from the
+    /// assembly hints at the assembly angle.
+    fn choose_branches(&mut self, def: &MechanismDef) -> Result<(), LinkageError> {
+        for (i, h) in def.hints.iter().enumerate() {
+            let check = |n: &str| self.point(n).ok_or_else(|| LinkageError::desc(format!("assembly[{i}]"), format!("unknown point `{n}`")));
+            check(&h.point)?;
+            match &h.kind {
+                HintKind::Above(a, b) | HintKind::Below(a, b) | HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
+                    check(a)?;
+                    check(b)?;
+                }
+                HintKind::Near(_) => {}
+            }
+        }
+        let branchy: Vec<usize> = (0..self.groups.len()).filter(|&g| self.groups[g].dyad().is_some_and(|d| d.has_branches())).collect();
+        let phi = self.assembly_angle;
+        let mut best: Option<(f64, Vec<f64>, Vec<LinkState>)> = None;
+        let mut first_err = None;
+        let general_starts = if self.has_general { 48 } else { 1 };
+        for combo in 0..(1usize << branchy.len()) {
+            for (k, &g) in branchy.iter().enumerate() {
+                self.groups[g].sign = if combo >> k & 1 == 0 { 1.0 } else { -1.0 };
+            }
+            for start in 0..general_starts {
+                let mut sol = self.solution();
+                if self.has_general {
+                    self.seed_general(start, def, &mut sol);
+                }
+                match self.solve_once(phi, &mut sol) {
+                    Ok(()) => {
+                        let score = self.score(def, &sol);
+                        if best.as_ref().is_none_or(|b| score < b.0 - 1e-12) {
+                            best = Some((score, self.groups.iter().map(|g| g.sign).collect(), sol.links.clone()));
+                        }
+                    }
+                    Err(e) => {
+                        if first_err.is_none() {
+                            first_err = Some(e);
+                        }
+                    }
+                }
+            }
+        }
+        let Some((score, signs, links)) = best else {
+            return Err(first_err.unwrap_or_else(|| LinkageError::Structure("no assembly found".into())));
+        };
+        if score >= 1e6 {
+            let h: Vec<String> = def.hints.iter().map(|h| format!("{} {:?}", h.point, h.kind)).collect();
+            return Err(LinkageError::desc("assembly", format!("no assembly at φ = {:.3}° satisfies every hint ({})", phi.to_degrees(), h.join("; "))));
+        }
+        for (g, s) in self.groups.iter_mut().zip(signs) {
+            g.sign = s;
+        }
+        self.init = links;
+        Ok(())
+    }
+
+    /// Score an assembly: 1e6 per violated side hint, plus distances to `near`.
+    fn score(&self, def: &MechanismDef, sol: &Solution) -> f64 {
+        let pos = |n: &str| self.point(n).map(|i| sol.points[i].p).unwrap_or(Vec2::ZERO);
+        let mut s = 0.0;
+        for h in &def.hints {
+            let p = pos(&h.point);
+            let side = |a: &str, b: &str| {
+                let (pa, pb) = (pos(a), pos(b));
+                (pa, pb)
+            };
+            let ok = match &h.kind {
+                HintKind::Above(a, b) | HintKind::Below(a, b) => {
+                    let (pa, pb) = side(a, b);
+                    let dx = pb.x - pa.x;
+                    let yl = if dx.abs() < 1e-15 { f64::NAN } else { pa.y + (pb.y - pa.y) * (p.x - pa.x) / dx };
+                    if matches!(h.kind, HintKind::Above(..)) { p.y > yl } else { p.y < yl }
+                }
+                HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
+                    let (pa, pb) = side(a, b);
+                    let dy = pb.y - pa.y;
+                    let xl = if dy.abs() < 1e-15 { f64::NAN } else { pa.x + (pb.x - pa.x) * (p.y - pa.y) / dy };
+                    if matches!(h.kind, HintKind::LeftOf(..)) { p.x < xl } else { p.x > xl }
+                }
+                HintKind::Near(q) => {
+                    s += (p - *q).hypot();
+                    true
+                }
+            };
+            if !ok {
+                s += 1e6;
+            }
+        }
+        s
+    }
+
+    /// Starting guesses for Newton groups: a `near` hint places its point; other
+    /// links get pseudo-random orientations about the known joints.
+    fn seed_general(&self, start: usize, def: &MechanismDef, sol: &mut Solution) {
+        let mut rng = 0x9E37_79B9_7F4A_7C15u64 ^ (start as u64).wrapping_mul(0x2545_F491_4F6C_DD1D);
+        let mut next = || {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            (rng >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let centre = self.points.iter().filter(|p| p.link == 0).map(|p| p.local).fold(Vec2::ZERO, |a, b| a + b) * (1.0 / self.points.iter().filter(|p| p.link == 0).count().max(1) as f64);
+        for g in &self.groups {
+            if g.solver != Solver::General {
+                continue;
+            }
+            for &l in &g.info.link_ids {
+                let th = 2.0 * PI * next();
+                let u = polar(th);
+                let mut o = centre + Vec2::new(next() - 0.5, next() - 0.5) * self.scale;
+                for h in &def.hints {
+                    if let HintKind::Near(q) = h.kind {
+                        if let Some(pi) = self.point(&h.point) {
+                            if self.points[pi].link == l && start % 2 == 0 {
+                                o = q - rot(u, self.points[pi].local);
+                            }
+                        }
+                    }
+                }
+                sol.links[l] = LinkState { o, u, ..Default::default() };
+            }
+        }
+    }
+
+    /// Rank of the constraint equations at the assembly: the true DOF,
+    /// redundant constraints and passive freedoms.
+    fn count_rank(&mut self) -> Result<(), LinkageError> {
+        let n = self.link_names.len() - 1;
+        let unknown: Vec<usize> = (1..=n).collect();
+        let prs: Vec<&Pair> = self.pairs.iter().collect();
+        let rows = 2 * prs.len();
+        let cols = 3 * n;
+        let mut jac = vec![0.0; (rows + 1) * cols];
+        let mut rhs = vec![0.0; rows + 1];
+        constraints::assemble(&prs, &unknown, &self.init, Mode::Velocity, &mut jac[..rows * cols], &mut rhs[..rows]);
+        let r = constraints::rank(&jac[..rows * cols], rows, cols, 1e-9);
+        // hold the crank: θ_crank fixed
+        jac[rows * cols + 3 * (self.crank.link - 1) + 2] = 1.0;
+        let r_held = constraints::rank(&jac, rows + 1, cols, 1e-9);
+        let s = &mut self.structure;
+        s.dof_rank = cols as i64 - r as i64;
+        s.redundant = rows as i64 - r as i64;
+        s.passive = cols as i64 - r_held as i64;
+        if s.dof_rank != 1 {
+            return Err(LinkageError::Mobility { dof: s.dof_rank, w: s.dof, n: s.n, p5: s.p5, p4: s.p4, detail: String::new() });
+        }
+        Ok(())
+    }
+}
+
+/// The default output link: in the last group, a link with a pair to the frame;
+/// else the last link of the last group.
+fn default_output(groups: &[Group], pairs: &[Pair], crank: usize) -> usize {
+    let Some(g) = groups.last() else { return crank };
+    for &l in g.info.link_ids.iter().rev() {
+        if pairs.iter().any(|p| p.links() == (l, 0) || p.links() == (0, l)) {
+            return l;
+        }
+    }
+    *g.info.link_ids.last().unwrap_or(&crank)
+}
+
+/// Build the closed-form solver of a dyad from its ordered links and pairs
+/// (outer 1, inner, outer 2).
+fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom, LinkageError> {
+    let (l1, l2) = (set[0], set[1]);
+    let (e1, m, e2) = (&pairs[pids[0]], &pairs[pids[1]], &pairs[pids[2]]);
+    // local of a revolute pair's point on link `l`, and the known side
+    let r_on = |p: &Pair, l: usize| -> (Vec2, KnownPoint) {
+        match *p {
+            Pair::R { a, b, la, lb, .. } => {
+                if a == l {
+                    (la, KnownPoint { link: b, local: lb })
+                } else {
+                    (lb, KnownPoint { link: a, local: la })
+                }
+            }
+            Pair::P { .. } => unreachable!("revolute expected"),
+        }
+    };
+    let r_both = |p: &Pair, x: usize| -> Vec2 {
+        match *p {
+            Pair::R { a, la, lb, .. } => {
+                if a == x {
+                    la
+                } else {
+                    lb
+                }
+            }
+            Pair::P { .. } => unreachable!("revolute expected"),
+        }
+    };
+    let kind: String = [e1.kind(), m.kind(), e2.kind()].iter().map(|k| if *k == PairKind::R { 'R' } else { 'P' }).collect();
+    let bad = |why: &str| LinkageError::Structure(format!("dyad of links {l1}, {l2} ({kind}): {why}"));
+    match kind.as_str() {
+        "RRR" => {
+            let (a1, a) = r_on(e1, l1);
+            let (c2, c) = r_on(e2, l2);
+            let b1 = r_both(m, l1);
+            let b2 = r_both(m, l2);
+            let len1 = (b1 - a1).hypot();
+            let len2 = (b2 - c2).hypot();
+            if len1 <= 1e-12 || len2 <= 1e-12 {
+                return Err(bad("zero link length"));
+            }
+            Ok(DyadGeom::Rrr { l1, l2, a, a1, dir1: unit(b1 - a1), len1, c, c2, dir2: unit(b2 - c2), len2 })
+        }
+        "RRP" => {
+            let (a1, a) = r_on(e1, l1);
+            let b1 = r_both(m, l1);
+            let b2 = r_both(m, l2);
+            let Pair::P { slider, guide, ps, q, d, rel, .. } = *e2 else { return Err(bad("prismatic pair expected")) };
+            if slider != l2 {
+                return Err(bad("the outer guide must carry the slider of the group, not be carried by it"));
+            }
+            let len1 = (b1 - a1).hypot();
+            if len1 <= 1e-12 {
+                return Err(bad("zero link length"));
+            }
+            Ok(DyadGeom::Rrp { l1, l2, a, a1, dir1: unit(b1 - a1), len1, b_off: b2 - ps, b2, guide: KnownGuide { link: guide, through: q, dir: d }, rel })
+        }
+        "RPR" => {
+            let Pair::P { slider, guide, ps, q, d, rel, .. } = *m else { return Err(bad("prismatic pair expected")) };
+            let (g, s) = (guide, slider);
+            let (eg, es) = if r_on_link(e1, g) { (e1, e2) } else { (e2, e1) };
+            let (xg, x) = r_on(eg, g);
+            let (ys, y) = r_on(es, s);
+            Ok(DyadGeom::Rpr { g, s, x, xg, y, ys, w: q + rot(rel, ys - ps), dir: d, rel })
+        }
+        "PRP" => {
+            let (Pair::P { slider: s1, guide: k1, ps: p1, q: q1, d: d1, rel: rel1, .. }, Pair::P { slider: s2, guide: k2, ps: p2, q: q2, d: d2, rel: rel2, .. }) = (e1.clone(), e2.clone()) else {
+                return Err(bad("prismatic pairs expected"));
+            };
+            if s1 != l1 || s2 != l2 {
+                return Err(bad("each outer guide must carry a slider of the group"));
+            }
+            let b1 = r_both(m, l1);
+            let b2 = r_both(m, l2);
+            Ok(DyadGeom::Prp {
+                l1,
+                l2,
+                g1: KnownGuide { link: k1, through: q1, dir: d1 },
+                rel1,
+                off1: b1 - p1,
+                b1,
+                g2: KnownGuide { link: k2, through: q2, dir: d2 },
+                rel2,
+                off2: b2 - p2,
+                b2,
+            })
+        }
+        "RPP" => {
+            let (a1, a) = r_on(e1, l1);
+            let Pair::P { slider: so, guide: ko, ps: p2, q, d, rel: rel2, .. } = *e2 else { return Err(bad("prismatic pair expected")) };
+            if so != l2 {
+                return Err(bad("the outer guide must carry the slider of the group"));
+            }
+            let Pair::P { slider: sm, ps: pm, q: qm, d: dm, rel: relm_raw, .. } = *m else { return Err(bad("prismatic pair expected")) };
+            let guide_on_l2 = sm == l1;
+            // u_slider = u_guide·rel ⇒ u1 = u2·rel (guide on l2) or u1 = u2·conj(rel)
+            let relm = if guide_on_l2 { relm_raw } else { conj(relm_raw) };
+            Ok(DyadGeom::Rpp { l1, l2, a, a1, guide: KnownGuide { link: ko, through: q, dir: d }, rel2, p2, relm, qm, dm, pm, guide_on_l2 })
+        }
+        _ => Err(bad("not a dyad kind (RRR, RRP, RPR, PRP, RPP)")),
+    }
+}
+
+fn r_on_link(p: &Pair, l: usize) -> bool {
+    matches!(*p, Pair::R { a, b, .. } if a == l || b == l)
+}
+
+/// The unit vector perpendicular to `v` (for callers drawing plans).
+pub fn normal(v: Vec2) -> Vec2 {
+    unit(perp(v))
+}
