@@ -1,0 +1,238 @@
+//! Motion laws of one rise (закон движения толкателя на фазе), normalized:
+//! the phase fraction `x ∈ [0, 1]` maps to the lift fraction `y ∈ [0, 1]`,
+//! with `y(0) = 0`, `y(1) = 1`, `y′(0) = y′(1) = 0`.
+//!
+//! A phase of angle β and stroke h then has `s = h·y`, `ds/dφ = h·y′/β`,
+//! `d²s/dφ² = h·y″/β²`, `d³s/dφ³ = h·y‴/β³`; a return runs the same law as
+//! `s = h·(1 − y)`.
+//!
+//! The course names a law by the shape of its acceleration analog (seed 001:
+//! "закон задан диаграммой аналога ускорения"); Norton names the standard
+//! double-dwell laws. Both are here, each in closed form.
+
+use crate::CamError;
+use crate::segments::{Piece, Pieces, ShapeError};
+use std::f64::consts::PI;
+
+/// Which motion law, with its parameters.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LawKind {
+    /// Constant acceleration (равноускоренный / параболический): +a over the
+    /// first `u` of the phase, −a·u/(1−u) over the rest; `u = 1/2` is the
+    /// symmetric parabolic law.
+    ConstAccel {
+        /// Fraction of the phase with positive acceleration, `0 < u < 1`.
+        u: f64,
+    },
+    /// Cosine (гармонический, simple harmonic motion).
+    Cosine,
+    /// Sine (синусоидальный, cycloidal).
+    Sine,
+    /// Linearly decreasing acceleration (линейно убывающее ускорение): the cubic `3x² − 2x³`.
+    LinearDecreasing,
+    /// Trapezoidal acceleration (трапецеидальный), ramps of 1/8 of the phase.
+    Trapezoid,
+    /// Norton's modified trapezoid (sine ramps of 1/8).
+    ModTrapezoid,
+    /// Norton's modified sine.
+    ModSine,
+    /// The 3-4-5 polynomial.
+    Poly345,
+    /// The 4-5-6-7 polynomial.
+    Poly4567,
+    /// The user's acceleration analog at equal steps over the phase, linear in
+    /// between, integrated and scaled to the stroke.
+    Table(Vec<f64>),
+}
+
+/// A motion law ready to evaluate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Law {
+    kind: LawKind,
+    pieces: Option<Pieces>,
+}
+
+/// The shape of an unbalanced or empty table, for [`CamError::LawParameter`].
+fn shape_error(name: &str, e: ShapeError) -> CamError {
+    let reason = match e {
+        ShapeError::Unbalanced { ratio } => format!(
+            "the positive and negative areas of the acceleration table differ (net area {:.3} % of the total): the velocity would not return to zero at the end of the phase; balance the table",
+            ratio * 100.0
+        ),
+        ShapeError::NoRise => "the acceleration table gives no lift (its double integral is not positive)".to_string(),
+    };
+    CamError::LawParameter { law: name.to_string(), reason }
+}
+
+impl Law {
+    /// Check the parameters and prepare the law.
+    ///
+    /// ```
+    /// use tmm_cams::law::{Law, LawKind};
+    /// let l = Law::new(LawKind::ConstAccel { u: 1.0 / 3.0 }).unwrap();
+    /// let [y, v, ..] = l.eval(1.0);
+    /// assert!((y - 1.0).abs() < 1e-12 && v.abs() < 1e-12);
+    /// assert!(Law::new(LawKind::ConstAccel { u: 1.5 }).is_err());
+    /// ```
+    pub fn new(kind: LawKind) -> Result<Self, CamError> {
+        let pieces = match &kind {
+            LawKind::ConstAccel { u } => {
+                let u = *u;
+                if !(u > 0.0 && u < 1.0) {
+                    return Err(CamError::LawParameter { law: "const-accel".into(), reason: format!("u must lie strictly between 0 and 1, got {u}") });
+                }
+                // areas +1 and −1: the velocity returns to zero (docs/cams.md §2)
+                Some(vec![Piece::linear(0.0, 1.0 / u, 0.0), Piece::linear(u, -1.0 / (1.0 - u), 0.0)])
+            }
+            LawKind::LinearDecreasing => Some(vec![Piece::linear(0.0, 1.0, -2.0)]),
+            // Norton, Design of Machinery, 5th ed., §8.3, fig. 8-8: ramps over 1/8
+            LawKind::Trapezoid => Some(vec![
+                Piece::linear(0.0, 0.0, 8.0),
+                Piece::linear(0.125, 1.0, 0.0),
+                Piece::linear(0.375, 1.0, -8.0),
+                Piece::linear(0.625, -1.0, 0.0),
+                Piece::linear(0.875, -1.0, 8.0),
+            ]),
+            // Norton §8.3, eq. 8.15: sine ramps of period 1/2 over 1/8
+            LawKind::ModTrapezoid => Some(vec![
+                Piece::new(0.0, 0.0, 0.0, 1.0, 0.0, 4.0 * PI),
+                Piece::linear(0.125, 1.0, 0.0),
+                Piece::new(0.375, 0.0, 0.0, 0.0, 1.0, 4.0 * PI),
+                Piece::linear(0.625, -1.0, 0.0),
+                Piece::new(0.875, 0.0, 0.0, 0.0, -1.0, 4.0 * PI),
+            ]),
+            // Norton §8.3, eq. 8.17: 1/8 of a fast sine, a slow cosine, 1/8 of a fast cosine
+            LawKind::ModSine => Some(vec![
+                Piece::new(0.0, 0.0, 0.0, 1.0, 0.0, 4.0 * PI),
+                Piece::new(0.125, 0.0, 0.0, 0.0, 1.0, 4.0 * PI / 3.0),
+                Piece::new(0.875, 0.0, 0.0, 0.0, -1.0, 4.0 * PI),
+            ]),
+            LawKind::Table(v) => {
+                if v.len() < 2 {
+                    return Err(CamError::LawParameter { law: "table".into(), reason: "give at least two values of the acceleration analog".into() });
+                }
+                if v.iter().any(|a| !a.is_finite()) {
+                    return Err(CamError::LawParameter { law: "table".into(), reason: "every value must be a finite number".into() });
+                }
+                let n = v.len() - 1;
+                let dx = 1.0 / n as f64;
+                Some((0..n).map(|i| Piece::linear(i as f64 * dx, v[i], (v[i + 1] - v[i]) / dx)).collect())
+            }
+            _ => None,
+        };
+        let name = kind.name();
+        let pieces = match pieces {
+            Some(p) => Some(Pieces::new(p, 1e-6).map_err(|e| shape_error(name, e))?),
+            None => None,
+        };
+        Ok(Law { kind, pieces })
+    }
+
+    /// The law's parameters.
+    pub fn kind(&self) -> &LawKind {
+        &self.kind
+    }
+
+    /// `[y, y′, y″, y‴]` at the phase fraction `x ∈ [0, 1]` (derivatives with
+    /// respect to `x`).
+    ///
+    /// Sources: cosine and sine — Artobolevsky, ТММ (1988), §26.3, table 26.1;
+    /// polynomials — Norton, Design of Machinery, §8.4, eqs. 8.23 (3-4-5) and 8.24
+    /// (4-5-6-7); the piecewise laws — [`crate::segments`].
+    ///
+    /// ```
+    /// use tmm_cams::law::{Law, LawKind};
+    /// let l = Law::new(LawKind::Sine).unwrap();
+    /// let [y, v, a, _] = l.eval(0.5);
+    /// assert!((y - 0.5).abs() < 1e-15 && (v - 2.0).abs() < 1e-15 && a.abs() < 1e-12);
+    /// ```
+    #[inline]
+    pub fn eval(&self, x: f64) -> [f64; 4] {
+        let x = x.clamp(0.0, 1.0);
+        if let Some(p) = &self.pieces {
+            return p.eval(x);
+        }
+        match self.kind {
+            LawKind::Cosine => {
+                let (s, c) = (PI * x).sin_cos();
+                [(1.0 - c) / 2.0, PI / 2.0 * s, PI * PI / 2.0 * c, -PI * PI * PI / 2.0 * s]
+            }
+            LawKind::Sine => {
+                let (s, c) = (2.0 * PI * x).sin_cos();
+                [x - s / (2.0 * PI), 1.0 - c, 2.0 * PI * s, 4.0 * PI * PI * c]
+            }
+            LawKind::Poly345 => {
+                let (x2, x3) = (x * x, x * x * x);
+                [10.0 * x3 - 15.0 * x3 * x + 6.0 * x3 * x2, 30.0 * x2 - 60.0 * x3 + 30.0 * x2 * x2, 60.0 * x - 180.0 * x2 + 120.0 * x3, 60.0 - 360.0 * x + 360.0 * x2]
+            }
+            LawKind::Poly4567 => {
+                let (x2, x3) = (x * x, x * x * x);
+                let x4 = x2 * x2;
+                [
+                    35.0 * x4 - 84.0 * x4 * x + 70.0 * x3 * x3 - 20.0 * x4 * x3,
+                    140.0 * x3 - 420.0 * x4 + 420.0 * x4 * x - 140.0 * x3 * x3,
+                    420.0 * x2 - 1680.0 * x3 + 2100.0 * x4 - 840.0 * x4 * x,
+                    840.0 * x - 5040.0 * x2 + 8400.0 * x3 - 4200.0 * x4,
+                ]
+            }
+            // piecewise kinds always have pieces
+            _ => [x, 1.0, 0.0, 0.0],
+        }
+    }
+
+    /// Fractions of the phase inside which the acceleration or jerk may jump
+    /// (piece joints), for the extreme searches.
+    pub fn breaks(&self) -> Vec<f64> {
+        self.pieces.as_ref().map(|p| p.breaks().filter(|&x| x > 0.0).collect()).unwrap_or_default()
+    }
+
+    /// The order of continuity at a joint with a dwell: 1 — velocity continuous
+    /// (acceleration jumps, "soft impact"), 2 — acceleration continuous (jerk
+    /// jumps), 3 — jerk continuous.
+    pub fn continuity(&self) -> u8 {
+        match &self.kind {
+            LawKind::ConstAccel { .. } | LawKind::Cosine | LawKind::LinearDecreasing => 1,
+            LawKind::Sine | LawKind::Trapezoid | LawKind::ModTrapezoid | LawKind::ModSine | LawKind::Poly345 => 2,
+            LawKind::Poly4567 => 3,
+            LawKind::Table(v) => {
+                if v[0] == 0.0 && v[v.len() - 1] == 0.0 {
+                    2
+                } else {
+                    1
+                }
+            }
+        }
+    }
+}
+
+impl LawKind {
+    /// The name used in phase lists (`const-accel`, `cosine`, …).
+    pub fn name(&self) -> &'static str {
+        match self {
+            LawKind::ConstAccel { .. } => "const-accel",
+            LawKind::Cosine => "cosine",
+            LawKind::Sine => "sine",
+            LawKind::LinearDecreasing => "linear-decreasing",
+            LawKind::Trapezoid => "trapezoid",
+            LawKind::ModTrapezoid => "mod-trapezoid",
+            LawKind::ModSine => "mod-sine",
+            LawKind::Poly345 => "poly345",
+            LawKind::Poly4567 => "poly4567",
+            LawKind::Table(_) => "table",
+        }
+    }
+}
+
+impl std::fmt::Display for LawKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            LawKind::ConstAccel { u } => write!(f, "const-accel(u={u:.4})"),
+            LawKind::Table(v) => write!(f, "table({} values)", v.len()),
+            k => f.write_str(k.name()),
+        }
+    }
+}
+
+/// The law names a phase list accepts, for messages.
+pub const LAW_NAMES: &str =
+    "const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …)";

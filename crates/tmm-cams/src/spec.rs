@@ -1,0 +1,210 @@
+//! The compact text forms of a cam task, shared by the command line and the
+//! task file: the phase list (`rise 108 const-accel(u=1/3); dwell 15; …`) and
+//! the pressure-angle limits (`rise 15, return 30`, or one value for both).
+
+use crate::CamError;
+use crate::law::{LAW_NAMES, Law, LawKind};
+use crate::program::{Phase, PhaseKind};
+use tmm_geom::units::{self, Dim};
+
+/// Read a phase list: phases separated by `;`, each `KIND ANGLE [LAW]` where
+/// KIND is `rise`, `dwell` or `return` (also `upper-dwell`, `lower-dwell`),
+/// ANGLE takes a unit or is degrees, and LAW is one of [`LAW_NAMES`].
+///
+/// ```
+/// let p = tmm_cams::spec::parse_phases("rise 108 const-accel(u=1/3); dwell 15; return 108° sine; dwell 129").unwrap();
+/// assert_eq!(p.len(), 4);
+/// assert!((p[1].angle - 15f64.to_radians()).abs() < 1e-15);
+/// assert!(tmm_cams::spec::parse_phases("rise 108 bogus; dwell 252").is_err());
+/// ```
+pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
+    let mut out = Vec::new();
+    for piece in split_top(text, ';') {
+        let piece = piece.trim();
+        if piece.is_empty() {
+            continue;
+        }
+        let err = |reason: String| CamError::Phase { text: piece.to_string(), reason };
+        let (kw, rest) = piece.split_once(char::is_whitespace).ok_or_else(|| err("write KIND ANGLE [LAW], e.g. `rise 108 cosine`".into()))?;
+        let kind = match kw.to_ascii_lowercase().as_str() {
+            "rise" | "подъем" | "подъём" => PhaseKind::Rise,
+            "return" | "fall" | "опускание" => PhaseKind::Return,
+            "dwell" | "upper-dwell" | "lower-dwell" | "выстой" => PhaseKind::Dwell,
+            k => return Err(err(format!("`{k}` is not a phase; use rise, dwell or return"))),
+        };
+        let rest = rest.trim();
+        let (angle_txt, law) = if kind == PhaseKind::Dwell {
+            (rest, None)
+        } else {
+            let cut = last_word_start(rest);
+            if cut == 0 {
+                return Err(err(format!("give the angle and the law, e.g. `{kw} 108 cosine`; laws: {LAW_NAMES}")));
+            }
+            (rest[..cut].trim(), Some(parse_law(rest[cut..].trim())?))
+        };
+        let angle = units::parse(angle_txt, Dim::Angle).map_err(|e| err(e.to_string()))?;
+        out.push(Phase { kind, angle, law });
+    }
+    if out.is_empty() {
+        return Err(CamError::Phase { text: text.to_string(), reason: "no phases given".into() });
+    }
+    Ok(out)
+}
+
+/// Read one law: `name` or `name(args)`.
+///
+/// ```
+/// use tmm_cams::law::LawKind;
+/// let l = tmm_cams::spec::parse_law("const-accel(u=1/3)").unwrap();
+/// assert_eq!(l.kind(), &LawKind::ConstAccel { u: 1.0 / 3.0 });
+/// let t = tmm_cams::spec::parse_law("table(1, 1, -1, -1)").unwrap();
+/// assert_eq!(t.kind(), &LawKind::Table(vec![1.0, 1.0, -1.0, -1.0]));
+/// ```
+pub fn parse_law(text: &str) -> Result<Law, CamError> {
+    let t = text.trim();
+    let (name, args) = match t.find('(') {
+        Some(p) => {
+            let close = t.rfind(')').filter(|&c| c > p && c == t.len() - 1).ok_or_else(|| CamError::LawParameter {
+                law: t.to_string(),
+                reason: "the parenthesis is not closed".into(),
+            })?;
+            (t[..p].trim(), Some(&t[p + 1..close]))
+        }
+        None => (t, None),
+    };
+    let lname = name.to_ascii_lowercase().replace('_', "-");
+    let no_args = |k: LawKind| -> Result<LawKind, CamError> {
+        match args {
+            Some(a) if !a.trim().is_empty() => Err(CamError::LawParameter { law: t.to_string(), reason: "this law takes no parameters".into() }),
+            _ => Ok(k),
+        }
+    };
+    let kind = match lname.as_str() {
+        "const-accel" | "constant-acceleration" | "parabolic" => {
+            let u = match args {
+                None => 0.5,
+                Some(a) => {
+                    let a = a.trim();
+                    let v = a.strip_prefix("u").map(|r| r.trim_start().trim_start_matches('=')).unwrap_or(a);
+                    units::parse(v, Dim::Ratio).map_err(|e| CamError::LawParameter { law: t.to_string(), reason: format!("{e}; write const-accel(u=1/3)") })?
+                }
+            };
+            LawKind::ConstAccel { u }
+        }
+        "cosine" | "harmonic" => no_args(LawKind::Cosine)?,
+        "sine" | "cycloidal" => no_args(LawKind::Sine)?,
+        "linear-decreasing" => no_args(LawKind::LinearDecreasing)?,
+        "trapezoid" | "trapezoidal" => no_args(LawKind::Trapezoid)?,
+        "mod-trapezoid" | "modified-trapezoid" => no_args(LawKind::ModTrapezoid)?,
+        "mod-sine" | "modified-sine" => no_args(LawKind::ModSine)?,
+        "poly345" | "3-4-5" => no_args(LawKind::Poly345)?,
+        "poly4567" | "4-5-6-7" => no_args(LawKind::Poly4567)?,
+        "table" => {
+            let a = args.unwrap_or("");
+            let vals: Result<Vec<f64>, CamError> = a
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|w| !w.is_empty())
+                .map(|w| {
+                    units::parse(w, Dim::Ratio).map_err(|e| CamError::LawParameter { law: "table".into(), reason: format!("{e}; separate the values with commas and use a decimal point") })
+                })
+                .collect();
+            LawKind::Table(vals?)
+        }
+        _ => return Err(CamError::UnknownLaw { name: name.to_string() }),
+    };
+    Law::new(kind)
+}
+
+/// Pressure-angle limits for the rise and the return, rad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limits {
+    /// Allowed pressure angle on the rise.
+    pub rise: f64,
+    /// Allowed pressure angle on the return.
+    pub ret: f64,
+}
+
+impl Limits {
+    /// Check that both lie strictly between 0 and 90°.
+    pub fn check(self) -> Result<Self, CamError> {
+        for (phase, v) in [("rise", self.rise), ("return", self.ret)] {
+            if !(v > 0.0 && v < std::f64::consts::FRAC_PI_2) {
+                return Err(CamError::PressureLimit { phase, deg: v.to_degrees() });
+            }
+        }
+        Ok(self)
+    }
+}
+
+/// Read `rise 15, return 30` or `30` (both phases). With `transmission`, the
+/// values are transmission angles γ and the limits are ϑ = 90° − γ
+/// (DESIGN.md glossary: угол передачи γ = 90° − ϑ).
+///
+/// ```
+/// let l = tmm_cams::spec::parse_limits("rise 75, return 60", true).unwrap();
+/// assert!((l.rise - 15f64.to_radians()).abs() < 1e-15 && (l.ret - 30f64.to_radians()).abs() < 1e-15);
+/// assert!(tmm_cams::spec::parse_limits("95", false).is_err());
+/// ```
+pub fn parse_limits(text: &str, transmission: bool) -> Result<Limits, CamError> {
+    let conv = |v: f64| if transmission { std::f64::consts::FRAC_PI_2 - v } else { v };
+    let bad = |reason: String| CamError::Phase { text: text.to_string(), reason };
+    let t = text.trim();
+    let (mut rise, mut ret) = (None, None);
+    if t.contains("rise") || t.contains("return") {
+        for part in t.split([',', ';']) {
+            let part = part.trim();
+            if part.is_empty() {
+                continue;
+            }
+            let (k, v) = part.split_once(char::is_whitespace).ok_or_else(|| bad(format!("`{part}`: write `rise 15, return 30`")))?;
+            let v = conv(units::parse(v.trim_start_matches('=').trim(), Dim::Angle).map_err(|e| bad(e.to_string()))?);
+            match k {
+                "rise" => rise = Some(v),
+                "return" => ret = Some(v),
+                _ => return Err(bad(format!("`{k}` is not a phase; write `rise 15, return 30`"))),
+            }
+        }
+        let (Some(rise), Some(ret)) = (rise, ret) else {
+            return Err(bad("give both `rise` and `return`, or one value for both".into()));
+        };
+        Limits { rise, ret }.check()
+    } else {
+        let v = conv(units::parse(t, Dim::Angle).map_err(|e| bad(e.to_string()))?);
+        Limits { rise: v, ret: v }.check()
+    }
+}
+
+/// Split on `sep` outside parentheses.
+fn split_top(text: &str, sep: char) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                out.push(&text[start..i]);
+                start = i + c.len_utf8();
+            }
+            _ => {}
+        }
+    }
+    out.push(&text[start..]);
+    out
+}
+
+/// Byte index where the last whitespace-separated word (parentheses kept
+/// together) starts; 0 when there is only one word.
+fn last_word_start(text: &str) -> usize {
+    let mut depth = 0i32;
+    let mut last = 0;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            c if c.is_whitespace() && depth == 0 => last = i + c.len_utf8(),
+            _ => {}
+        }
+    }
+    last
+}
