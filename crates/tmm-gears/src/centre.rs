@@ -25,7 +25,9 @@ pub fn shift_sum_for_aw(z1: u32, z2: u32, m: f64, aw: f64, rack: &BasicRack, kin
         Kind::Internal => z2 as f64 - z1 as f64,
     };
     if zs <= 0.0 {
-        return Err(GearError::InternalAssembly(format!("the ring needs more teeth than the pinion (z2 = {z2} ≤ z1 = {z1})")));
+        return Err(GearError::InternalAssembly(format!(
+            "the ring needs more teeth than the pinion (z2 = {z2} ≤ z1 = {z1})"
+        )));
     }
     let a = zs * m / 2.0;
     let min = a * rack.alpha.cos();

@@ -17,7 +17,10 @@ pub struct Limits {
 impl Default for Limits {
     /// sa ≥ 0.25·m, εα ≥ 1.2.
     fn default() -> Self {
-        Limits { sa_min: 0.25, eps_min: 1.2 }
+        Limits {
+            sa_min: 0.25,
+            eps_min: 1.2,
+        }
     }
 }
 
@@ -108,28 +111,68 @@ impl Pair {
     /// assert!(c.all_pass());
     /// ```
     pub fn checks(&self, lim: &Limits) -> Checks {
-        let blank = Check { kind: CheckKind::ContactRatio, value: 0.0, limit: 0.0, pass: true };
+        let blank = Check {
+            kind: CheckKind::ContactRatio,
+            value: 0.0,
+            limit: 0.0,
+            pass: true,
+        };
         let mut out = Checks { items: [blank; 8], len: 0 };
         let internal = self.spec.kind == Kind::Internal;
         let m = self.spec.m;
         for (i, w) in [(1u8, &self.w1), (2u8, &self.w2)] {
             if let Some(xm) = w.xmin {
-                out.push(Check { kind: CheckKind::Undercut(i), value: w.x, limit: xm, pass: w.x >= xm - 1e-12 });
+                out.push(Check {
+                    kind: CheckKind::Undercut(i),
+                    value: w.x,
+                    limit: xm,
+                    pass: w.x >= xm - 1e-12,
+                });
             }
         }
-        out.push(Check { kind: CheckKind::Interference(1), value: self.w1.rho_p, limit: self.w1.rho_l, pass: self.w1.rho_l <= self.w1.rho_p });
+        out.push(Check {
+            kind: CheckKind::Interference(1),
+            value: self.w1.rho_p,
+            limit: self.w1.rho_l,
+            pass: self.w1.rho_l <= self.w1.rho_p,
+        });
         if internal {
-            out.push(Check { kind: CheckKind::Interference(2), value: self.w2.rho_p, limit: self.w2.rho_l, pass: self.w2.rho_p <= self.w2.rho_l });
+            out.push(Check {
+                kind: CheckKind::Interference(2),
+                value: self.w2.rho_p,
+                limit: self.w2.rho_l,
+                pass: self.w2.rho_p <= self.w2.rho_l,
+            });
         } else {
-            out.push(Check { kind: CheckKind::Interference(2), value: self.w2.rho_p, limit: self.w2.rho_l, pass: self.w2.rho_l <= self.w2.rho_p });
+            out.push(Check {
+                kind: CheckKind::Interference(2),
+                value: self.w2.rho_p,
+                limit: self.w2.rho_l,
+                pass: self.w2.rho_l <= self.w2.rho_p,
+            });
         }
         for (i, w) in [(1u8, &self.w1), (2u8, &self.w2)] {
             let lim_sa = lim.sa_min * m;
-            out.push(Check { kind: CheckKind::Pointing(i), value: w.sa, limit: lim_sa, pass: w.sa >= lim_sa });
+            out.push(Check {
+                kind: CheckKind::Pointing(i),
+                value: w.sa,
+                limit: lim_sa,
+                pass: w.sa >= lim_sa,
+            });
         }
-        out.push(Check { kind: CheckKind::ContactRatio, value: self.eps_alpha, limit: lim.eps_min, pass: self.eps_alpha >= lim.eps_min });
+        out.push(Check {
+            kind: CheckKind::ContactRatio,
+            value: self.eps_alpha,
+            limit: lim.eps_min,
+            pass: self.eps_alpha >= lim.eps_min,
+        });
         if let Some(t) = self.tip_interference {
-            out.push(Check { kind: CheckKind::TipInterference, value: t, limit: 0.0, pass: t >= 0.0 });
+            out.push(Check {
+                kind: CheckKind::TipInterference,
+                value: t,
+                limit: 0.0,
+                pass: t >= 0.0,
+            });
         }
         out
     }

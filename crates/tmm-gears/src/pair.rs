@@ -95,11 +95,20 @@ impl Pair {
     /// ```
     pub fn new(spec: &PairSpec) -> Result<Pair, GearError> {
         spec.validate()?;
-        Self::compute(spec)
+        let pair = Self::compute(spec)?;
+        if let Some(t) = pair.tip_interference
+            && t < 0.0
+        {
+            return Err(GearError::InternalAssembly(format!(
+                "the tips of the pinion and the ring interfere on leaving the mesh (margin {t:.4} < 0); raise z2 − z1 or the shifts"
+            )));
+        }
+        Ok(pair)
     }
 
-    /// Compute without [`PairSpec::validate`] (the caller validated `spec`
-    /// apart from the shifts); used in the inner loops of the blocking contour.
+    /// Compute without [`PairSpec::validate`] and without rejecting tip
+    /// interference (the caller validated `spec` apart from the shifts); used in
+    /// the inner loops of the blocking contour.
     pub fn compute(spec: &PairSpec) -> Result<Pair, GearError> {
         let r = &spec.rack;
         let m = spec.m;
@@ -107,7 +116,11 @@ impl Pair {
         let internal = spec.kind == Kind::Internal;
         let (z1, z2) = (spec.z1 as f64, spec.z2 as f64);
         // GOST 16532-70 t.1 items 1–4; GOST 19274-73 for internal (z2 − z1, x2 − x1).
-        let (zs, xs) = if internal { (z2 - z1, spec.x2 - spec.x1) } else { (z1 + z2, spec.x1 + spec.x2) };
+        let (zs, xs) = if internal {
+            (z2 - z1, spec.x2 - spec.x1)
+        } else {
+            (z1 + z2, spec.x1 + spec.x2)
+        };
         let a = zs * m / 2.0;
         let inv_aw = 2.0 * xs * ta / zs + inv(al);
         let alpha_w = inv_inverse(inv_aw).ok_or(GearError::ShiftSum { x_sum: xs, inv_aw })?;
@@ -122,7 +135,11 @@ impl Pair {
         // Tip and root diameters (GOST 16532-70 t.1 items 9–10; ring: derived, docs §Internal).
         let d1 = z1 * m;
         let d2 = z2 * m;
-        let da1 = if internal { d1 + 2.0 * (r.ha + spec.x1) * m } else { d1 + 2.0 * (r.ha + spec.x1 - dy) * m };
+        let da1 = if internal {
+            d1 + 2.0 * (r.ha + spec.x1) * m
+        } else {
+            d1 + 2.0 * (r.ha + spec.x1 - dy) * m
+        };
         let df1 = d1 - 2.0 * (r.ha + r.c - spec.x1) * m;
         let (da2, df2) = if internal {
             (d2 - 2.0 * (r.ha - spec.x2) * m, d2 + 2.0 * (r.ha + r.c + spec.x2) * m)
@@ -130,39 +147,70 @@ impl Pair {
             (d2 + 2.0 * (r.ha + spec.x2 - dy) * m, d2 - 2.0 * (r.ha + r.c - spec.x2) * m)
         };
         if da1 <= df1 {
-            return Err(GearError::TipBelowRoot { wheel: 1, da: da1, df: df1 });
+            return Err(GearError::TipBelowRoot {
+                wheel: 1,
+                da: da1,
+                df: df1,
+            });
         }
         if !internal && da2 <= df2 {
-            return Err(GearError::TipBelowRoot { wheel: 2, da: da2, df: df2 });
+            return Err(GearError::TipBelowRoot {
+                wheel: 2,
+                da: da2,
+                df: df2,
+            });
         }
         let (db1, db2) = (d1 * ca, d2 * ca);
         if da1 <= db1 {
-            return Err(GearError::TipInsideBase { wheel: 1, da: da1, db: db1 });
+            return Err(GearError::TipInsideBase {
+                wheel: 1,
+                da: da1,
+                db: db1,
+            });
         }
         if da2 <= db2 {
             return if internal {
-                Err(GearError::InternalAssembly(format!("the ring's tip circle (d = {da2} m) lies inside its base circle (d = {db2} m); raise x2")))
+                Err(GearError::InternalAssembly(format!(
+                    "the ring's tip circle (d = {da2} m) lies inside its base circle (d = {db2} m); raise x2"
+                )))
             } else {
-                Err(GearError::TipInsideBase { wheel: 2, da: da2, db: db2 })
+                Err(GearError::TipInsideBase {
+                    wheel: 2,
+                    da: da2,
+                    db: db2,
+                })
             };
         }
-        let (dw1, dw2) = if internal { (2.0 * aw * z1 / zs, 2.0 * aw * z2 / zs) } else { (2.0 * aw * z1 / zs, 2.0 * aw * z2 / zs) };
+        // dw1 = 2aw/(u ± 1), dw2 = 2aw·u/(u ± 1) (GOST 16532-70 t.1 item 7).
+        let (dw1, dw2) = (2.0 * aw * z1 / zs, 2.0 * aw * z2 / zs);
         // Tooth thickness on the reference circle (GOST 16532-70 t.4); the ring's
         // tooth is the complement of an external tooth space.
         let s1 = (PI / 2.0 + 2.0 * spec.x1 * ta) * m;
-        let s2 = if internal { (PI / 2.0 - 2.0 * spec.x2 * ta) * m } else { (PI / 2.0 + 2.0 * spec.x2 * ta) * m };
+        let s2 = if internal {
+            (PI / 2.0 - 2.0 * spec.x2 * ta) * m
+        } else {
+            (PI / 2.0 + 2.0 * spec.x2 * ta) * m
+        };
         let aa1 = (db1 / da1).acos();
         let aa2 = (db2 / da2).acos();
         // Tip thickness sa = da (s/d + inv α − inv αa) (GOST 16532-70 t.4);
         // ring: sa = da (s/d − inv α + inv αa) (derived, docs §Internal).
         let sa1 = da1 * (s1 / d1 + inv(al) - inv(aa1));
-        let sa2 = if internal { da2 * (s2 / d2 - inv(al) + inv(aa2)) } else { da2 * (s2 / d2 + inv(al) - inv(aa2)) };
+        let sa2 = if internal {
+            da2 * (s2 / d2 - inv(al) + inv(aa2))
+        } else {
+            da2 * (s2 / d2 + inv(al) - inv(aa2))
+        };
         // Line of action N1N2 and its active part (GOST 16532-70 t.4).
         let g = aw * alpha_w.sin();
         let (rb1, rb2) = (db1 / 2.0, db2 / 2.0);
         let rho_a1 = ((da1 / 2.0).powi(2) - rb1 * rb1).sqrt();
         let rho_a2 = ((da2 / 2.0).powi(2) - rb2 * rb2).sqrt();
-        let (rho_p1, rho_p2) = if internal { (rho_a2 - g, rho_a1 + g) } else { (g - rho_a2, g - rho_a1) };
+        let (rho_p1, rho_p2) = if internal {
+            (rho_a2 - g, rho_a1 + g)
+        } else {
+            (g - rho_a2, g - rho_a1)
+        };
         // Boundary point of the generated involute (seed 001 §IV.2; GOST 16532-70 t.4):
         // ρl = r sin α − (hl* − ha* − x) m / sin α. Ring: docs §Internal.
         let sn = al.sin();
@@ -180,8 +228,25 @@ impl Pair {
         } else {
             (z1 * aa1.tan() + z2 * aa2.tan() - zs * tw) / (2.0 * PI)
         };
-        let tip_interference = if internal { Some(tip_interference_margin(z1, z2, da1 / 2.0, da2 / 2.0, aw, aa1, aa2, inv_aw)) } else { None };
-        let wheel = |z: u32, x: f64, d: f64, db: f64, dw: f64, da: f64, df: f64, s: f64, sa: f64, aa: f64, ra: f64, rp: f64, rl: f64, ring: bool| Wheel {
+        let tip_interference = if internal {
+            Some(tip_interference_margin(z1, z2, da1 / 2.0, da2 / 2.0, aw, aa1, aa2, inv_aw))
+        } else {
+            None
+        };
+        let wheel = |z: u32,
+                     x: f64,
+                     d: f64,
+                     db: f64,
+                     dw: f64,
+                     da: f64,
+                     df: f64,
+                     s: f64,
+                     sa: f64,
+                     aa: f64,
+                     ra: f64,
+                     rp: f64,
+                     rl: f64,
+                     ring: bool| Wheel {
             z,
             x,
             d,
@@ -214,18 +279,15 @@ impl Pair {
             s_end: rho_a1,
             eps_alpha,
             tip_interference,
-            w1: wheel(spec.z1, spec.x1, d1, db1, dw1, da1, df1, s1, sa1, aa1, rho_a1, rho_p1, rho_l1, false),
-            w2: wheel(spec.z2, spec.x2, d2, db2, dw2, da2, df2, s2, sa2, aa2, rho_a2, rho_p2, rho_l2, internal),
+            w1: wheel(
+                spec.z1, spec.x1, d1, db1, dw1, da1, df1, s1, sa1, aa1, rho_a1, rho_p1, rho_l1, false,
+            ),
+            w2: wheel(
+                spec.z2, spec.x2, d2, db2, dw2, da2, df2, s2, sa2, aa2, rho_a2, rho_p2, rho_l2, internal,
+            ),
         };
         if !pair.all_finite() {
             return Err(GearError::NonFinite("pair geometry"));
-        }
-        if let Some(t) = tip_interference
-            && t < 0.0
-        {
-            return Err(GearError::InternalAssembly(format!(
-                "the tips of the pinion and the ring interfere on leaving the mesh (margin {t:.4} < 0); raise z2 − z1 or the shifts"
-            )));
         }
         Ok(pair)
     }

@@ -21,7 +21,12 @@ pub struct BasicRack {
 impl Default for BasicRack {
     /// GOST 13755-81: α = 20°, ha* = 1, c* = 0.25, hl* = 2.
     fn default() -> Self {
-        BasicRack { alpha: 20f64.to_radians(), ha: 1.0, c: 0.25, hl: 2.0 }
+        BasicRack {
+            alpha: 20f64.to_radians(),
+            ha: 1.0,
+            c: 0.25,
+            hl: 2.0,
+        }
     }
 }
 

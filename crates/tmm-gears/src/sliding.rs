@@ -52,7 +52,12 @@ impl Pair {
         (0..n)
             .map(|i| {
                 let s = self.s_start + (self.s_end - self.s_start) * i as f64 / (n - 1) as f64;
-                SlidingPoint { s, rho2: self.rho2_at(s), theta1: self.theta1_at(s), theta2: self.theta2_at(s) }
+                SlidingPoint {
+                    s,
+                    rho2: self.rho2_at(s),
+                    theta1: self.theta1_at(s),
+                    theta2: self.theta2_at(s),
+                }
             })
             .collect()
     }

@@ -40,7 +40,15 @@ pub struct PairSpec {
 impl PairSpec {
     /// An external pair on the default rack.
     pub fn external(z1: u32, z2: u32, m: f64, x1: f64, x2: f64) -> Self {
-        PairSpec { z1, z2, m, x1, x2, rack: BasicRack::default(), kind: Kind::External }
+        PairSpec {
+            z1,
+            z2,
+            m,
+            x1,
+            x2,
+            rack: BasicRack::default(),
+            kind: Kind::External,
+        }
     }
 
     /// Check everything that does not need the geometry.
@@ -57,17 +65,28 @@ impl PairSpec {
         }
         let zmin = smallest_cuttable(&self.rack);
         if self.z1 < zmin {
-            return Err(GearError::TooFewTeeth { wheel: 1, z: self.z1, min: zmin });
+            return Err(GearError::TooFewTeeth {
+                wheel: 1,
+                z: self.z1,
+                min: zmin,
+            });
         }
         match self.kind {
             Kind::External => {
                 if self.z2 < zmin {
-                    return Err(GearError::TooFewTeeth { wheel: 2, z: self.z2, min: zmin });
+                    return Err(GearError::TooFewTeeth {
+                        wheel: 2,
+                        z: self.z2,
+                        min: zmin,
+                    });
                 }
             }
             Kind::Internal => {
                 if self.z2 <= self.z1 {
-                    return Err(GearError::InternalAssembly(format!("the ring needs more teeth than the pinion (z2 = {} ≤ z1 = {})", self.z2, self.z1)));
+                    return Err(GearError::InternalAssembly(format!(
+                        "the ring needs more teeth than the pinion (z2 = {} ≤ z1 = {})",
+                        self.z2, self.z1
+                    )));
                 }
             }
         }
@@ -111,9 +130,12 @@ pub fn lone_tip_thickness(z: u32, x: f64, rack: &BasicRack) -> Option<f64> {
 /// (defined here; docs/gears.md §Smallest tooth number).
 ///
 /// ```
-/// // For the 20° rack a shifted 7-tooth pinion is still possible.
-/// assert!(tmm_gears::spec::smallest_cuttable(&tmm_gears::BasicRack::default()) <= 7);
+/// // 20° rack: z = 7 at xmin = 0.591 has αa = 49.75°, sa/m = 10.18·(0.2858 + 0.0149 − 0.3139) < 0;
+/// // z = 8 at xmin = 0.532 has αa = 33.96°, sa/m = 9.064·(0.2448 + 0.0149 − 0.0809) > 0.
+/// assert_eq!(tmm_gears::spec::smallest_cuttable(&tmm_gears::BasicRack::default()), 8);
 /// ```
 pub fn smallest_cuttable(rack: &BasicRack) -> u32 {
-    (1..200).find(|&z| lone_tip_thickness(z, xmin(z, rack).max(-10.0), rack).is_some_and(|s| s > 0.0)).unwrap_or(200)
+    (1..200)
+        .find(|&z| lone_tip_thickness(z, xmin(z, rack).max(-10.0), rack).is_some_and(|s| s > 0.0))
+        .unwrap_or(200)
 }

@@ -95,7 +95,13 @@ fn seed_001_sheet_2_recomputed() {
 /// aw = rw1 + rw2 = r1 + r2 + y·m = ra1 + rf2 + c*·m = rf1 + ra2 + c*·m (seed 001 §II).
 #[test]
 fn centre_distance_identities() {
-    for &(z1, z2, x1, x2) in &[(15u32, 20u32, 0.2, 0.85), (12, 40, 0.5, 0.3), (17, 17, 0.0, 0.0), (25, 60, -0.2, 0.1), (10, 31, 0.6, 0.9)] {
+    for &(z1, z2, x1, x2) in &[
+        (15u32, 20u32, 0.2, 0.85),
+        (12, 40, 0.5, 0.3),
+        (17, 17, 0.0, 0.0),
+        (25, 60, -0.2, 0.1),
+        (10, 31, 0.6, 0.9),
+    ] {
         let m = 0.004;
         let p = Pair::new(&PairSpec::external(z1, z2, m, x1, x2)).unwrap();
         let tol = 1e-12;
@@ -117,7 +123,12 @@ fn centre_distance_identities() {
 /// one base pitch angle, counted from a sampled line of action.
 #[test]
 fn contact_ratio_two_ways() {
-    for &(z1, z2, x1, x2) in &[(15u32, 20u32, 0.2, 0.85), (20, 50, 0.0, 0.0), (13, 37, 0.4, 0.2), (30, 30, -0.3, 0.3)] {
+    for &(z1, z2, x1, x2) in &[
+        (15u32, 20u32, 0.2, 0.85),
+        (20, 50, 0.0, 0.0),
+        (13, 37, 0.4, 0.2),
+        (30, 30, -0.3, 0.3),
+    ] {
         let p = Pair::new(&PairSpec::external(z1, z2, 0.003, x1, x2)).unwrap();
         let r = BasicRack::default();
         let (rb1, rb2) = (p.w1.db / 2.0, p.w2.db / 2.0);
@@ -132,7 +143,10 @@ fn contact_ratio_two_ways() {
 
 #[test]
 fn internal_pair_basics() {
-    let spec = PairSpec { kind: Kind::Internal, ..PairSpec::external(20, 60, 0.002, 0.0, 0.0) };
+    let spec = PairSpec {
+        kind: Kind::Internal,
+        ..PairSpec::external(20, 60, 0.002, 0.0, 0.0)
+    };
     let p = Pair::new(&spec).unwrap();
     // a = m (z2 − z1) / 2 and αw = α without shifts.
     assert!((p.aw - 0.040).abs() < 1e-15);
