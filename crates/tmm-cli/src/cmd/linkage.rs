@@ -1,18 +1,58 @@
-//! `tmm linkage`.
+//! `tmm linkage FILE.toml`: structure and kinematics of a lever mechanism.
 
 use std::path::PathBuf;
 
+use tmm_geom::units::Dim;
+use tmm_report::linkage::{analyse, json_document, load, text_report, write_svgs};
+use tmm_report::task::arg_qty;
 use tmm_report::Error;
 
-/// Arguments of `tmm linkage`.
+use super::common::{print_json, read_task};
+
+/// Structure (Assur groups, formula) and kinematics (dead positions, Kv, the
+/// 12-position table, diagrams, velocity and acceleration plans) of the
+/// `[linkage]` section of a task file.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The task file (TOML)
-    pub file: Option<PathBuf>,
+    /// The task file (TOML) with a [linkage] section
+    pub file: PathBuf,
+    /// One crank angle only: the absolute angle of the crank from the x-axis, counter-clockwise (e.g. 15, "15 deg", "0.26 rad")
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// Number of equally spaced positions from the dead position that starts the working stroke (default: the file's, else 12)
+    #[arg(long, value_name = "N")]
+    pub positions: Option<usize>,
+    /// Print one JSON document (SI, angles in radians) instead of the tables
+    #[arg(long)]
+    pub json: bool,
+    /// Write the drawings (positions, diagrams, velocity and acceleration plans) as SVG into this folder
+    #[arg(long, value_name = "DIR")]
+    pub svg: Option<PathBuf>,
 }
 
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
-    let _ = a;
-    Err(Error::input("linkage", "not available yet"))
+    let task = read_task(&a.file)?;
+    let l = load(&task)?.ok_or_else(|| Error::input(&task.name, "the file has no [linkage] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let at = match &a.at {
+        Some(t) => Some(arg_qty("--at", t, Dim::Angle)?),
+        None => None,
+    };
+    if a.positions == Some(0) || a.positions.is_some_and(|n| n > 100_000) {
+        return Err(Error::input("--positions", "must be from 1 to 100000"));
+    }
+    let n = a.positions.unwrap_or(l.task.positions);
+    let an = analyse(&l, &task, at, n)?;
+    let files = match &a.svg {
+        Some(dir) => write_svgs(&l, &an, dir)?,
+        None => Vec::new(),
+    };
+    if a.json {
+        return print_json(&json_document(&l, &an));
+    }
+    print!("{}", text_report(&l, &an));
+    for f in files {
+        println!("wrote {}", f.display());
+    }
+    Ok(())
 }

@@ -1,0 +1,167 @@
+//! Drawings of the `[linkage]` section: the mechanism in its positions
+//! overlaid, the kinematic diagrams of the output, and the velocity and
+//! acceleration plans with their scale factors μ.
+
+use std::path::{Path, PathBuf};
+
+use tmm_geom::Vec2;
+use tmm_linkage::Solution;
+use tmm_linkage::mechanism::Pair;
+use tmm_linkage::plans::{PlanVector, VectorKind};
+
+use super::{Analysis, Loaded};
+use crate::Error;
+use crate::output::write_file;
+use crate::svg::{Anchor, Canvas, Series, Style, nice_ticks, plot};
+
+/// Write every drawing into `dir`.
+pub fn write_all(l: &Loaded, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+    write_file(&dir.join("positions.svg"), &positions(l, a), files)?;
+    let w = l.mech.crank.omega.abs();
+    let deg: Vec<f64> = a.diagram.iter().map(|d| d[0].to_degrees()).collect();
+    let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
+    let (su, vu) = if lin { ("s, m", "m") } else { ("s, rad", "rad") };
+    let series = |k: usize, f: f64| -> Vec<(f64, f64)> { deg.iter().zip(&a.diagram).map(|(x, d)| (*x, d[k] * f)).collect() };
+    let s = series(1, 1.0);
+    let ds = series(2, 1.0);
+    let dds = series(3, 1.0);
+    write_file(&dir.join("diagram-s.svg"), &plot("Output displacement s(φ)", "crank rotation from the start φ, °", su, &[Series { name: "s", points: &s, color: "#1f4e9c" }], 200.0, 120.0), files)?;
+    write_file(&dir.join("diagram-ds.svg"), &plot("Velocity analog ds/dφ", "φ, °", &format!("ds/dφ, {vu}"), &[Series { name: "ds/dφ", points: &ds, color: "#c0392b" }], 200.0, 120.0), files)?;
+    write_file(&dir.join("diagram-dds.svg"), &plot("Acceleration analog d²s/dφ²", "φ, °", &format!("d²s/dφ², {vu}"), &[Series { name: "d²s/dφ²", points: &dds, color: "#27ae60" }], 200.0, 120.0), files)?;
+    let t: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[2] * w)).collect();
+    let ta: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[3] * w * w)).collect();
+    write_file(&dir.join("diagram-v.svg"), &plot("Output velocity v(t)", "t, s", if lin { "v, m/s" } else { "ω, rad/s" }, &[Series { name: "v", points: &t, color: "#c0392b" }], 200.0, 120.0), files)?;
+    write_file(&dir.join("diagram-a.svg"), &plot("Output acceleration a(t)", "t, s", if lin { "a, m/s²" } else { "ε, rad/s²" }, &[Series { name: "a", points: &ta, color: "#27ae60" }], 200.0, 120.0), files)?;
+    write_file(&dir.join("velocity-plan.svg"), &plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi), files)?;
+    write_file(&dir.join("acceleration-plan.svg"), &plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi), files)?;
+    Ok(())
+}
+
+/// Segments of each link between its joints, at one solution.
+fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(Vec2, Vec2)> {
+    let m = &l.mech;
+    let mut segs = Vec::new();
+    for li in 1..m.link_names.len() {
+        let mut joints: Vec<Vec2> = Vec::new();
+        for p in &m.pairs {
+            let (a, b) = p.links();
+            if a == li || b == li {
+                let pos = sol.points[p.point()].p;
+                if !joints.iter().any(|j| (*j - pos).hypot() < 1e-12) {
+                    joints.push(pos);
+                }
+            }
+        }
+        for i in 0..joints.len() {
+            for j in i + 1..joints.len() {
+                if joints.len() <= 3 || j == i + 1 {
+                    segs.push((joints[i], joints[j]));
+                }
+            }
+        }
+    }
+    segs
+}
+
+fn positions(l: &Loaded, a: &Analysis) -> String {
+    let m = &l.mech;
+    let mut pts: Vec<Vec2> = Vec::new();
+    for r in &a.rows {
+        pts.extend(r.sol.points.iter().map(|p| p.p));
+    }
+    let (xmin, xmax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
+    let (ymin, ymax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
+    let mut c = Canvas::new(297.0, 210.0);
+    let scale = c.fit((xmin, xmax, ymin, ymax), (15.0, 20.0, 267.0, 165.0));
+    c.text_paper((148.5, 10.0), &format!("Mechanism in {} positions (μl = {:.5} m/mm); bold: φ = {:.2}°", a.rows.len(), 1.0 / scale, a.plan_row.pos.phi.to_degrees()), 4.0, Anchor::Middle, "#000");
+    let xy = |v: Vec2| (v.x, v.y);
+    // trajectories of the joints
+    for (k, p) in m.points.iter().enumerate() {
+        if p.link == 0 {
+            continue;
+        }
+        let tr: Vec<(f64, f64)> = a.rows.iter().map(|r| xy(r.sol.points[k].p)).collect();
+        c.polyline(&tr, Style::DASHED.colored("#999999"));
+    }
+    for r in &a.rows {
+        for (p, q) in link_segments(l, &r.sol) {
+            c.line(xy(p), xy(q), Style::THIN.colored("#7f8c8d"));
+        }
+        if let Some(k) = m.points.iter().position(|p| p.name == m.points[m.crank.pin].name) {
+            let pp = r.sol.points[k].p;
+            c.text_colored((pp.x, pp.y), &r.pos.label, 2.5, Anchor::Start, "#555");
+        }
+    }
+    let sol = &a.plan_row.sol;
+    for (p, q) in link_segments(l, sol) {
+        c.line(xy(p), xy(q), Style::THICK);
+    }
+    // guides
+    for pr in &m.pairs {
+        if let Pair::P { guide, point, q, d, .. } = *pr {
+            let g = &sol.links[guide];
+            let qq = g.pos(q);
+            let dd = tmm_linkage::state::rot(g.u, d);
+            let sp = sol.points[point].p;
+            let t = (sp - qq).dot(dd);
+            let span = 0.25 * (xmax - xmin).max(ymax - ymin);
+            c.line(xy(qq + dd * (t - span)), xy(qq + dd * (t + span)), Style::AXIS);
+            let half = 3.0 / scale;
+            let n = Vec2::new(-dd.y, dd.x);
+            let corners = [sp + dd * half + n * half * 0.6, sp - dd * half + n * half * 0.6, sp - dd * half - n * half * 0.6, sp + dd * half - n * half * 0.6];
+            c.polygon(&corners.map(xy), Style::THICK.widened(0.5).filled("#ffffff"));
+        }
+    }
+    for (k, p) in m.points.iter().enumerate() {
+        let pos = sol.points[k].p;
+        let is_joint = m.pairs.iter().any(|pr| pr.point() == k);
+        if p.link == 0 {
+            c.fixed_pivot(xy(pos), 1.3);
+        } else if is_joint {
+            c.joint(xy(pos), 1.0);
+        } else {
+            c.dot(xy(pos), 0.6, "#000000");
+        }
+        c.text((pos.x + 2.0 / scale, pos.y + 2.0 / scale), &p.name, 3.2, Anchor::Start);
+    }
+    c.finish()
+}
+
+fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> String {
+    let mut c = Canvas::new(210.0, 210.0);
+    let mut pts = vec![Vec2::ZERO];
+    for p in v {
+        pts.push(p.from);
+        pts.push(p.to);
+    }
+    let (xmin, xmax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
+    let (ymin, ymax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
+    let span = (xmax - xmin).max(ymax - ymin).max(1e-12);
+    // a round scale factor μ (units per mm) so that the plan fits 170 mm
+    let (_, _, step) = nice_ticks(0.0, span / 170.0, 1);
+    let mu = step;
+    let s = 1.0 / mu;
+    let cx = 105.0 - s * 0.5 * (xmin + xmax);
+    let cy = 100.0 - s * 0.5 * (ymin + ymax);
+    c.set_transform(s, (cx, cy));
+    c.text_paper((105.0, 10.0), &format!("{title} at φ = {:.2}°,  μ = {mu} {unit}/mm", phi.to_degrees()), 4.0, Anchor::Middle, "#000");
+    let color = |k: VectorKind| match k {
+        VectorKind::Absolute => "#1f4e9c",
+        VectorKind::Relative => "#c0392b",
+        VectorKind::Normal => "#8e44ad",
+        VectorKind::Tangential => "#c0392b",
+        VectorKind::Sliding => "#27ae60",
+        VectorKind::Coriolis => "#d35400",
+    };
+    for p in v {
+        if (p.to - p.from).hypot() * s < 0.05 {
+            continue;
+        }
+        c.arrow((p.from.x, p.from.y), (p.to.x, p.to.y), Style::THIN.widened(0.35).colored(color(p.kind)), 3.0);
+        let mid = (p.from + p.to) * 0.5;
+        c.text_colored((mid.x, mid.y), &p.label, 2.4, Anchor::Start, color(p.kind));
+    }
+    c.dot((0.0, 0.0), 0.8, "#000000");
+    c.text((0.0, 0.0), pole, 3.5, Anchor::End);
+    c.finish()
+}

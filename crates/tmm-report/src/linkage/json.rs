@@ -1,0 +1,74 @@
+//! The JSON document of the `[linkage]` section (SI, angles in radians).
+
+use serde_json::{Map, Value, json};
+
+use super::{Analysis, Loaded, Row};
+use crate::output::num;
+
+fn row_json(l: &Loaded, r: &Row) -> Value {
+    let m = &l.mech;
+    let mut points = Map::new();
+    for (i, p) in m.points.iter().enumerate() {
+        let s = &r.sol.points[i];
+        points.insert(p.name.clone(), json!({"x": num(s.p.x), "y": num(s.p.y), "vx": num(s.v.x), "vy": num(s.v.y), "ax": num(s.a.x), "ay": num(s.a.y)}));
+    }
+    let mut links = Map::new();
+    for (i, n) in m.link_names.iter().enumerate().skip(1) {
+        let s = &r.sol.links[i];
+        links.insert(n.clone(), json!({"angle": num(s.angle()), "omega": num(s.omega), "epsilon": num(s.eps)}));
+    }
+    let mut pa = Map::new();
+    for &(p, v) in &r.pressure {
+        pa.insert(m.points[p].name.clone(), num(v));
+    }
+    json!({
+        "label": r.pos.label,
+        "phi": num(r.pos.phi),
+        "psi": num(r.pos.psi),
+        "points": points,
+        "links": links,
+        "output": {"s": num(r.analogs.0), "ds_dphi": num(r.analogs.1), "d2s_dphi2": num(r.analogs.2)},
+        "pressure_angles": pa,
+    })
+}
+
+/// The whole document.
+pub fn document(l: &Loaded, a: &Analysis) -> Value {
+    let m = &l.mech;
+    let s = &m.structure;
+    let c = &a.cycle;
+    let groups: Vec<Value> = s.groups.iter().map(|g| json!({"class": g.class, "order": g.order, "kind": g.kind, "links": g.links})).collect();
+    let w = m.crank.omega.abs();
+    let vec = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
+        v.iter().map(|p| json!({"label": p.label, "kind": p.kind, "from": [num(p.from.x), num(p.from.y)], "to": [num(p.to.x), num(p.to.y)]})).collect()
+    };
+    let pmax: Vec<Value> = a.pressure_max.iter().map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)})).collect();
+    json!({
+        "units": "SI",
+        "structure": {
+            "dof": s.dof, "n": s.n, "p5": s.p5, "p4": s.p4, "groups": groups,
+            "formula": s.formula, "class": s.class,
+            "dof_by_rank": s.dof_rank, "redundant_constraints": s.redundant, "passive_freedoms": s.passive,
+        },
+        "input": {"link": m.link_names[m.crank.link], "omega": num(m.crank.omega), "epsilon": num(m.crank.eps)},
+        "output": {"link": m.link_names[c.output.link], "kind": match c.output.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
+        "positions": a.rows.iter().map(|r| row_json(l, r)).collect::<Vec<_>>(),
+        "dead_positions": c.dead.iter().map(|&p| json!({"phi": num(p)})).collect::<Vec<_>>(),
+        "kv": num(c.kv),
+        "theta": num(c.theta),
+        "working_angle": num(c.working_angle),
+        "return_angle": num(c.return_angle),
+        "stroke": num(c.stroke),
+        "pressure_angle_max": pmax,
+        "diagrams": {
+            "phi": a.diagram.iter().map(|d| num(d[0])).collect::<Vec<_>>(),
+            "s": a.diagram.iter().map(|d| num(d[1])).collect::<Vec<_>>(),
+            "ds_dphi": a.diagram.iter().map(|d| num(d[2])).collect::<Vec<_>>(),
+            "d2s_dphi2": a.diagram.iter().map(|d| num(d[3])).collect::<Vec<_>>(),
+            "t": a.diagram.iter().map(|d| num(d[0] / w)).collect::<Vec<_>>(),
+            "v": a.diagram.iter().map(|d| num(d[2] * w)).collect::<Vec<_>>(),
+            "a": a.diagram.iter().map(|d| num(d[3] * w * w)).collect::<Vec<_>>(),
+        },
+        "plans": {"phi": num(a.plan_row.pos.phi), "velocity": vec(&a.plans.velocity), "acceleration": vec(&a.plans.acceleration)},
+    })
+}
