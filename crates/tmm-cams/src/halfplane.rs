@@ -83,6 +83,11 @@ impl Region {
         Region { vertices: v, scratch: Vec::new() }
     }
 
+    /// A convex polygon from its counter-clockwise vertices.
+    pub fn from_vertices(vertices: Vec<Vec2>) -> Self {
+        Region { vertices, scratch: Vec::new() }
+    }
+
     /// Keep the part with `n·p ≥ c`.
     pub fn clip(&mut self, h: HalfPlane) {
         self.scratch.clear();

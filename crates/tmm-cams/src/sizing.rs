@@ -117,31 +117,8 @@ pub fn oscillating_roller(prog: &Program, sigma: f64, limits: Limits, arm: f64, 
         return Err(CamError::Dimension { field: "pivot", reason: format!("the pivot distance must be positive, got {a}") });
     }
     let mut best: Option<(f64, Mechanism)> = None;
-    let mut region = Region::default();
     for kappa in [1.0, -1.0] {
-        // diagram frame: pivot A at the origin, B₀ = (l, 0)
-        region = Region::square(Vec2::new(arm, 0.0), 1e3 * arm);
-        for (k, ph) in prog.phases().iter().enumerate() {
-            let lim = match ph.kind {
-                PhaseKind::Rise => limits.rise,
-                PhaseKind::Return => limits.ret,
-                PhaseKind::Dwell => continue,
-            };
-            let t = lim.tan();
-            let n = samples.max(16);
-            for i in 0..=n {
-                let m = prog.eval_in(k, ph.angle * i as f64 / n as f64);
-                let psi = kappa * m.s;
-                let u = Vec2::new(psi.cos(), psi.sin());
-                let b = u * arm;
-                let d = quarter(u) * kappa;
-                let kp = b - u * (sigma * kappa * arm * m.v);
-                for sg in [1.0, -1.0] {
-                    let nrm = -d * t + u * sg;
-                    region.clip(HalfPlane { n: nrm, c: nrm.dot(kp) });
-                }
-            }
-        }
+        let region = oscillating_region(prog, sigma, limits, arm, kappa, samples);
         if region.is_empty() {
             continue;
         }
@@ -163,13 +140,73 @@ pub fn oscillating_roller(prog: &Program, sigma: f64, limits: Limits, arm: f64, 
             best = Some((r0, Mechanism::OscillatingRoller { pivot: -o, arm, psi0: 0.0, kappa, roller: 0.0 }));
         }
     }
-    let _ = region;
     best.map(|(_, m)| m).ok_or_else(|| {
         CamError::Infeasible(match pivot {
             Some(a) => format!("no cam centre at the pivot distance {:.3} mm keeps the pressure angle within the limits; try another pivot distance or omit it", a * 1e3),
             None => "no cam centre keeps the pressure angle within the limits for this arm and stroke; lengthen the arm, reduce the stroke or allow larger pressure angles".into(),
         })
     })
+}
+
+/// The admissible region of the cam centre for a translating roller follower
+/// on the s–ds/dφ diagram: coordinates with the lowest roller centre at the
+/// origin and the follower moving along +y, so the centre is at `(−e, −s₀)`;
+/// cut from a square of half-size `size` about the origin.
+pub fn translating_region(prog: &Program, sigma: f64, limits: Limits, size: f64) -> Region {
+    let mut region = Region::square(Vec2::ZERO, size);
+    for (k, ph) in prog.phases().iter().enumerate() {
+        let lim = match ph.kind {
+            PhaseKind::Rise => limits.rise,
+            PhaseKind::Return => limits.ret,
+            PhaseKind::Dwell => continue,
+        };
+        let t = lim.tan();
+        for sg in [1.0, -1.0] {
+            let (_, c) = maximize(
+                |x| {
+                    let m = prog.eval_in(k, x);
+                    sg * sigma * m.v - t * m.s
+                },
+                0.0,
+                ph.angle,
+                SCAN,
+            );
+            // x + t·y ≥ c in (e, s₀) is −X·sg… in (X, Y) = (−e, −s₀): −sg·X − t·Y ≥ c
+            region.clip(HalfPlane { n: Vec2::new(-sg, -t), c });
+        }
+    }
+    region
+}
+
+/// The admissible region of the cam centre for an oscillating roller
+/// follower, in the frame with the pivot at the origin and the lowest roller
+/// centre at `(arm, 0)`; `kappa = ±1` is the arm's sense of turning on the
+/// rise. Each of `samples + 1` positions per moving phase cuts its cone: apex
+/// `K = B − σκ·l·ψ′·u`, axis `−d`, half-angle ϑ (derived here, docs/cams.md §3).
+pub fn oscillating_region(prog: &Program, sigma: f64, limits: Limits, arm: f64, kappa: f64, samples: usize) -> Region {
+    let mut region = Region::square(Vec2::new(arm, 0.0), 1e3 * arm);
+    for (k, ph) in prog.phases().iter().enumerate() {
+        let lim = match ph.kind {
+            PhaseKind::Rise => limits.rise,
+            PhaseKind::Return => limits.ret,
+            PhaseKind::Dwell => continue,
+        };
+        let t = lim.tan();
+        let n = samples.max(16);
+        for i in 0..=n {
+            let m = prog.eval_in(k, ph.angle * i as f64 / n as f64);
+            let psi = kappa * m.s;
+            let u = Vec2::new(psi.cos(), psi.sin());
+            let b = u * arm;
+            let d = quarter(u) * kappa;
+            let kp = b - u * (sigma * kappa * arm * m.v);
+            for sg in [1.0, -1.0] {
+                let nrm = -d * t + u * sg;
+                region.clip(HalfPlane { n: nrm, c: nrm.dot(kp) });
+            }
+        }
+    }
+    region
 }
 
 /// The minimum of `s + d²s/dφ²` over the cycle (the left-hand side of

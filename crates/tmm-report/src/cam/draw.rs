@@ -1,0 +1,256 @@
+//! The cam drawings (SVG): kinematic diagrams over the cam angle and over
+//! time, the s–ds/dφ diagram with the admissible region of the cam centre and
+//! the chosen centre, and the cam with its follower in the starting position.
+
+use tmm_cams::design::{CamDesign, CamTask};
+use tmm_cams::halfplane::Region;
+use tmm_cams::mechanism::Mechanism;
+use tmm_cams::sizing;
+use tmm_geom::Vec2;
+
+use crate::svg::{Anchor, Canvas, Series, Style, plot};
+
+/// Put several whole SVG documents one under another in one page.
+fn stack(docs: &[String], w: f64, h: f64) -> String {
+    let mut body = String::new();
+    for (i, d) in docs.iter().enumerate() {
+        let inner = d.split_once("?>").map_or(d.as_str(), |x| x.1).trim();
+        let inner = inner.replacen("<svg ", &format!("<svg x=\"0\" y=\"{}\" ", i as f64 * h), 1);
+        body.push_str(&inner);
+        body.push('\n');
+    }
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{th}mm\" viewBox=\"0 0 {w} {th}\">\n{body}</svg>\n",
+        th = h * docs.len() as f64
+    )
+}
+
+/// s, ds/dφ, d²s/dφ² over the cam angle (degrees; mm or degrees).
+pub fn analogs(task: &CamTask, d: &CamDesign) -> String {
+    let osc = task.follower.oscillating();
+    let k = if osc { 180.0 / std::f64::consts::PI } else { 1e3 };
+    let u = if osc { "deg" } else { "mm" };
+    let p = &d.profile;
+    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> { (0..p.phi.len()).map(|i| (p.phi[i].to_degrees(), f(i))).collect() };
+    let s = pts(&|i| p.motion[i].s * k);
+    let v = pts(&|i| p.motion[i].v * k);
+    let a = pts(&|i| p.motion[i].a * k);
+    let (w, h) = (200.0, 80.0);
+    stack(
+        &[
+            plot("Displacement s(φ)", "cam angle φ, deg", &format!("s, {u}"), &[Series { name: "s", points: &s, color: "#1f4e9c" }], w, h),
+            plot("Velocity analog ds/dφ", "cam angle φ, deg", &format!("ds/dφ, {u}"), &[Series { name: "ds/dφ", points: &v, color: "#2e7d32" }], w, h),
+            plot("Acceleration analog d²s/dφ²", "cam angle φ, deg", &format!("d²s/dφ², {u}"), &[Series { name: "d²s/dφ²", points: &a, color: "#c62828" }], w, h),
+        ],
+        w,
+        h,
+    )
+}
+
+/// s, v, a, jerk over time for the cam's ω.
+pub fn motion(task: &CamTask, d: &CamDesign) -> String {
+    let osc = task.follower.oscillating();
+    let w = task.omega;
+    let p = &d.profile;
+    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> { (0..p.phi.len()).map(|i| (p.phi[i] / w * 1e3, f(i))).collect() };
+    let s = pts(&|i| p.motion[i].s * if osc { 1.0 } else { 1e3 });
+    let v = pts(&|i| p.motion[i].v * w);
+    let a = pts(&|i| p.motion[i].a * w * w);
+    let j = pts(&|i| p.motion[i].j * w * w * w);
+    let (su, vu, au, ju) = if osc { ("rad", "rad/s", "rad/s²", "rad/s³") } else { ("mm", "m/s", "m/s²", "m/s³") };
+    let (pw, ph) = (200.0, 70.0);
+    stack(
+        &[
+            plot("Follower displacement", "time t, ms", &format!("s, {su}"), &[Series { name: "s", points: &s, color: "#1f4e9c" }], pw, ph),
+            plot("Follower velocity", "time t, ms", &format!("v, {vu}"), &[Series { name: "v", points: &v, color: "#2e7d32" }], pw, ph),
+            plot("Follower acceleration", "time t, ms", &format!("a, {au}"), &[Series { name: "a", points: &a, color: "#c62828" }], pw, ph),
+            plot("Follower jerk", "time t, ms", &format!("j, {ju}"), &[Series { name: "j", points: &j, color: "#6a1b9a" }], pw, ph),
+        ],
+        pw,
+        ph,
+    )
+}
+
+/// Pressure angle over the cycle with the limits.
+pub fn pressure(task: &CamTask, d: &CamDesign) -> String {
+    let p = &d.profile;
+    let th: Vec<(f64, f64)> = (0..p.phi.len()).map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees())).collect();
+    let lr = [(0.0, task.limits.rise.to_degrees()), (360.0, task.limits.rise.to_degrees())];
+    let lt = [(0.0, task.limits.ret.to_degrees()), (360.0, task.limits.ret.to_degrees())];
+    let mut series = vec![Series { name: "ϑ", points: &th, color: "#1f4e9c" }];
+    if !d.mechanism.is_flat() {
+        series.push(Series { name: "allowed, rise", points: &lr, color: "#c62828" });
+        series.push(Series { name: "allowed, return", points: &lt, color: "#ef6c00" });
+    }
+    plot("Pressure angle over the cycle", "cam angle φ, deg", "ϑ, deg", &series, 200.0, 90.0)
+}
+
+/// The s–ds/dφ diagram (translating roller) or its oscillating counterpart:
+/// the curve of points K, the admissible region of the cam centre, the
+/// chosen centre O and the lowest roller centre B₀. Flat faces get Geronimus'
+/// s(d²s/dφ²) diagram instead. Coordinates in mm.
+pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
+    let sigma = task.rotation.sign();
+    let prog = &task.program;
+    let n = d.profile.phi.len();
+    let mut c = Canvas::new(200.0, 200.0);
+    let region_style = Style { width: 0.2, color: "#2e7d32", dash: None, fill: Some("#c8e6c9") };
+    let (curve, region, centre, b0, title): (Vec<(f64, f64)>, Option<Region>, (f64, f64), (f64, f64), &str) = match d.mechanism {
+        Mechanism::TranslatingRoller { e, s0, .. } => {
+            let curve = (0..n).map(|i| (-sigma * d.profile.motion[i].v * 1e3, d.profile.motion[i].s * 1e3)).collect();
+            let size = 4.0 * d.r0.max(prog.stroke());
+            let region = sizing::translating_region(prog, sigma, task.limits, size);
+            let region = Region::from_vertices(region.vertices.iter().map(|v| *v * 1e3).collect());
+            (curve, Some(region), (-e * 1e3, -s0 * 1e3), (0.0, 0.0), "s–ds/dφ diagram: admissible region of the cam centre")
+        }
+        Mechanism::OscillatingRoller { pivot, arm, kappa, .. } => {
+            // frame of the construction: pivot at the origin, B₀ = (l, 0)
+            let curve = (0..n)
+                .map(|i| {
+                    let m = d.profile.motion[i];
+                    let psi = kappa * m.s;
+                    let u = Vec2::new(psi.cos(), psi.sin());
+                    let k = u * arm - u * (sigma * kappa * arm * m.v);
+                    (k.x * 1e3, k.y * 1e3)
+                })
+                .collect();
+            let region = sizing::oscillating_region(prog, sigma, task.limits, arm, kappa, 360);
+            let region = Region::from_vertices(region.vertices.iter().map(|v| *v * 1e3).collect());
+            (curve, Some(region), (-pivot.x * 1e3, -pivot.y * 1e3), (arm * 1e3, 0.0), "Points K (arm ψ′ laid off along the arm) and the admissible region of the cam centre")
+        }
+        _ => {
+            // Geronimus: s against d²s/dφ², r₀ read on the s axis
+            let curve = (0..n).map(|i| (d.profile.motion[i].a * 1e3, d.profile.motion[i].s * 1e3)).collect();
+            (curve, None, (0.0, -d.r0 * 1e3), (0.0, 0.0), "Geronimus' diagram s(d²s/dφ²): base circle from convexity")
+        }
+    };
+    // world box: the curve, the centre and B₀, with a margin
+    let (mut x0, mut x1, mut y0, mut y1) = (centre.0.min(b0.0), centre.0.max(b0.0), centre.1.min(b0.1), centre.1.max(b0.1));
+    for &(x, y) in &curve {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let pad = 0.15 * (x1 - x0).max(y1 - y0).max(1e-9);
+    let world = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+    c.fit(world, (10.0, 10.0, 180.0, 170.0));
+    if let Some(mut r) = region {
+        // clip the region to the view
+        for (nx, ny, cc) in [(1.0, 0.0, world.0), (-1.0, 0.0, -world.1), (0.0, 1.0, world.2), (0.0, -1.0, -world.3)] {
+            r.clip(tmm_cams::halfplane::HalfPlane { n: Vec2::new(nx, ny), c: cc });
+        }
+        let pts: Vec<(f64, f64)> = r.vertices.iter().map(|v| (v.x, v.y)).collect();
+        c.polygon(&pts, region_style);
+    }
+    c.line((world.0, 0.0), (world.1, 0.0), Style::AXIS);
+    c.line((b0.0, world.2), (b0.0, world.3), Style::AXIS);
+    c.polyline(&curve, Style::THICK.widened(0.5).colored("#1f4e9c"));
+    c.line(b0, centre, Style::THIN.colored("#c62828"));
+    c.dot(centre, 1.0, "#c62828");
+    c.text_colored((centre.0, centre.1), "  O", 3.5, Anchor::Start, "#c62828");
+    c.dot(b0, 0.8, "#000000");
+    c.text((b0.0, b0.1), "  B₀", 3.5, Anchor::Start);
+    c.text_paper((100.0, 8.0), title, 3.5, Anchor::Middle, "#000");
+    c.text_paper((100.0, 195.0), &format!("r0 = {:.3} mm", d.r0 * 1e3), 3.5, Anchor::Middle, "#000");
+    c.finish()
+}
+
+/// The cam (working and theoretical profiles, base circles) with the
+/// follower in its lowest position (φ = 0), in mm.
+pub fn cam(task: &CamTask, d: &CamDesign) -> String {
+    let _ = task;
+    let p = &d.profile;
+    let work: Vec<(f64, f64)> = p.working.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();
+    let pitch: Vec<(f64, f64)> = p.pitch.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();
+    let mut pts = work.clone();
+    pts.extend(pitch.iter().copied());
+    let mut extra: Vec<(f64, f64)> = Vec::new();
+    let r0 = d.r0 * 1e3;
+    match d.mechanism {
+        Mechanism::TranslatingRoller { e, s0, roller } => {
+            extra.push((e * 1e3, (s0 + 2.0 * roller) * 1e3 + 2.5 * task.program.stroke() * 1e3));
+        }
+        Mechanism::TranslatingFlat { e, r0: b } => {
+            let hw = d.face.map_or(0.0, |f| f.width / 2.0);
+            extra.push(((e - hw) * 1e3, b * 1e3));
+            extra.push(((e + hw) * 1e3, b * 1e3 + 2.5 * task.program.stroke() * 1e3));
+        }
+        _ => {
+            if let Some(a) = d.mechanism.pivot() {
+                extra.push((a.x * 1e3, a.y * 1e3));
+            }
+        }
+    }
+    pts.extend(extra.iter().copied());
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for &(x, y) in &pts {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let pad = 0.08 * (x1 - x0).max(y1 - y0);
+    let mut c = Canvas::new(210.0, 230.0);
+    c.fit((x0 - pad, x1 + pad, y0 - pad, y1 + pad), (10.0, 10.0, 190.0, 200.0));
+    c.polyline(&[(x0 - pad, 0.0), (x1 + pad, 0.0)], Style::AXIS);
+    c.polyline(&[(0.0, y0 - pad), (0.0, y1 + pad)], Style::AXIS);
+    c.polygon(&pitch, Style::AXIS.colored("#1f4e9c"));
+    c.polygon(&work, Style::THICK.filled("#eeeeee"));
+    c.circle((0.0, 0.0), r0, Style::DASHED);
+    if d.rb > 0.0 && (d.rb - d.r0).abs() > 1e-12 {
+        c.circle((0.0, 0.0), d.rb * 1e3, Style::DASHED.colored("#777777"));
+    }
+    c.fixed_pivot((0.0, 0.0), 1.2);
+    c.text((0.0, 0.0), "  O", 3.5, Anchor::Start);
+    let follower = Style::THICK.colored("#1f4e9c");
+    match d.mechanism {
+        Mechanism::TranslatingRoller { e, s0, roller } => {
+            let (x, y) = (e * 1e3, s0 * 1e3);
+            let top = y + roller * 1e3 + 2.5 * task.program.stroke() * 1e3;
+            if e != 0.0 {
+                c.circle((0.0, 0.0), e.abs() * 1e3, Style::DASHED.colored("#999999"));
+            }
+            c.line((x, y), (x, top), follower);
+            if roller > 0.0 {
+                c.circle((x, y), roller * 1e3, follower);
+            }
+            c.joint((x, y), 0.8);
+            c.text((x, y), "  B₀", 3.5, Anchor::Start);
+        }
+        Mechanism::TranslatingFlat { e, r0: b } => {
+            let hw = d.face.map_or(0.0, |f| f.width / 2.0) * 1e3;
+            let (x, y) = (e * 1e3, b * 1e3);
+            c.line((x - hw, y), (x + hw, y), follower);
+            c.line((x, y), (x, y + 2.5 * task.program.stroke() * 1e3), follower);
+        }
+        Mechanism::OscillatingRoller { pivot, arm, psi0, roller, .. } => {
+            let a = (pivot.x * 1e3, pivot.y * 1e3);
+            let b = pivot + Vec2::new(psi0.cos(), psi0.sin()) * arm;
+            let b = (b.x * 1e3, b.y * 1e3);
+            c.line(a, b, follower);
+            if roller > 0.0 {
+                c.circle(b, roller * 1e3, follower);
+            }
+            c.fixed_pivot(a, 1.2);
+            c.text(a, "  A", 3.5, Anchor::Start);
+            c.joint(b, 0.8);
+        }
+        Mechanism::OscillatingFlat { a, delta0 } => {
+            let len = d.face.map_or(0.0, |f| f.contact_max + task.face_margin);
+            let u = Vec2::new(-delta0.cos(), -delta0.sin());
+            let end = Vec2::new(a, 0.0) + u * len;
+            c.line((a * 1e3, 0.0), (end.x * 1e3, end.y * 1e3), follower);
+            c.fixed_pivot((a * 1e3, 0.0), 1.2);
+            c.text((a * 1e3, 0.0), "  A", 3.5, Anchor::Start);
+        }
+    }
+    c.text_paper(
+        (105.0, 222.0),
+        &format!("{} follower: r0 = {:.3} mm, rb = {:.3} mm, roller {:.3} mm, ρmin = {:.3} mm", task.follower.name(), d.r0 * 1e3, d.rb * 1e3, d.roller * 1e3, d.rho_min * 1e3),
+        3.2,
+        Anchor::Middle,
+        "#000",
+    );
+    c.finish()
+}
