@@ -132,10 +132,28 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
-    let pad = 0.15 * (x1 - x0).max(y1 - y0).max(1e-9);
-    let world = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+    let span = (x1 - x0).max(y1 - y0).max(1e-9);
+    let pad = 0.15 * span;
+    // show the region below the centre too
+    let extra = if region.is_some() { 0.35 * span } else { 0.0 };
+    let world = (x0 - pad, x1 + pad, y0 - pad - extra, y1 + pad);
     c.fit(world, (10.0, 10.0, 180.0, 170.0));
     if let Some(mut r) = region {
+        // the boundary rays of the region, across the view (skipping the outer square)
+        let m = r.vertices.len();
+        let big = r.vertices.iter().fold(0.0f64, |a, v| a.max(v.x.abs()).max(v.y.abs()));
+        for i in 0..m {
+            let (a, b) = (r.vertices[i], r.vertices[(i + 1) % m]);
+            let on_square = |v: Vec2| v.x.abs() >= 0.98 * big || v.y.abs() >= 0.98 * big;
+            if (on_square(a) && on_square(b)) || (b - a).hypot() < 1e-12 {
+                continue;
+            }
+            let dir = (b - a) * (1.0 / (b - a).hypot());
+            let l = 3.0 * span;
+            if let Some((p, q)) = clip_line(world, a - dir * l, a + dir * l) {
+                c.line((p.x, p.y), (q.x, q.y), Style::DASHED.colored("#2e7d32"));
+            }
+        }
         // clip the region to the view
         for (nx, ny, cc) in [(1.0, 0.0, world.0), (-1.0, 0.0, -world.1), (0.0, 1.0, world.2), (0.0, -1.0, -world.3)] {
             r.clip(tmm_cams::halfplane::HalfPlane { n: Vec2::new(nx, ny), c: cc });
@@ -154,6 +172,28 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
     c.text_paper((100.0, 8.0), title, 3.5, Anchor::Middle, "#000");
     c.text_paper((100.0, 195.0), &format!("r0 = {:.3} mm", d.r0 * 1e3), 3.5, Anchor::Middle, "#000");
     c.finish()
+}
+
+/// The part of the segment `a`–`b` inside the box `(xmin, xmax, ymin, ymax)`
+/// (Liang–Barsky clipping).
+fn clip_line(b: (f64, f64, f64, f64), p: Vec2, q: Vec2) -> Option<(Vec2, Vec2)> {
+    let d = q - p;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (pk, qk) in [(-d.x, p.x - b.0), (d.x, b.1 - p.x), (-d.y, p.y - b.2), (d.y, b.3 - p.y)] {
+        if pk == 0.0 {
+            if qk < 0.0 {
+                return None;
+            }
+        } else {
+            let r = qk / pk;
+            if pk < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 < t1).then(|| (p + d * t0, p + d * t1))
 }
 
 /// The cam (working and theoretical profiles, base circles) with the
