@@ -23,10 +23,10 @@ impl Condition {
     pub fn name(self) -> &'static str {
         match self {
             Condition::RatioCoaxiality => "ratio and coaxiality",
-            Condition::Undercut => "no undercut",
-            Condition::InternalMesh => "internal-mesh limits",
+            Condition::Undercut => "no-undercut",
+            Condition::InternalMesh => "internal-mesh",
             Condition::Assembly => "assembly",
-            Condition::Neighbour => "neighbour condition",
+            Condition::Neighbour => "neighbour",
         }
     }
 }

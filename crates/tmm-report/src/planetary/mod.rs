@@ -1,12 +1,47 @@
-//! The `[planetary]` section of a task file: reading it, running it, and its outputs.
+//! The `[planetary]` section of a task file and `tmm planetary`: reading the
+//! inputs, running the tooth-number search, and its outputs (tables, JSON,
+//! the SVG sheet with the scheme, the velocity picture and the
+//! angular-velocity diagram).
+//!
+//! | file | what |
+//! | --- | --- |
+//! | [`input`] | the section, the command-line values, located errors |
+//! | [`analysis`] | the core run: search, efficiency, picture |
+//! | [`text`] | human tables |
+//! | [`json`] | the JSON document |
+//! | [`drawing`] | the SVG sheet |
+
+pub mod analysis;
+pub mod drawing;
+pub mod input;
+pub mod json;
+pub mod text;
 
 use std::path::Path;
 
+use crate::output::write_file;
 use crate::{Error, SectionOutput, TaskSource};
+
+pub use analysis::{Analysis, analyse};
+pub use input::{Origin, Params};
 
 /// Run the `[planetary]` section of a task, writing files under `out/planetary/`.
 /// Returns `None` when the task has no such section.
 pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
-    let _ = (task, out);
-    Ok(None)
+    let Some((params, origin)) = input::from_task(task)? else {
+        return Ok(None);
+    };
+    let a = analyse(&params, &origin)?;
+    let dir = out.join("planetary");
+    let mut files = Vec::new();
+    let sheet = drawing::sheet(&a);
+    let text = text::report(&a);
+    write_file(&dir.join("planetary.svg"), &sheet.svg, &mut files)?;
+    write_file(&dir.join("planetary.txt"), &text, &mut files)?;
+    Ok(Some(SectionOutput {
+        section: "planetary",
+        text,
+        json: json::document(&a),
+        files,
+    }))
 }
