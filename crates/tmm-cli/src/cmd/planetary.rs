@@ -43,7 +43,7 @@ pub struct Args {
     #[arg(long)]
     pub planets: Option<i64>,
     /// Relative tolerance of the ratio (0 = exact; "2 %" or 0.02)
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub tolerance: Option<String>,
     /// Smallest tooth number of an external wheel (no undercut) [default: 17]
     #[arg(long)]
@@ -61,7 +61,7 @@ pub struct Args {
     #[arg(long)]
     pub two_modules: bool,
     /// Module of row I for dimensions and the picture [default: 1 mm]
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub module: Option<String>,
     /// Angular velocity of wheel 1 for the picture ("1450 rpm", "150 rad/s") [default: 1 rad/s]
     #[arg(long, allow_hyphen_values = true)]
