@@ -36,6 +36,8 @@ pub enum DyadFail {
     Parallel,
     /// The velocity equations are singular (the group's links are aligned).
     Singular,
+    /// Newton's method found no closure of a larger group near the guess.
+    NoClosure,
 }
 
 impl std::fmt::Display for DyadFail {
@@ -51,6 +53,7 @@ impl std::fmt::Display for DyadFail {
             DyadFail::CircleLine { h, r } => write!(f, "the joint is {h:.6} m from the guide line, more than the link length {r:.6} m"),
             DyadFail::Parallel => write!(f, "the two guide lines are parallel"),
             DyadFail::Singular => write!(f, "the links of the group are aligned (dead centre)"),
+            DyadFail::NoClosure => write!(f, "the group's loop does not close near the previous position (Newton's method did not converge)"),
         }
     }
 }

@@ -25,6 +25,7 @@ pub mod constraints;
 pub mod cycle;
 pub mod dyad;
 pub mod error;
+pub mod forces;
 pub mod mechanism;
 pub mod model;
 pub mod plans;

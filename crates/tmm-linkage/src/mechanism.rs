@@ -343,7 +343,10 @@ impl Mechanism {
         let class = infos.iter().map(|g| g.class).max().unwrap_or(1);
         let mut formula = format!("I(0,{})", link_names[cl]);
         for g in &infos {
-            formula.push_str(&format!(" → {}({})", roman(g.class), g.links.join(",")));
+            let mut ids = g.link_ids.clone();
+            ids.sort_unstable();
+            let names: Vec<&str> = ids.iter().map(|&l| link_names[l].as_str()).collect();
+            formula.push_str(&format!(" → {}({})", roman(g.class), names.join(",")));
         }
         let output = match &def.output {
             Some(o) => *index.get(o.as_str()).filter(|&&i| i != 0).ok_or_else(|| de("output", format!("unknown link `{o}`")))?,
@@ -455,7 +458,7 @@ impl Mechanism {
         let prs: Vec<&Pair> = g.pairs.iter().map(|&i| &self.pairs[i]).collect();
         let unknown = &g.info.link_ids;
         let n = 3 * unknown.len();
-        constraints::newton(&prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::CircleLine { h: f64::NAN, r: f64::NAN })?;
+        constraints::newton(&prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::NoClosure)?;
         for mode in [Mode::Velocity, Mode::Acceleration] {
             constraints::assemble(&prs, unknown, &sol.links, mode, &mut sol.jac, &mut sol.rhs);
             if !constraints::solve_dense(&mut sol.jac[..n * n], &mut sol.rhs[..n], n, 1e-11) {

@@ -66,6 +66,6 @@ pub use beam::{Beam, BeamSample};
 pub use error::ForceError;
 pub use kinetostatics::{ForceSolution, Kinetostatics, LinkForces, Reaction};
 pub use loads::{LinkLoad, Loads, PointForce};
-pub use resistance::{Action, Law, Resistance, TravelFrom};
+pub use resistance::{Action, Law, Resistance};
 pub use section::{IBeam, SectionSizes, size_sections};
 pub use stroke::Stroke;

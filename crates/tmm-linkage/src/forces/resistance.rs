@@ -9,7 +9,7 @@
 //! stroke. The crank angle of an angle table is measured from the same dead
 //! position in the direction of rotation, 0…2π.
 
-use tmm_geom::{Vec2, perp};
+use tmm_geom::Vec2;
 
 use super::error::ForceError;
 use super::stroke::{Phase, Stroke};
@@ -50,13 +50,6 @@ pub enum Law {
     /// A load diagram over the crank angle (rad) from the start of the working
     /// stroke, linear between points. Must cover 0…2π.
     AngleTable(Vec<(f64, f64)>),
-}
-
-/// From where the travel of a table is measured (for messages and checks).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum TravelFrom {
-    /// The dead position at the start of the working stroke.
-    WorkingStart,
 }
 
 /// The useful resistance on one link.
@@ -226,7 +219,12 @@ impl Resistance {
 }
 
 /// Unit vector of a global direction angle, rad.
+///
+/// ```
+/// let d = tmm_linkage::forces::resistance::direction(std::f64::consts::FRAC_PI_2);
+/// assert!(d.x.abs() < 1e-15 && (d.y - 1.0).abs() < 1e-15);
+/// ```
 pub fn direction(angle: f64) -> Vec2 {
     let (s, c) = angle.sin_cos();
-    perp(Vec2::new(s, -c))
+    Vec2::new(c, s)
 }

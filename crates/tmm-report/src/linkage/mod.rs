@@ -148,10 +148,10 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
                 Some(x) => {
                     if v > x.1 {
                         x.1 = v;
-                        x.2 = phi;
+                        x.2 = tmm_geom::angle::wrap_2pi(phi);
                     }
                 }
-                None => pressure_max.push((p, v, phi)),
+                None => pressure_max.push((p, v, tmm_geom::angle::wrap_2pi(phi))),
             }
         }
     }

@@ -22,7 +22,7 @@ use tmm_geom::units::Dim;
 use tmm_linkage::cycle::Working;
 use tmm_linkage::{AssemblyHint, FRAME, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use crate::task::{Qty, qty};
+use crate::task::{Qty, RawQty, qty};
 use crate::{Error, TaskSource};
 
 type S<T> = toml::Spanned<T>;
@@ -100,7 +100,7 @@ fn frame() -> S<String> {
 #[serde(untagged)]
 enum Through {
     Point(String),
-    Coords(Vec<Qty>),
+    Coords(Vec<RawQty>),
 }
 
 #[derive(Deserialize)]
@@ -118,7 +118,7 @@ struct InputSec {
 #[serde(untagged)]
 enum HintSec {
     Text(String),
-    Near { point: String, near: Vec<Qty> },
+    Near { point: String, near: Vec<RawQty> },
 }
 
 /// The `[linkage]` section, read and checked.
@@ -136,6 +136,11 @@ pub struct LinkageTask {
     pub spans: HashMap<String, Range<usize>>,
     /// Span of the whole section.
     pub section: Range<usize>,
+}
+
+/// Values read inside an untagged form carry no span of their own: give them the form's.
+fn respan(span: Range<usize>, v: &[RawQty]) -> S<Vec<Qty>> {
+    toml::Spanned::new(span.clone(), v.iter().map(|q| toml::Spanned::new(span.clone(), q.clone())).collect())
 }
 
 fn pair(task: &TaskSource, field: &str, v: &S<Vec<Qty>>, dim: Dim) -> Result<Vec2, Error> {
@@ -237,8 +242,6 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         let sl = s.link.get_ref().clone();
         if !def.links.iter().any(|l| l.name == sl) {
             def.links.push(LinkDef::block(&sl, s.point.get_ref()));
-            let last = def.links.len() - 1;
-            def.links[last].points.push((format!("S{sl}"), Vec2::ZERO));
         }
         let g = s.guide.get_ref();
         let gl = g.link.get_ref().clone();
@@ -247,7 +250,7 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
             None => 0.0,
         };
         let mut through = match g.through.get_ref() {
-            Through::Coords(c) => pair(task, &format!("{field}.guide.through"), &toml::Spanned::new(g.through.span(), c.clone()), Dim::Length)?,
+            Through::Coords(c) => pair(task, &format!("{field}.guide.through"), &respan(g.through.span(), c), Dim::Length)?,
             Through::Point(pn) => {
                 let found = if gl == FRAME {
                     def.fixed.iter().find(|(n, _)| n == pn).map(|(_, p)| *p)
@@ -312,7 +315,7 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         let field = format!("linkage.assembly[{i}]");
         let hint = match h.get_ref() {
             HintSec::Text(t) => parse_hint(t, &def).map_err(|m| Error::at(task, h.span(), &field, m).with_help("e.g. \"C above AD\", \"C below A-D\", \"C left of AD\", \"C right of AD\", or { point = \"C\", near = [\"0.3 m\", \"0.35 m\"] }"))?,
-            HintSec::Near { point, near } => AssemblyHint { point: point.clone(), kind: HintKind::Near(pair(task, &format!("{field}.near"), &toml::Spanned::new(h.span(), near.clone()), Dim::Length)?) },
+            HintSec::Near { point, near } => AssemblyHint { point: point.clone(), kind: HintKind::Near(pair(task, &format!("{field}.near"), &respan(h.span(), near), Dim::Length)?) },
         };
         def.hints.push(hint);
     }

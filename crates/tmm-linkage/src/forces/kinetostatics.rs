@@ -1,0 +1,277 @@
+//! Kinetostatics of the whole mechanism (кинетостатический расчёт): loads on
+//! every link, then the reactions of the Assur groups from the last group back
+//! to the input, as the course does, and finally the input link: the reaction
+//! at its fixed pivot and the balancing torque M_b that the drive applies to it
+//! (уравновешивающий момент), with the equivalent balancing force
+//! P_b = M_b / l₁ at the crank pin, perpendicular to the crank
+//! (уравновешивающая сила P_ур).
+//!
+//! Crank equilibrium about its pivot A (seed 001 sheet 3: "ΣM₁(A) = R₂₁·h₂₁ −
+//! P_ур·AB = 0"): M_b + Σ M_A(loads on the crank, reactions from its groups) = 0.
+//!
+//! Solving allocates nothing: [`Kinetostatics::solve`] fills a reusable
+//! [`ForceSolution`].
+
+use tmm_geom::{Vec2, cross, perp};
+
+use super::error::ForceError;
+use super::group::{GroupWork, PairForce, about_origin, solve_group};
+use super::inertia::inertia_load;
+use super::loads::Loads;
+use super::stroke::{Phase, Stroke, Working};
+use super::zhukovsky;
+use crate::mechanism::Pair;
+use crate::{Mechanism, Solution};
+
+/// The loads on one link at one position, reduced to its centre of mass S.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LinkForces {
+    /// Centre of mass S, global, m.
+    pub s: Vec2,
+    /// Inertia force −m·a_S, N (at S).
+    pub inertia_force: Vec2,
+    /// Inertia torque −J_S·ε, N·m.
+    pub inertia_moment: f64,
+    /// Weight m·g, N (at S).
+    pub weight: Vec2,
+    /// External forces and the useful resistance on the link, summed, N.
+    pub external_force: Vec2,
+    /// Their moment about S plus external couples, N·m.
+    pub external_moment: f64,
+    /// All loads (inertia, weight, external) summed, N.
+    pub force: Vec2,
+    /// Their moment about S, N·m, counter-clockwise positive.
+    pub moment: f64,
+}
+
+/// The reaction in one kinematic pair: the force exerted by link `from` on
+/// link `on` (the link `on` is in the later group; inside a group, the pair's
+/// first link). The force on `from` is the opposite.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Reaction {
+    /// Index into [`Mechanism::pairs`].
+    pub pair: usize,
+    /// The link exerting the force.
+    pub from: usize,
+    /// The link the force acts on.
+    pub on: usize,
+    /// The force on `on`, N.
+    pub force: Vec2,
+    /// Where it acts, global: the joint centre; for a prismatic pair the
+    /// resultant's point on the guide line (the slider's point shifted by `offset`).
+    pub at: Vec2,
+    /// Component along the axis of link `on` (its local x-axis), N: the seeds' R^n.
+    pub normal: f64,
+    /// Component perpendicular to that axis (axis turned +90°), N: the seeds' R^τ.
+    pub tangential: f64,
+    /// Prismatic pair: where the resultant acts along the guide, measured
+    /// from the slider's point in the guide's direction, m (0 for a revolute pair).
+    pub offset: f64,
+    /// `true` for a prismatic pair (the force is normal to the guide).
+    pub prismatic: bool,
+}
+
+/// The result at one crank angle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceSolution {
+    /// Crank angle φ, rad.
+    pub phi: f64,
+    /// Loads per link (index 0, the frame, stays zero).
+    pub links: Vec<LinkForces>,
+    /// Reaction per pair, indexed as [`Mechanism::pairs`].
+    pub reactions: Vec<Reaction>,
+    /// Magnitude of each useful resistance at this position.
+    pub resistance: Vec<f64>,
+    /// Phase of the cycle (when a resistance law needs the stroke).
+    pub phase: Option<Phase>,
+    /// Torque the drive applies to the input link, N·m, counter-clockwise positive.
+    pub balancing_moment: f64,
+    /// The equivalent force at the crank pin perpendicular to the crank,
+    /// signed along k × (pin − pivot), N.
+    pub balancing_force: f64,
+    /// That force as a vector, N.
+    pub balancing_force_vec: Vec2,
+    /// The balancing torque by Zhukovsky's lever (virtual power), N·m.
+    pub zhukovsky_moment: f64,
+    acc: Vec<(Vec2, f64)>,
+    q: Vec<(Vec2, f64)>,
+    pf: Vec<PairForce>,
+}
+
+impl ForceSolution {
+    /// |M_b − M_Zh| / max(|M_b|, |M_Zh|), 0 when both are 0.
+    pub fn relative_difference(&self) -> f64 {
+        let s = self.balancing_moment.abs().max(self.zhukovsky_moment.abs());
+        if s == 0.0 { 0.0 } else { (self.balancing_moment - self.zhukovsky_moment).abs() / s }
+    }
+}
+
+/// The kinetostatic solver of one mechanism under given loads.
+#[derive(Debug, Clone)]
+pub struct Kinetostatics<'m> {
+    /// The mechanism.
+    pub m: &'m Mechanism,
+    /// The loads.
+    pub loads: Loads,
+    /// The output's stroke, when a resistance law needs it.
+    pub stroke: Option<Stroke>,
+    gpairs: Vec<Vec<&'m Pair>>,
+    pivot_pair: usize,
+    work: GroupWork,
+}
+
+impl<'m> Kinetostatics<'m> {
+    /// Prepare: check the loads; find the stroke if a resistance law needs it
+    /// (the slower stroke is the working one).
+    pub fn new(m: &'m Mechanism, loads: Loads) -> Result<Self, ForceError> {
+        Self::with_working(m, loads, Working::Slower)
+    }
+
+    /// As [`Kinetostatics::new`], choosing which stroke is the working one.
+    pub fn with_working(m: &'m Mechanism, loads: Loads, working: Working) -> Result<Self, ForceError> {
+        loads.check(m)?;
+        let stroke = if loads.resistance.iter().any(|r| r.law.needs_stroke()) { Some(Stroke::find(m, m.output, working)?) } else { None };
+        for (k, r) in loads.resistance.iter().enumerate() {
+            r.law.check_cover(&format!("resistance[{k}]"), stroke.as_ref(), &|x, ang| if ang { format!("{:.4}°", x.to_degrees()) } else { format!("{:.6} m", x) })?;
+        }
+        let gpairs = m.groups.iter().map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect()).collect();
+        let c = m.crank.link;
+        let pivot_pair = m
+            .pairs
+            .iter()
+            .position(|p| matches!(*p, Pair::R { a, b, .. } if (a == 0 && b == c) || (a == c && b == 0)))
+            .ok_or_else(|| ForceError::load("input", "the crank has no revolute pair with the frame"))?;
+        let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
+        Ok(Kinetostatics { m, loads, stroke, gpairs, pivot_pair, work: GroupWork::new(max_links) })
+    }
+
+    /// A fresh result buffer.
+    pub fn result(&self) -> ForceSolution {
+        let nl = self.m.link_names.len();
+        let maxp = self.m.groups.iter().map(|g| g.info.pair_ids.len()).max().unwrap_or(0);
+        let maxl = self.m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(0);
+        ForceSolution {
+            phi: f64::NAN,
+            links: vec![LinkForces::default(); nl],
+            reactions: vec![Reaction::default(); self.m.pairs.len()],
+            resistance: vec![0.0; self.loads.resistance.len()],
+            phase: None,
+            balancing_moment: 0.0,
+            balancing_force: 0.0,
+            balancing_force_vec: Vec2::ZERO,
+            zhukovsky_moment: 0.0,
+            acc: vec![(Vec2::ZERO, 0.0); nl],
+            q: vec![(Vec2::ZERO, 0.0); maxl],
+            pf: vec![PairForce::default(); maxp],
+        }
+    }
+
+    /// Solve the kinematics at crank angle `phi` (rad), then the forces.
+    pub fn solve_at(&mut self, phi: f64, sol: &mut Solution, out: &mut ForceSolution) -> Result<(), ForceError> {
+        self.m.solve(phi, sol)?;
+        self.solve(sol, out)
+    }
+
+    /// The forces of a solved position. Allocates nothing.
+    pub fn solve(&mut self, sol: &Solution, out: &mut ForceSolution) -> Result<(), ForceError> {
+        let m = self.m;
+        let phi = sol.phi;
+        out.phi = phi;
+        out.phase = self.stroke.as_ref().map(|s| s.phase(sol));
+        let phase = out.phase.unwrap_or_default();
+        for (k, r) in self.loads.resistance.iter().enumerate() {
+            out.resistance[k] = r.law.value(&phase);
+        }
+        // --- loads on every link, reduced to S and to the link's origin
+        out.acc[0] = (Vec2::ZERO, 0.0);
+        for l in 1..m.link_names.len() {
+            let ld = &self.loads.links[l];
+            let st = &sol.links[l];
+            let (fi, s, mi) = inertia_load(st, m.mass_centers[l], ld.mass, ld.inertia);
+            let w = self.loads.gravity * ld.mass;
+            let (mut fe, mut me) = (Vec2::ZERO, ld.moment);
+            for pf in &ld.forces {
+                let p = st.pos(pf.local);
+                fe += pf.force;
+                me += cross(p - s, pf.force);
+            }
+            for (k, r) in self.loads.resistance.iter().enumerate() {
+                if r.link == l {
+                    let (f, p, c) = r.apply(st, out.resistance[k]);
+                    fe += f;
+                    me += cross(p - s, f) + c;
+                }
+            }
+            let f = fi + w + fe;
+            let mo = mi + me;
+            out.links[l] = LinkForces { s, inertia_force: fi, inertia_moment: mi, weight: w, external_force: fe, external_moment: me, force: f, moment: mo };
+            out.acc[l] = about_origin(st.o, f, s, mo);
+        }
+        // --- Assur groups from the last one back to the crank
+        for (g, grp) in m.groups.iter().enumerate().rev() {
+            let links = &grp.info.link_ids;
+            for (i, &l) in links.iter().enumerate() {
+                out.q[i] = out.acc[l];
+            }
+            let prs = &self.gpairs[g];
+            if !solve_group(prs, links, &sol.links, &out.q[..links.len()], &mut self.work, &mut out.pf[..prs.len()]) {
+                return Err(ForceError::Singular { phi_deg: phi.to_degrees(), group: grp.label() });
+            }
+            for (k, &pid) in grp.info.pair_ids.iter().enumerate() {
+                let p = &m.pairs[pid];
+                let (first, other) = p.links();
+                let pf = out.pf[k];
+                let (on, from, f, c) = if links.contains(&first) { (first, other, pf.force, pf.couple) } else { (other, first, -pf.force, -pf.couple) };
+                out.reactions[pid] = reaction(pid, p, from, on, f, pf.at, c, sol);
+                if from != 0 && !links.contains(&from) {
+                    let (df, dm) = about_origin(sol.links[from].o, -f, pf.at, -c);
+                    out.acc[from].0 += df;
+                    out.acc[from].1 += dm;
+                }
+            }
+        }
+        // --- the input link: pivot reaction and balancing torque
+        let c = m.crank.link;
+        let (f, mo) = out.acc[c];
+        let o = sol.links[c].o;
+        let pivot = m.crank.pivot;
+        let m_pivot = mo + cross(o - pivot, f);
+        out.balancing_moment = -m_pivot;
+        out.reactions[self.pivot_pair] = reaction(self.pivot_pair, &m.pairs[self.pivot_pair], 0, c, -f, pivot, 0.0, sol);
+        let r = sol.points[m.crank.pin].p - pivot;
+        let rl = r.hypot();
+        out.balancing_force = out.balancing_moment / rl;
+        out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
+        out.zhukovsky_moment = zhukovsky::balancing_moment(m, &self.loads, sol, &out.resistance);
+        // --- nothing non-finite leaves
+        let bad = |what: &str| ForceError::NonFinite { phi_deg: phi.to_degrees(), what: what.to_string() };
+        if !(out.balancing_moment.is_finite() && out.zhukovsky_moment.is_finite()) {
+            return Err(bad("the balancing torque"));
+        }
+        for r in &out.reactions {
+            if !(r.force.x.is_finite() && r.force.y.is_finite() && r.at.x.is_finite() && r.at.y.is_finite()) {
+                return Err(bad(&format!("the reaction at {}", m.points[m.pairs[r.pair].point()].name)));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Build a reaction record: split along the axis of `on`, and for a prismatic
+/// pair turn the couple into a shift of the force along the guide.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn reaction(pair: usize, p: &Pair, from: usize, on: usize, force: Vec2, at: Vec2, couple: f64, sol: &Solution) -> Reaction {
+    let u = sol.links[on].u;
+    let (prismatic, offset, at) = match *p {
+        Pair::P { guide, d, .. } => {
+            let dg = crate::state::rot(sol.links[guide].u, d);
+            // force ⟂ guide: couple = x·(d × F) ⇒ x = couple / (d × F)
+            let k = cross(dg, force);
+            let x = if k.abs() > 1e-300 { couple / k } else { 0.0 };
+            (true, x, at + dg * x)
+        }
+        Pair::R { .. } => (false, 0.0, at),
+    };
+    Reaction { pair, from, on, force, at, normal: force.dot(u), tangential: force.dot(perp(u)), offset, prismatic }
+}
