@@ -343,9 +343,9 @@ impl Mechanism {
         let class = infos.iter().map(|g| g.class).max().unwrap_or(1);
         let mut formula = format!("I(0,{})", link_names[cl]);
         for g in &infos {
-            let mut ids = g.link_ids.clone();
-            ids.sort_unstable();
-            let names: Vec<&str> = ids.iter().map(|&l| link_names[l].as_str()).collect();
+            // as the course writes it: numbers in ascending order, names as given
+            let mut names: Vec<&str> = g.link_ids.iter().map(|&l| link_names[l].as_str()).collect();
+            names.sort_by_key(|n| (n.parse::<u64>().unwrap_or(u64::MAX), n.to_string()));
             formula.push_str(&format!(" → {}({})", roman(g.class), names.join(",")));
         }
         let output = match &def.output {
