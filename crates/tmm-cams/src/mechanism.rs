@@ -130,16 +130,16 @@ impl Mechanism {
     }
 
     /// The pitch point in the frame with its φ-derivatives: the roller centre,
-    /// or for a flat face the point of the face on the follower axis (or above
-    /// the pivot line for an oscillating face: the foot of the perpendicular
-    /// from O).
+    /// or for a flat face the foot of the perpendicular from O to the face
+    /// (its distance from O is the base radius r₀ + s, so r₀ is the smallest
+    /// radius of this theoretical profile).
     #[inline]
     pub fn frame_point(&self, m: &Motion) -> Jet {
         match *self {
             Mechanism::TranslatingRoller { e, s0, .. } => {
                 Jet { p: Vec2::new(e, s0 + m.s), d1: Vec2::new(0.0, m.v), d2: Vec2::new(0.0, m.a) }
             }
-            Mechanism::TranslatingFlat { e, r0 } => Jet { p: Vec2::new(e, r0 + m.s), d1: Vec2::new(0.0, m.v), d2: Vec2::new(0.0, m.a) },
+            Mechanism::TranslatingFlat { r0, .. } => Jet { p: Vec2::new(0.0, r0 + m.s), d1: Vec2::new(0.0, m.v), d2: Vec2::new(0.0, m.a) },
             Mechanism::OscillatingRoller { pivot, arm, psi0, kappa, .. } => {
                 let psi = psi0 + kappa * m.s;
                 let u = Vec2::new(psi.cos(), psi.sin());
