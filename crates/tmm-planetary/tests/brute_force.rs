@@ -141,7 +141,7 @@ fn brute(r: &Request) -> Vec<Found> {
                     let undercut =
                         ext_ok(z2) && ext_ok(z2p) && (m1 == Mesh::Internal || ext_ok(z1)) && (m2 == Mesh::Internal || ext_ok(t.z3));
                     let internal = (m1 == Mesh::External || ring_ok(z1, z2)) && (m2 == Mesh::External || ring_ok(t.z3, z2p));
-                    if !(undercut && internal) || !equally_spaced(r.scheme, &t, r.planets) {
+                    if !(undercut && internal && equally_spaced(r.scheme, &t, r.planets)) {
                         continue;
                     }
                     if !tip_clear(r.scheme, &t, q, 2.0 * std::f64::consts::PI / f64::from(r.planets), l.addendum) {

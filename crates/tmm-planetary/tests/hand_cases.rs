@@ -99,8 +99,8 @@ fn sun_planet_ring_u4_k3() {
 /// Willis: u_13^H = −(z2/z1)·(z3/z2′) = −(48/24)·(96/24) = −8, u_1H = 1 + 8 = 9.
 /// Coaxiality z1 + z2 = 72 = z3 − z2′ = 96 − 24. No undercut: 24, 48, 24 ≥ 17.
 /// Ring 96 ≥ 85, 96 − 24 = 72 ≥ 8. Assembly: (z1·z2′ + z2·z3)/gcd(z2, z2′)
-/// = (576 + 4608)/24 = 216 = 3·72. Neighbour: 2·a_w·sin 60° = 72·0.8660 = 62.35
-/// > max(48 + 2, 24 + 2) = 50. Radial size: max(z3, z1 + 2·z2) = max(96, 120) = 120.
+/// = (576 + 4608)/24 = 216 = 3·72. Neighbour: 2·a_w·sin 60° = 72·0.8660 = 62.35,
+/// above max(48 + 2, 24 + 2) = 50. Radial size: max(z3, z1 + 2·z2) = max(96, 120) = 120.
 /// Efficiency (sun drives, u > 1): 1 − 0.01495·8/9 = 0.986711…
 /// Picture: v_a = 12 at r = 12, zero at r3 = 48: v_b(36) = 12·(36 − 48)/(12 − 48) = 4,
 /// ωH = 4/36 = 1/9 → u = 9.

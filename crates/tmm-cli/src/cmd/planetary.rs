@@ -2,6 +2,10 @@
 //! number of planets, with every condition, the efficiency and the velocity
 //! pictures.
 
+// The edge's one error type (`crate::Error`, with the task source for
+// located messages) is large by design; `run_section` must return it.
+#![allow(clippy::result_large_err)]
+
 use std::path::PathBuf;
 
 use tmm_geom::units::Dim;
