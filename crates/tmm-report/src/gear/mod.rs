@@ -1,12 +1,123 @@
-//! The `[gear]` section of a task file: reading it, running it, and its outputs.
+//! The `[gear]` section of a task file and the `tmm gear` commands: reading the
+//! input ([`input`]), computing the pair ([`solve`]), tables ([`text`]), JSON
+//! ([`json`]), the meshing drawing ([`mesh`]), the blocking contour plot
+//! ([`contour_plot`]) and the generated profiles ([`profile`]).
+
+// The shared `Error` carries the task text for located diagnostics; it is large by design.
+#![allow(clippy::result_large_err)]
+
+pub mod contour_plot;
+pub mod input;
+pub mod json;
+pub mod mesh;
+pub mod profile;
+pub mod solve;
+pub mod text;
 
 use std::path::Path;
 
+use tmm_gears::contour::{ContourOptions, blocking_contour};
+use tmm_gears::generate::{ToothProfile, generate, ring_profile};
+use tmm_gears::{Kind, Pair};
+
+use crate::output::{ensure_dir, write_file};
+use crate::svg::{Series, plot};
 use crate::{Error, SectionOutput, TaskSource};
+use input::{Field, Origin, Raw, gear_error};
+
+/// Points per cutter part when generating a profile.
+pub const PROFILE_SAMPLES: usize = 60;
+
+/// Both wheels' generated tooth profiles (a ring is drawn from its involute).
+pub fn profiles(pair: &Pair, o: &Origin<'_>) -> Result<(ToothProfile, ToothProfile), Error> {
+    let s = &pair.spec;
+    let t1 = generate(s.z1, s.m, s.x1, &s.rack, pair.w1.da / 2.0, PROFILE_SAMPLES).map_err(|e| gear_error(o, &e))?;
+    let t2 = match s.kind {
+        Kind::External => generate(s.z2, s.m, s.x2, &s.rack, pair.w2.da / 2.0, PROFILE_SAMPLES).map_err(|e| gear_error(o, &e))?,
+        Kind::Internal => {
+            let rb2 = pair.w2.db / 2.0;
+            let r_form = (rb2 * rb2 + pair.w2.rho_l * pair.w2.rho_l).sqrt();
+            ring_profile(
+                s.z2,
+                s.m,
+                pair.w2.s,
+                &s.rack,
+                pair.w2.da / 2.0,
+                pair.w2.df / 2.0,
+                r_form,
+                PROFILE_SAMPLES,
+            )
+        }
+    };
+    Ok((t1, t2))
+}
+
+/// The specific-sliding diagram over the active line (ϑ clipped to [−4, 1]).
+pub fn sliding_svg(pair: &Pair) -> String {
+    let tab = pair.sliding_table(101);
+    let clip = |v: f64| if v.is_finite() { v.clamp(-4.0, 1.0) } else { f64::NAN };
+    let a: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta1))).collect();
+    let b: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta2))).collect();
+    plot(
+        "Specific sliding along the active line",
+        "distance from N1, mm",
+        "ϑ",
+        &[
+            Series {
+                name: "ϑ1 (wheel 1)",
+                points: &a,
+                color: "#c00000",
+            },
+            Series {
+                name: "ϑ2 (wheel 2)",
+                points: &b,
+                color: "#1f5fbf",
+            },
+        ],
+        200.0,
+        130.0,
+    )
+}
 
 /// Run the `[gear]` section of a task, writing files under `out/gear/`.
 /// Returns `None` when the task has no such section.
 pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
-    let _ = (task, out);
-    Ok(None)
+    let Some((raw, origin)) = Raw::from_task(task)? else {
+        return Ok(None);
+    };
+    let job = raw.job(&origin, true)?;
+    let solved = solve::solve(&job, &origin)?;
+    let pair = &solved.pair;
+    let (t1, t2) = profiles(pair, &origin)?;
+    let dir = out.join("gear");
+    ensure_dir(&dir)?;
+    let mut files = Vec::new();
+    write_file(&dir.join("mesh.svg"), &mesh::mesh_svg(pair, &t1, &t2), &mut files)?;
+    let dxf = mesh::mesh_dxf(pair, &t1, &t2);
+    let p = dir.join("mesh.dxf");
+    dxf.save(&p)?;
+    files.push(p);
+    write_file(&dir.join("sliding.svg"), &sliding_svg(pair), &mut files)?;
+    write_file(&dir.join("profiles.csv"), &profile::profiles_csv(&t1, &t2), &mut files)?;
+    write_file(&dir.join("profiles.svg"), &profile::profiles_svg(&t1, &t2), &mut files)?;
+    let pd = profile::profiles_dxf(&t1, &t2);
+    let p = dir.join("profiles.dxf");
+    pd.save(&p)?;
+    files.push(p);
+    let c = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| gear_error(&origin, &e))?;
+    let label = solved.criterion.map_or("given".to_string(), |c| c.name().to_string());
+    write_file(
+        &dir.join("contour.svg"),
+        &contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label))),
+        &mut files,
+    )?;
+    let text = text::pair_text(&solved, &job.limits);
+    let json = json::pair_json(&solved, &job.limits, None);
+    let _ = Field::Section;
+    Ok(Some(SectionOutput {
+        section: "gear",
+        text,
+        json,
+        files,
+    }))
 }
