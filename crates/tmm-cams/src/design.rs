@@ -83,6 +83,11 @@ pub struct CamTask {
 /// sheet 1, "Rкр min = (10 … 20)·10⁻³ м").
 pub const DEFAULT_MIN_CURVATURE: f64 = 0.010;
 
+/// Positions per moving phase whose cones cut the admissible region of an
+/// oscillating roller follower's centre (the envelope error falls as the
+/// square of the step: about 10⁻⁵ of r₀ here).
+pub const OSC_SAMPLES: usize = 360;
+
 /// The extent of a flat face.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Face {
@@ -170,7 +175,7 @@ impl CamTask {
                 if let Some(r) = roller {
                     check_len("roller", r, true)?;
                 }
-                (sizing::oscillating_roller(prog, sigma, limits, arm, pivot, 720)?, roller)
+                (sizing::oscillating_roller(prog, sigma, limits, arm, pivot, OSC_SAMPLES)?, roller)
             }
             FollowerSpec::TranslatingFlat { offset } => {
                 if !offset.is_finite() {

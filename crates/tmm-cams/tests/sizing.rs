@@ -130,7 +130,7 @@ fn oscillating_roller_optimum_beats_a_grid_of_centres() {
     let lim = spec::parse_limits("rise 30, return 35", false).unwrap();
     let arm = 0.1;
     let sigma = 1.0;
-    let m = sizing::oscillating_roller(&p, sigma, lim, arm, None, 720).unwrap();
+    let m = sizing::oscillating_roller(&p, sigma, lim, arm, None, tmm_cams::design::OSC_SAMPLES).unwrap();
     let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else { panic!() };
     let o = (-pivot.x, -pivot.y);
     let r0 = (o.0 - arm).hypot(o.1);
@@ -173,7 +173,7 @@ fn oscillating_roller_with_a_given_pivot_distance() {
     let p = program(15f64.to_radians(), "rise 90 poly345; dwell 90; return 90 poly345; dwell 90");
     let lim = spec::parse_limits("35", false).unwrap();
     let (arm, a) = (0.08, 0.1);
-    let m = sizing::oscillating_roller(&p, -1.0, lim, arm, Some(a), 720).unwrap();
+    let m = sizing::oscillating_roller(&p, -1.0, lim, arm, Some(a), tmm_cams::design::OSC_SAMPLES).unwrap();
     let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else { panic!() };
     assert!((pivot.hypot() - a).abs() < 1e-12);
     let o = (-pivot.x, -pivot.y);

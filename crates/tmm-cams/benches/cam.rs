@@ -1,0 +1,59 @@
+//! Sizing plus a 3600-point profile (the target: under 2 ms), and the
+//! pieces on their own.
+
+use divan::{Bencher, black_box};
+use tmm_cams::design::{CamTask, FollowerSpec};
+use tmm_cams::mechanism::{Mechanism, Rotation};
+use tmm_cams::profile::Profile;
+use tmm_cams::program::Program;
+use tmm_cams::{sizing, spec};
+
+fn main() {
+    divan::main();
+}
+
+const SEED: &str = "rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129";
+
+fn task(follower: FollowerSpec, h: f64) -> CamTask {
+    CamTask {
+        program: Program::new(h, spec::parse_phases(SEED).unwrap()).unwrap(),
+        follower,
+        rotation: Rotation::Ccw,
+        limits: spec::parse_limits("rise 75, return 60", true).unwrap(),
+        min_curvature: None,
+        face_margin: 0.005,
+        omega: 200.0,
+        points: 3600,
+    }
+}
+
+#[divan::bench]
+fn translating_roller_design_3600(b: Bencher) {
+    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
+    b.bench(|| black_box(&t).solve().unwrap());
+}
+
+#[divan::bench]
+fn translating_flat_design_3600(b: Bencher) {
+    let t = task(FollowerSpec::TranslatingFlat { offset: 0.0 }, 0.013);
+    b.bench(|| black_box(&t).solve().unwrap());
+}
+
+#[divan::bench]
+fn oscillating_roller_design_3600(b: Bencher) {
+    let t = task(FollowerSpec::OscillatingRoller { arm: 0.1, pivot: None, roller: None }, 20f64.to_radians());
+    b.bench(|| black_box(&t).solve().unwrap());
+}
+
+#[divan::bench]
+fn translating_roller_sizing_only(b: Bencher) {
+    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
+    b.bench(|| sizing::translating_roller(black_box(&t.program), 1.0, t.limits, None).unwrap());
+}
+
+#[divan::bench]
+fn profile_3600_points(b: Bencher) {
+    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
+    let m = Mechanism::TranslatingRoller { e: 0.0058, s0: 0.024, roller: 0.01 };
+    b.bench(|| Profile::new(black_box(&t.program), &m, 1.0, 3600));
+}
