@@ -346,7 +346,8 @@ fn visit_set(req: &Request, t: Teeth, q: ModuleRatio, (ulo, uhi): (f64, f64), co
     counts.assembly += 1;
     let equal = m % u64::from(k) == 0;
     counts.equal += u64::from(equal);
-    if !neighbours_clear(req.scheme, &t, q, smallest_gap(m, k), req.limits.addendum) {
+    // A single planet has no neighbour.
+    if k > 1 && !neighbours_clear(req.scheme, &t, q, smallest_gap(m, k), req.limits.addendum) {
         return;
     }
     if equal {

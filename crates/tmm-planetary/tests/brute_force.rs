@@ -144,7 +144,7 @@ fn brute(r: &Request) -> Vec<Found> {
                     if !(undercut && internal && equally_spaced(r.scheme, &t, r.planets)) {
                         continue;
                     }
-                    if !tip_clear(r.scheme, &t, q, 2.0 * std::f64::consts::PI / f64::from(r.planets), l.addendum) {
+                    if r.planets > 1 && !tip_clear(r.scheme, &t, q, 2.0 * std::f64::consts::PI / f64::from(r.planets), l.addendum) {
                         continue;
                     }
                     out.push(Found {
@@ -253,7 +253,7 @@ proptest! {
                         prop_assert!(fits_at(r.scheme, &t, p as i64, m as i64), "{t:?} at {p}/{m}");
                     }
                     let gap = pos.windows(2).map(|w| w[1] - w[0]).chain([m - pos[pos.len() - 1] + pos[0]]).min().unwrap();
-                    prop_assert!(tip_clear(r.scheme, &t, c.modules, 2.0 * std::f64::consts::PI * gap as f64 / m as f64, 1.0));
+prop_assert!(r.planets == 1 || tip_clear(r.scheme, &t, c.modules, 2.0 * std::f64::consts::PI * gap as f64 / m as f64, 1.0));
                     prop_assert_eq!(c.equal_spacing, equally_spaced(r.scheme, &t, r.planets));
                 }
                 if s.equal_spacing {

@@ -244,3 +244,11 @@ fn invalid_fields() {
         "tolerance"
     );
 }
+
+/// One planet: assembly is trivial (M ≥ 1) and there is no neighbour, so
+/// for u = 4 the smallest ring z3 = 3·z1 ≥ 85 gives z1 = 29: [29, 29, 87].
+#[test]
+fn single_planet_has_no_neighbour() {
+    let s = synthesize(&Request::new(Scheme::SunPlanetRing, 4.0, 1)).unwrap();
+    assert_eq!(s.best().teeth, Teeth::single(29, 29, 87));
+}

@@ -153,12 +153,17 @@ pub fn report(a: &Analysis) -> String {
     let aw = 0.5 * span_row1(sc, &b.teeth) as f64;
     let q = b.modules.value();
     let da = (f64::from(b.teeth.z2) + 2.0 * l.addendum).max(q * (f64::from(b.teeth.z2p) + 2.0 * l.addendum));
-    let _ = writeln!(
-        s,
-        "  neighbour: 2·a_w·sin(γ/2) = {} > d_a,max = {} (modules)",
-        g(2.0 * aw * (0.5 * gap).sin()),
-        g(da)
-    );
+    if r.planets > 1 {
+        let chord = g(2.0 * aw * (0.5 * gap).sin());
+        let _ = writeln!(
+            s,
+            "  neighbour: 2·a_w·sin(γ/2) = {chord} > d_a,max = {} (modules), γ = {}°",
+            g(da),
+            g(gap * 180.0 / PI)
+        );
+    } else {
+        let _ = writeln!(s, "  neighbour: one planet, no neighbour");
+    }
     let (dn, rn) = match a.driver {
         Driver::Sun => ("η_1H (wheel 1 drives)", "η_H1 (carrier drives)"),
         Driver::Carrier => ("η_H1 (carrier drives)", "η_1H (wheel 1 drives)"),
