@@ -22,7 +22,7 @@
 
 use tmm_geom::{Vec2, perp};
 
-use crate::state::{LinkState, PointState, conj, rot, solve2};
+use crate::state::{LinkState, PointState, conj, inverse2, rot, solve2};
 
 /// Why a dyad failed at a position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -239,22 +239,23 @@ impl DyadGeom {
                 let d = pc.p - pa.p;
                 let dd = d.x * d.x + d.y * d.y;
                 let dist = dd.sqrt();
-                let x = (len1 * len1 - len2 * len2 + dd) / (2.0 * dist);
+                let inv_d = 1.0 / dist;
+                let x = 0.5 * (len1 * len1 - len2 * len2 + dd) * inv_d;
                 let h2 = len1 * len1 - x * x;
                 if !(dist > 0.0) || h2 < -1e-12 * len1 * len1 || !h2.is_finite() {
                     return Err(DyadFail::Circles { d: dist, r1: len1, r2: len2 });
                 }
                 let h = h2.max(0.0).sqrt();
-                let e = d * (1.0 / dist);
+                let e = d * inv_d;
                 let b = pa.p + e * x + perp(e) * (sign * h);
                 let ab = b - pa.p;
                 let cb = b - pc.p;
-                let c1 = perp(ab);
-                let c2v = -perp(cb);
-                let tol = 1e-10 * len1 * len2;
-                let (w1, w2) = solve2(c1, c2v, pc.v - pa.v, tol).ok_or(DyadFail::Singular)?;
-                let r = pc.a - pa.a + ab * (w1 * w1) - cb * (w2 * w2);
-                let (e1, e2) = solve2(c1, c2v, r, tol).ok_or(DyadFail::Singular)?;
+                // ω1·(AB)⊥ − ω2·(CB)⊥ = V_C − V_A; the same matrix for ε1, ε2
+                let (r1, r2) = inverse2(perp(ab), -perp(cb), 1e-10 * len1 * len2).ok_or(DyadFail::Singular)?;
+                let rv = pc.v - pa.v;
+                let (w1, w2) = (r1.dot(rv), r2.dot(rv));
+                let ra = pc.a - pa.a + ab * (w1 * w1) - cb * (w2 * w2);
+                let (e1, e2) = (r1.dot(ra), r2.dot(ra));
                 let u1 = rot(ab * (1.0 / len1), conj(dir1));
                 let u2 = rot(cb * (1.0 / len2), conj(dir2));
                 links[l1] = LinkState::from_point(&pa, a1, u1, w1, e1);

@@ -440,8 +440,9 @@ impl Mechanism {
                 }
             }
         }
-        for (i, p) in self.points.iter().enumerate() {
-            sol.points[i] = sol.links[p.link].point(p.local);
+        let links = &sol.links;
+        for (out, p) in sol.points.iter_mut().zip(&self.points) {
+            *out = links[p.link].point(p.local);
         }
         sol.warm = Some(phi);
         Ok(())
