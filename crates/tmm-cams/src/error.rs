@@ -27,7 +27,7 @@ pub enum CamError {
         reason: String,
     },
     /// The phase angles do not close the cycle.
-    #[error("the phase angles sum to {sum_deg:.6}°, but a cam turn is 360°")]
+    #[error("the phase angles sum to {sum_deg:.4}°, but a cam turn is 360°")]
     PhaseSum {
         /// The sum, degrees.
         sum_deg: f64,
