@@ -193,17 +193,23 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> String {
     );
     c.begin_group("circles");
     for &(cen, r, name, _, st) in &sc.circles {
-        // only the arc inside the window
-        let ang = ((sc.p.0 - cen.0) / r).clamp(-1.0, 1.0);
-        let _ = ang;
-        let dir = (sc.p.1 - cen.1).signum();
-        let base = if dir >= 0.0 { PI / 2.0 } else { -PI / 2.0 };
-        let span = (1.3 * half_w / r).min(PI);
-        c.arc(cen, r, base - span, base + span, st);
-        let lx = cen.0 + r * (base + 0.95 * span).cos();
-        let ly = cen.1 + r * (base + 0.95 * span).sin();
-        if in_win(&(lx, ly)) {
-            c.text((lx, ly), name, 2.0, Anchor::Start);
+        // the part of the circle inside the window, as runs of a fine polyline
+        let n = 720;
+        let pts: Vec<Pt> = (0..=n)
+            .map(|i| {
+                let a = 2.0 * PI * i as f64 / n as f64;
+                (cen.0 + r * a.cos(), cen.1 + r * a.sin())
+            })
+            .collect();
+        let mut label_at: Option<Pt> = None;
+        for run in pts.split(|q| !in_win(q)) {
+            if run.len() >= 2 {
+                c.polyline(run, st);
+                label_at = label_at.or(run.last().copied());
+            }
+        }
+        if let Some(q) = label_at {
+            c.text(q, name, 2.0, Anchor::Start);
         }
     }
     c.end_group();
