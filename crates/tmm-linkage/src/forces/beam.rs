@@ -151,8 +151,17 @@ impl Beam {
             let ps = pa + e * zs;
             let j_line = rho0 * len.powi(3) / 3.0 + rho1 * len.powi(4) / 4.0 - mass * zs * zs;
             let line_f = (g - (a_a + k1 * zs)) * mass;
-            push("S (rod model correction)".into(), ps, -line_f, j_line * st.eps);
-            push("S (weight + inertia)".into(), lf.s, lf.weight + lf.inertia_force, lf.inertia_moment);
+            let true_f = lf.weight + lf.inertia_force;
+            if (lf.s - ps).hypot() <= 1e-12 * len {
+                // S on the axis: one concentrated remainder, the torque (J_line − J_S)·ε
+                let (df, dc) = (true_f - line_f, lf.inertia_moment + j_line * st.eps);
+                if df.hypot() > 1e-12 * (true_f.hypot() + line_f.hypot()) || dc.abs() > 1e-12 * (lf.inertia_moment.abs() + (j_line * st.eps).abs()) {
+                    push("S: J_S − J_rod torque".into(), ps, df, dc);
+                }
+            } else {
+                push("S: rod model (removed)".into(), ps, -line_f, j_line * st.eps);
+                push("S: weight + inertia (true)".into(), lf.s, true_f, lf.inertia_moment);
+            }
         }
         out.sort_by(|x, y| x.z.total_cmp(&y.z));
         let zmin = out.first().map_or(0.0, |l| l.z).min(0.0);

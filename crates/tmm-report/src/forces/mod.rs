@@ -1,12 +1,188 @@
-//! The `[forces]` section of a task file: reading it, running it, and its outputs.
+//! The `[forces]` section: kinetostatics of the `[linkage]` mechanism under
+//! the loads given here — inertia loads, reactions in every pair group by
+//! group, the balancing torque and force, Zhukovsky's lever, the balancing
+//! torque over the cycle and the strength of a chosen link — as tables, one
+//! JSON document and SVG drawings.
 
-use std::path::Path;
+mod draw;
+mod json;
+pub mod task;
+mod text;
 
-use crate::{Error, SectionOutput, TaskSource};
+use std::f64::consts::TAU;
+use std::path::{Path, PathBuf};
 
-/// Run the `[forces]` section of a task, writing files under `out/forces/`.
-/// Returns `None` when the task has no such section.
+use tmm_linkage::cycle::{self, Cycle, Position};
+use tmm_linkage::forces::stroke::Working;
+use tmm_linkage::forces::zhukovsky::{LeverForce, lever_forces};
+use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, SectionSizes, size_sections};
+use tmm_linkage::Solution;
+
+use crate::linkage::{self, Loaded};
+use crate::output::{SectionOutput, write_file};
+use crate::{Error, TaskSource};
+
+pub use task::ForcesTask;
+
+/// One solved position: kinematics and forces.
+#[derive(Debug, Clone)]
+pub struct Row {
+    /// Label (`0`…`11`, `7'`, `at`).
+    pub label: String,
+    /// Crank angle φ (absolute), rad.
+    pub phi: f64,
+    /// Crank travel from the start of the working stroke, rad.
+    pub psi: f64,
+    /// Kinematics.
+    pub sol: Solution,
+    /// Forces.
+    pub fs: ForceSolution,
+}
+
+/// A link as a beam at the detailed position.
+#[derive(Debug, Clone)]
+pub struct BeamResult {
+    /// The beam.
+    pub beam: Beam,
+    /// Its diagrams N, Q, M.
+    pub samples: Vec<BeamSample>,
+    /// The section sizes.
+    pub sizes: SectionSizes,
+    /// Names of the axis points.
+    pub names: (String, String),
+    /// Allowed stress, Pa.
+    pub allowed: f64,
+    /// h/b.
+    pub k: f64,
+}
+
+/// Everything the section computes.
+#[derive(Debug, Clone)]
+pub struct Analysis {
+    /// The cycle of the output (dead positions, working stroke).
+    pub cycle: Cycle,
+    /// The equally spaced positions.
+    pub rows: Vec<Row>,
+    /// The position shown in detail (free bodies, lever, beam).
+    pub detail: Row,
+    /// The forces on Zhukovsky's lever at the detailed position.
+    pub lever: Vec<LeverForce>,
+    /// Balancing torque over the cycle: (ψ, φ, M_b, M_Zh), 361 samples.
+    pub curve: Vec<[f64; 4]>,
+    /// The strength of a link, if asked.
+    pub beam: Option<BeamResult>,
+}
+
+/// Turn a core force error into a located input error.
+pub fn locate(src: &TaskSource, l: &Loaded, t: &ForcesTask, e: &ForceError) -> Error {
+    match e {
+        ForceError::Kinematics(k) => linkage::locate(src, &l.task, k),
+        ForceError::Load { field, message } => {
+            let key = field.split('.').take(2).collect::<Vec<_>>().join(".");
+            let key0 = field.split('.').next().unwrap_or("");
+            let span = t.spans.get(&key).or_else(|| t.spans.get(key0)).cloned().unwrap_or(t.section.clone());
+            Error::at(src, span, &format!("forces.{field}"), message)
+        }
+        other => Error::at(src, t.section.clone(), "forces", other.to_string()),
+    }
+}
+
+/// Read the `[linkage]` and `[forces]` sections; `None` when there is no `[forces]`.
+pub fn load(src: &TaskSource) -> Result<Option<(Loaded, ForcesTask)>, Error> {
+    let has_forces = task_has_forces(src)?;
+    if !has_forces {
+        return Ok(None);
+    }
+    let l = linkage::load(src)?.ok_or_else(|| Error::input(&src.name, "the [forces] section needs a [linkage] section describing the mechanism").with_help("see examples/seed-001-fourbar.toml"))?;
+    let t = task::read(src, &l.def, &l.mech)?.ok_or_else(|| Error::input(&src.name, "no [forces] section"))?;
+    Ok(Some((l, t)))
+}
+
+fn task_has_forces(src: &TaskSource) -> Result<bool, Error> {
+    #[derive(serde::Deserialize)]
+    struct Probe {
+        forces: Option<toml::Value>,
+    }
+    let p: Probe = src.parse("forces")?;
+    Ok(p.forces.is_some())
+}
+
+fn working(w: cycle::Working) -> Working {
+    match w {
+        cycle::Working::Slower => Working::Slower,
+        cycle::Working::Increasing => Working::Increasing,
+        cycle::Working::Decreasing => Working::Decreasing,
+    }
+}
+
+/// Solve the cycle, the equally spaced positions, the detailed position (at
+/// `at`, else the section's `at`, else the linkage's, else position 1), the
+/// balancing torque over the cycle and the strength of the chosen link.
+pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) -> Result<Analysis, Error> {
+    let m = &l.mech;
+    let loc = |e: ForceError| locate(src, l, t, &e);
+    let c = Cycle::new(m, l.task.working).map_err(|e| linkage::locate(src, &l.task, &e))?;
+    let mut k = Kinetostatics::with_working(m, t.loads.clone(), working(l.task.working)).map_err(loc)?;
+    let sg = m.crank.omega.signum();
+    let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
+    let mut sol = m.solution();
+    let mut fs = k.result();
+    let mut solve = |label: String, phi: f64, k: &mut Kinetostatics| -> Result<Row, Error> {
+        k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?;
+        Ok(Row { label, phi, psi: psi_of(phi), sol: sol.clone(), fs: fs.clone() })
+    };
+    let positions: Vec<Position> = c.positions(m, l.task.positions);
+    let mut rows = Vec::with_capacity(positions.len());
+    for p in positions {
+        rows.push(solve(p.label, p.phi, &mut k)?);
+    }
+    let phi_d = at.or(t.at).or(l.task.at).unwrap_or_else(|| rows.get(1).map_or(c.start, |r| r.phi));
+    let detail = solve(if at.is_some() { "at".into() } else { "detail".into() }, phi_d, &mut k)?;
+    let mut curve = Vec::with_capacity(361);
+    for i in 0..=360 {
+        let psi = TAU * i as f64 / 360.0;
+        let phi = c.start + sg * psi;
+        let r = solve(String::new(), phi, &mut k)?;
+        curve.push([psi, tmm_geom::angle::wrap_2pi(phi), r.fs.balancing_moment, r.fs.zhukovsky_moment]);
+    }
+    let lever = lever_forces(m, &k.loads, &detail.sol, &detail.fs);
+    let beam = match &t.strength {
+        Some(s) => {
+            let beam = Beam::new(m, &k.loads, &detail.sol, &detail.fs, s.link, s.axis.0, s.axis.1).map_err(loc)?;
+            let samples = beam.diagrams(200);
+            let sizes = size_sections(&samples, s.allowed, s.k).map_err(loc)?;
+            Some(BeamResult { beam, samples, sizes, names: s.names.clone(), allowed: s.allowed, k: s.k })
+        }
+        None => None,
+    };
+    Ok(Analysis { cycle: c, rows, detail, lever, curve, beam })
+}
+
+/// Run the `[forces]` section of a task into `out/forces/`.
 pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
-    let _ = (task, out);
-    Ok(None)
+    let Some((l, t)) = load(task)? else { return Ok(None) };
+    let a = analyse(task, &l, &t, None)?;
+    let dir = out.join("forces");
+    let mut files = Vec::new();
+    draw::write_all(&l, &t, &a, &dir, &mut files)?;
+    let json = json::document(&l, &t, &a);
+    write_file(&dir.join("forces.json"), &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?, &mut files)?;
+    Ok(Some(SectionOutput { section: "forces", text: text::report(&l, &t, &a), json, files }))
+}
+
+/// The human report.
+pub fn text_report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
+    text::report(l, t, a)
+}
+
+/// The JSON document.
+pub fn json_document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> serde_json::Value {
+    json::document(l, t, a)
+}
+
+/// Write the drawings into `dir`.
+pub fn write_svgs(l: &Loaded, t: &ForcesTask, a: &Analysis, dir: &Path) -> Result<Vec<PathBuf>, Error> {
+    let mut files = Vec::new();
+    draw::write_all(l, t, a, dir, &mut files)?;
+    Ok(files)
 }

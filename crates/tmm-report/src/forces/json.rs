@@ -1,0 +1,124 @@
+//! The JSON document of the `[forces]` section (SI, angles in radians).
+//! Per position: `phi`, `loads` per link (inertia plus external, reduced to the
+//! centre of mass: `fx`, `fy`, and `m` about S), `reactions` (the force
+//! exerted by link `from` on link `on`), `balancing_moment` (the torque the
+//! drive applies to the input link, counter-clockwise positive),
+//! `balancing_force` (at the crank pin, perpendicular to the crank, positive
+//! along k × crank), `zhukovsky_moment`.
+
+use serde_json::{Map, Value, json};
+
+use super::task::ForcesTask;
+use super::{Analysis, Row};
+use crate::linkage::Loaded;
+use crate::output::num;
+
+/// The name of a pair: its point (`B`), the same the user gave.
+pub fn pair_name(l: &Loaded, pair: usize) -> String {
+    l.mech.points[l.mech.pairs[pair].point()].name.clone()
+}
+
+fn position(l: &Loaded, r: &Row) -> Value {
+    let m = &l.mech;
+    let f = &r.fs;
+    let mut loads = Map::new();
+    for (i, lf) in f.links.iter().enumerate().skip(1) {
+        loads.insert(
+            m.link_names[i].clone(),
+            json!({
+                "fx": num(lf.force.x), "fy": num(lf.force.y), "m": num(lf.moment),
+                "s": [num(lf.s.x), num(lf.s.y)],
+                "inertia_force": [num(lf.inertia_force.x), num(lf.inertia_force.y)],
+                "inertia_moment": num(lf.inertia_moment),
+                "weight": [num(lf.weight.x), num(lf.weight.y)],
+                "external_force": [num(lf.external_force.x), num(lf.external_force.y)],
+                "external_moment": num(lf.external_moment),
+            }),
+        );
+    }
+    let reactions: Vec<Value> = f
+        .reactions
+        .iter()
+        .map(|x| {
+            json!({
+                "pair": pair_name(l, x.pair),
+                "kind": if x.prismatic { "P" } else { "R" },
+                "from": m.link_names[x.from],
+                "on": m.link_names[x.on],
+                "fx": num(x.force.x), "fy": num(x.force.y), "magnitude": num(x.force.hypot()),
+                "normal": num(x.normal), "tangential": num(x.tangential),
+                "at": [num(x.at.x), num(x.at.y)],
+                "offset": num(x.offset),
+            })
+        })
+        .collect();
+    json!({
+        "label": r.label,
+        "phi": num(r.phi),
+        "psi": num(r.psi),
+        "working_stroke": f.phase.map(|p| p.working),
+        "resistance": f.resistance.iter().map(|&v| num(v)).collect::<Vec<_>>(),
+        "loads": loads,
+        "reactions": reactions,
+        "balancing_moment": num(f.balancing_moment),
+        "balancing_force": num(f.balancing_force),
+        "balancing_force_vector": [num(f.balancing_force_vec.x), num(f.balancing_force_vec.y)],
+        "zhukovsky_moment": num(f.zhukovsky_moment),
+        "relative_difference": num(f.relative_difference()),
+    })
+}
+
+/// The whole document.
+pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
+    let m = &l.mech;
+    let mut links = Map::new();
+    for (i, ld) in t.loads.links.iter().enumerate().skip(1) {
+        links.insert(
+            m.link_names[i].clone(),
+            json!({
+                "mass": num(ld.mass), "inertia": num(ld.inertia),
+                "mass_center_local": [num(m.mass_centers[i].x), num(m.mass_centers[i].y)],
+                "moment": num(ld.moment),
+                "forces": ld.forces.iter().map(|f| json!({"local": [num(f.local.x), num(f.local.y)], "force": [num(f.force.x), num(f.force.y)]})).collect::<Vec<_>>(),
+            }),
+        );
+    }
+    let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
+    let mut doc = json!({
+        "units": "SI",
+        "assumptions": "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); crank speed ω1 constant as given",
+        "structure": m.structure.formula,
+        "gravity": [num(t.loads.gravity.x), num(t.loads.gravity.y)],
+        "omega1": num(m.crank.omega),
+        "links": links,
+        "detail": position(l, &a.detail),
+        "positions": a.rows.iter().map(|r| position(l, r)).collect::<Vec<_>>(),
+        "cycle": a.curve.iter().map(|c| json!({"psi": num(c[0]), "phi": num(c[1]), "balancing_moment": num(c[2]), "zhukovsky_moment": num(c[3])})).collect::<Vec<_>>(),
+        "max_relative_difference": num(max_diff),
+        "lever": a.lever.iter().map(|x| json!({"label": x.label, "image": [num(x.image.x), num(x.image.y)], "force": [num(x.force.x), num(x.force.y)]})).collect::<Vec<_>>(),
+    });
+    if let Some(b) = &a.beam {
+        let s = &b.sizes;
+        let at = |i: usize| b.samples.get(i).map_or(Value::Null, |x| num(x.z));
+        doc["strength"] = json!({
+            "link": m.link_names[b.beam.link],
+            "between": [b.names.0, b.names.1],
+            "length": num(b.beam.length),
+            "allowed_stress": num(b.allowed),
+            "loads": b.beam.loads.iter().map(|x| json!({"label": x.label, "z": num(x.z), "axial": num(x.fe), "transverse": num(x.fn_), "couple": num(x.couple)})).collect::<Vec<_>>(),
+            "distributed_axial": b.beam.qe.iter().map(|&v| num(v)).collect::<Vec<_>>(),
+            "distributed_transverse": b.beam.qn.iter().map(|&v| num(v)).collect::<Vec<_>>(),
+            "diagrams": b.samples.iter().map(|x| json!({"z": num(x.z), "N": num(x.n), "Q": num(x.q), "M": num(x.m)})).collect::<Vec<_>>(),
+            "round": {"d": num(s.round_d), "dangerous_z": at(s.round_at)},
+            "rectangle": {"b": num(s.rect_b), "h": num(s.rect_h), "h_over_b": num(b.k), "dangerous_z": at(s.rect_at)},
+            "i_beam": s.ibeam.map(|(ib, i, sig)| json!({"gost_8239_number": ib.number, "area": num(ib.area), "w": num(ib.w), "stress": num(sig), "dangerous_z": at(i)})),
+        });
+    }
+    doc
+}
+
+/// Relative difference of two values (0 when both are 0).
+pub fn rel(a: f64, b: f64) -> f64 {
+    let s = a.abs().max(b.abs());
+    if s == 0.0 { 0.0 } else { (a - b).abs() / s }
+}
