@@ -17,18 +17,29 @@ use tmm_report::{Error, TaskSource};
 
 use super::common::read_task;
 
-const AFTER: &str = "Schemes (wheel 3 is fixed in all four; the ratio is u_1H = ω1/ωH, wheel 1 to the carrier H, by Willis' method):
-  sun-planet-ring  single-row planets: external mesh 1–2, internal mesh 2–3      u_1H = 1 + z3/z1             z = [z1, z2, z3]
-  ext-int          double planet 2–2′: external 1–2, internal 2′–3              u_1H = 1 + z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
-  ext-ext          double planet 2–2′: external 1–2, external 2′–3              u_1H = 1 − z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
-  int-int          double planet 2–2′: internal 1–2, internal 2′–3              u_1H = 1 − z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
-For ext-ext and int-int the carrier usually drives: give u_1H = 1/u_H1, e.g. --ratio 1/50 for a 50:1 reducer from the carrier.
-Conditions: ratio within --tolerance; coaxiality; assembly with k equally spaced planets (else the unequal spacing is offered);
-neighbour (tip circles); no undercut of external wheels (z ≥ --zmin, 17 for ha* = 1, α = 20°); internal meshes: ring z ≥ --ring-zmin (85)
-and ring − planet ≥ --min-difference (8). Ranked by radial size (in modules), then by ratio error.
+const AFTER: &str = "Schemes (wheel 3 is fixed in all four; the ratio is u_1H = ω1/ωH,
+wheel 1 to the carrier H, by Willis' method):
+  sun-planet-ring  single-row planets: 1–2 external, 2–3 internal
+                   u_1H = 1 + z3/z1             z = [z1, z2, z3]
+  ext-int          double planet 2–2′: 1–2 external, 2′–3 internal
+                   u_1H = 1 + z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
+  ext-ext          double planet 2–2′: 1–2 external, 2′–3 external
+                   u_1H = 1 − z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
+  int-int          double planet 2–2′: 1–2 internal, 2′–3 internal
+                   u_1H = 1 − z2·z3/(z1·z2′)    z = [z1, z2, z2′, z3]
+In ext-ext and int-int the carrier usually drives: give u_1H = 1/u_H1,
+e.g. --ratio 1/50 for a 50:1 reducer driven from the carrier.
+
+Conditions: the ratio within --tolerance; coaxiality; assembly with k
+equally spaced planets (else the unequal spacing is offered); neighbour
+(tip circles); no undercut of external wheels (z >= --zmin, 17 for
+ha* = 1, α = 20°); internal meshes: ring z >= --ring-zmin (85) and
+ring − planet >= --min-difference (8). Ranked by radial size (in modules),
+then by ratio error. Sources and derivations: docs/planetary.md.
+
 Examples:
   tmm planetary --scheme sun-planet-ring --ratio 4 --planets 3
-  tmm planetary --scheme ext-int --ratio 12.5 --planets 3 --tolerance 0.01 --svg planetary.svg
+  tmm planetary --scheme ext-int --ratio 12.5 --planets 3 --tolerance 0.01 --svg p.svg
   tmm planetary examples/planetary-ext-int.toml --json";
 
 /// Arguments of `tmm planetary`.
