@@ -70,7 +70,12 @@ pub struct KnownPoint {
 impl KnownPoint {
     #[inline(always)]
     fn state(&self, links: &[LinkState]) -> PointState {
-        links[self.link].point(self.local)
+        if self.link == 0 {
+            // a fixed point: the frame does not move
+            PointState { p: self.local, v: Vec2::ZERO, a: Vec2::ZERO }
+        } else {
+            links[self.link].point(self.local)
+        }
     }
 }
 

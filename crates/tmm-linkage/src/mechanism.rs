@@ -162,6 +162,8 @@ pub struct Mechanism {
     pub assembly_angle: f64,
     /// The assembled state at `assembly_angle` (warm start for Newton groups).
     init: Vec<LinkState>,
+    /// Points not on the frame (the frame's are set once per buffer).
+    moving_points: Vec<usize>,
     has_general: bool,
     scale: f64,
 }
@@ -250,6 +252,16 @@ impl Mechanism {
                         points.push(NamedPoint { name: pn.clone(), link: li + 1, local: *p });
                         occ.push(vec![(li + 1, *p)]);
                     }
+                }
+            }
+        }
+        // a point shared by links is read off the one where it is the local
+        // origin, if any (no rotation needed)
+        for (k, o) in occ.iter().enumerate() {
+            if points[k].link != 0 {
+                if let Some(&(l, p)) = o.iter().find(|(l, p)| *l != 0 && *p == Vec2::ZERO) {
+                    points[k].link = l;
+                    points[k].local = p;
                 }
             }
         }
@@ -355,6 +367,7 @@ impl Mechanism {
         let scale = points.iter().map(|p| p.local.hypot()).fold(radius, f64::max).max(1e-9);
         let structure = Structure { dof: w, n, p5, p4: 0, groups: infos, formula, class, dof_rank: w, redundant: 0, passive: 0 };
         let has_general = groups.iter().any(|g| g.solver == Solver::General);
+        let moving_points: Vec<usize> = (0..points.len()).filter(|&i| points[i].link != 0).collect();
         let mut m = Mechanism {
             link_names,
             mass_centers,
@@ -366,6 +379,7 @@ impl Mechanism {
             output,
             assembly_angle: def.assembly_angle,
             init: Vec::new(),
+            moving_points,
             has_general,
             scale,
         };
@@ -390,7 +404,7 @@ impl Mechanism {
         Solution {
             phi: f64::NAN,
             links: if self.init.is_empty() { vec![LinkState::default(); self.link_names.len()] } else { self.init.clone() },
-            points: vec![PointState::default(); self.points.len()],
+            points: self.points.iter().map(|p| if p.link == 0 { PointState { p: p.local, ..Default::default() } } else { PointState::default() }).collect(),
             jac: vec![0.0; n * n],
             rhs: vec![0.0; n],
             warm: None,
@@ -441,8 +455,10 @@ impl Mechanism {
             }
         }
         let links = &sol.links;
-        for (out, p) in sol.points.iter_mut().zip(&self.points) {
-            *out = links[p.link].point(p.local);
+        for &i in &self.moving_points {
+            let p = &self.points[i];
+            let l = &links[p.link];
+            sol.points[i] = if p.local == Vec2::ZERO { PointState { p: l.o, v: l.v, a: l.a } } else { l.point(p.local) };
         }
         sol.warm = Some(phi);
         Ok(())
