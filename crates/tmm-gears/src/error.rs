@@ -14,7 +14,7 @@ pub enum GearError {
         min: u32,
     },
     /// The module is not a positive finite length.
-    #[error("the module must be a positive length, got {0} m")]
+    #[error("the module must be a positive length, got {} mm", .0 * 1e3)]
     Module(f64),
     /// A basic-rack parameter is out of range.
     #[error("basic rack: {0}")]
@@ -26,7 +26,7 @@ pub enum GearError {
         wheel: u8,
     },
     /// The shifts give a tip circle at or below the root circle.
-    #[error("wheel {wheel}: the tip diameter {da} m is not above the root diameter {df} m (shifts too small or tip shortening too large)")]
+    #[error("wheel {wheel}: the tip diameter {:.4} mm is not above the root diameter {:.4} mm (the tip shortening Δy of a large shift sum eats the whole tooth)", .da * 1e3, .df * 1e3)]
     TipBelowRoot {
         /// 1 or 2.
         wheel: u8,
@@ -36,7 +36,7 @@ pub enum GearError {
         df: f64,
     },
     /// The tip circle is inside the base circle: no involute at the tip.
-    #[error("wheel {wheel}: the tip circle (d = {da} m) lies inside the base circle (d = {db} m), so the tip has no involute")]
+    #[error("wheel {wheel}: the tip circle (d = {:.4} mm) lies inside the base circle (d = {:.4} mm), so the tip has no involute", .da * 1e3, .db * 1e3)]
     TipInsideBase {
         /// 1 or 2.
         wheel: u8,
@@ -46,7 +46,7 @@ pub enum GearError {
         db: f64,
     },
     /// The shift sum gives no operating pressure angle (inv αw < 0).
-    #[error("the shift sum {x_sum} is too negative: inv αw = {inv_aw} < 0 has no operating pressure angle")]
+    #[error("the shift sum {x_sum:.4} is too negative: inv αw = {inv_aw:.6} < 0 has no operating pressure angle")]
     ShiftSum {
         /// x1 + x2 (external) or x2 − x1 (internal).
         x_sum: f64,
@@ -54,7 +54,7 @@ pub enum GearError {
         inv_aw: f64,
     },
     /// A centre distance that no shift sum can reach.
-    #[error("the centre distance {aw} m cannot be reached: it must exceed a·cos α = {min} m")]
+    #[error("the centre distance {:.4} mm cannot be reached by any shift sum: it must exceed a·cos α = {:.4} mm", .aw * 1e3, .min * 1e3)]
     CentreDistance {
         /// The centre distance given, m.
         aw: f64,

@@ -171,7 +171,9 @@ impl Pair {
         if da2 <= db2 {
             return if internal {
                 Err(GearError::InternalAssembly(format!(
-                    "the ring's tip circle (d = {da2} m) lies inside its base circle (d = {db2} m); raise x2"
+                    "the ring's tip circle (d = {:.4} mm) lies inside its base circle (d = {:.4} mm); raise x2",
+                    da2 * 1e3,
+                    db2 * 1e3
                 )))
             } else {
                 Err(GearError::TipInsideBase {
