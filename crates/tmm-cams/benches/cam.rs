@@ -29,7 +29,13 @@ fn task(follower: FollowerSpec, h: f64) -> CamTask {
 
 #[divan::bench]
 fn translating_roller_design_3600(b: Bencher) {
-    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
+    let t = task(
+        FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: None,
+        },
+        0.013,
+    );
     b.bench(|| black_box(&t).solve().unwrap());
 }
 
@@ -41,19 +47,42 @@ fn translating_flat_design_3600(b: Bencher) {
 
 #[divan::bench]
 fn oscillating_roller_design_3600(b: Bencher) {
-    let t = task(FollowerSpec::OscillatingRoller { arm: 0.1, pivot: None, roller: None }, 20f64.to_radians());
+    let t = task(
+        FollowerSpec::OscillatingRoller {
+            arm: 0.1,
+            pivot: None,
+            roller: None,
+        },
+        20f64.to_radians(),
+    );
     b.bench(|| black_box(&t).solve().unwrap());
 }
 
 #[divan::bench]
 fn translating_roller_sizing_only(b: Bencher) {
-    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
+    let t = task(
+        FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: None,
+        },
+        0.013,
+    );
     b.bench(|| sizing::translating_roller(black_box(&t.program), 1.0, t.limits, None).unwrap());
 }
 
 #[divan::bench]
 fn profile_3600_points(b: Bencher) {
-    let t = task(FollowerSpec::TranslatingRoller { offset: None, roller: None }, 0.013);
-    let m = Mechanism::TranslatingRoller { e: 0.0058, s0: 0.024, roller: 0.01 };
+    let t = task(
+        FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: None,
+        },
+        0.013,
+    );
+    let m = Mechanism::TranslatingRoller {
+        e: 0.0058,
+        s0: 0.024,
+        roller: 0.01,
+    };
     b.bench(|| Profile::new(black_box(&t.program), &m, 1.0, 3600));
 }

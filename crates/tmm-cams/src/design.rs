@@ -1,12 +1,12 @@
 //! The whole cam design from a task: sizing, roller choice, profile, checks.
 //! This is the one entry point the report and the command line call.
 
-use crate::CamError;
 use crate::mechanism::{Mechanism, Rotation};
 use crate::profile::{Profile, flat_rho, over_pieces, pitch_curvature, pressure_extremes};
 use crate::program::Program;
 use crate::sizing;
 use crate::spec::Limits;
+use crate::{CamError, positive};
 use tmm_geom::Vec2;
 
 /// The follower and what is given about it.
@@ -137,7 +137,13 @@ pub struct CamDesign {
 
 fn check_len(field: &'static str, v: f64, allow_zero: bool) -> Result<(), CamError> {
     if !v.is_finite() || v < 0.0 || (!allow_zero && v == 0.0) {
-        return Err(CamError::Dimension { field, reason: format!("must be a {} finite length, got {v}", if allow_zero { "non-negative" } else { "positive" }) });
+        return Err(CamError::Dimension {
+            field,
+            reason: format!(
+                "must be a {} finite length, got {v}",
+                if allow_zero { "non-negative" } else { "positive" }
+            ),
+        });
     }
     Ok(())
 }
@@ -148,20 +154,32 @@ impl CamTask {
         let prog = &self.program;
         let sigma = self.rotation.sign();
         let limits = self.limits.check()?;
-        if !(self.omega > 0.0) || !self.omega.is_finite() {
-            return Err(CamError::Dimension { field: "omega", reason: format!("the cam speed must be positive, got {}", self.omega) });
+        if !positive(self.omega) {
+            return Err(CamError::Dimension {
+                field: "omega",
+                reason: format!("the cam speed must be positive, got {}", self.omega),
+            });
         }
-        if !(self.face_margin >= 0.0) || !self.face_margin.is_finite() {
-            return Err(CamError::Dimension { field: "face-margin", reason: "must be a non-negative length".into() });
+        if !(self.face_margin.is_finite() && self.face_margin >= 0.0) {
+            return Err(CamError::Dimension {
+                field: "face-margin",
+                reason: "must be a non-negative length".into(),
+            });
         }
         if let Some(r) = self.min_curvature {
             check_len("min-curvature", r, true)?;
         }
         if !(16..=1_000_000).contains(&self.points) {
-            return Err(CamError::Dimension { field: "points", reason: format!("give between 16 and 1000000 profile points, got {}", self.points) });
+            return Err(CamError::Dimension {
+                field: "points",
+                reason: format!("give between 16 and 1000000 profile points, got {}", self.points),
+            });
         }
         if self.follower.oscillating() && prog.stroke() >= std::f64::consts::PI {
-            return Err(CamError::Dimension { field: "stroke", reason: "an oscillating follower's stroke is its swing angle, below 180°".into() });
+            return Err(CamError::Dimension {
+                field: "stroke",
+                reason: "an oscillating follower's stroke is its swing angle, below 180°".into(),
+            });
         }
         let (mut mech, given_roller) = match self.follower {
             FollowerSpec::TranslatingRoller { offset, roller } => {
@@ -179,14 +197,23 @@ impl CamTask {
             }
             FollowerSpec::TranslatingFlat { offset } => {
                 if !offset.is_finite() {
-                    return Err(CamError::Dimension { field: "offset", reason: "must be a finite length".into() });
+                    return Err(CamError::Dimension {
+                        field: "offset",
+                        reason: "must be a finite length".into(),
+                    });
                 }
                 let r0 = sizing::translating_flat(prog, self.min_curvature.unwrap_or(DEFAULT_MIN_CURVATURE));
                 (Mechanism::TranslatingFlat { e: offset, r0 }, None)
             }
             FollowerSpec::OscillatingFlat { pivot } => {
                 let r0 = sizing::oscillating_flat(prog, sigma, pivot, self.min_curvature.unwrap_or(DEFAULT_MIN_CURVATURE))?;
-                (Mechanism::OscillatingFlat { a: pivot, delta0: (r0 / pivot).asin() }, None)
+                (
+                    Mechanism::OscillatingFlat {
+                        a: pivot,
+                        delta0: (r0 / pivot).asin(),
+                    },
+                    None,
+                )
             }
         };
         let r0 = match mech {
@@ -209,7 +236,11 @@ impl CamTask {
                 Some(r) => {
                     let allowed = rho_p - need;
                     if r >= allowed {
-                        return Err(CamError::RollerTooLarge { roller_mm: r * 1e3, allowed_mm: allowed * 1e3, rho_mm: rho_p * 1e3 });
+                        return Err(CamError::RollerTooLarge {
+                            roller_mm: r * 1e3,
+                            allowed_mm: allowed * 1e3,
+                            rho_mm: rho_p * 1e3,
+                        });
                     }
                     if r >= r0 {
                         return Err(CamError::Dimension {
@@ -249,8 +280,11 @@ impl CamTask {
         let kmin = over_pieces(prog, scan, curv, false);
         if mech.is_flat() {
             let rmin = over_pieces(prog, scan, |m| flat_rho(&mech, m, sigma), false);
-            if !(rmin > 0.0) {
-                return Err(CamError::Infeasible(format!("the flat-faced cam is not convex (ρ_min = {:.3} mm)", rmin * 1e3)));
+            if !positive(rmin) {
+                return Err(CamError::Infeasible(format!(
+                    "the flat-faced cam is not convex (ρ_min = {:.3} mm)",
+                    rmin * 1e3
+                )));
             }
         }
         let rho_min_convex = if kmax > 0.0 { 1.0 / kmax } else { f64::INFINITY };
@@ -263,15 +297,20 @@ impl CamTask {
             Mechanism::TranslatingFlat { e, .. } => {
                 let lo = over_pieces(prog, scan, |m| sigma * m.v - e, false);
                 let hi = over_pieces(prog, scan, |m| sigma * m.v - e, true);
-                Some(Face { contact_min: lo, contact_max: hi, width: 2.0 * (lo.abs().max(hi.abs()) + self.face_margin) })
+                Some(Face {
+                    contact_min: lo,
+                    contact_max: hi,
+                    width: 2.0 * (lo.abs().max(hi.abs()) + self.face_margin),
+                })
             }
             Mechanism::OscillatingFlat { a, .. } => {
                 let along = |m: &crate::program::Motion| {
                     let c = mech.contact_frame(m, sigma);
-                    let d = m.s + match mech {
-                        Mechanism::OscillatingFlat { delta0, .. } => delta0,
-                        _ => 0.0,
-                    };
+                    let d = m.s
+                        + match mech {
+                            Mechanism::OscillatingFlat { delta0, .. } => delta0,
+                            _ => 0.0,
+                        };
                     (c - Vec2::new(a, 0.0)).dot(Vec2::new(-d.cos(), -d.sin()))
                 };
                 let lo = over_pieces(prog, scan, along, false);
@@ -282,7 +321,11 @@ impl CamTask {
                         lo * 1e3
                     )));
                 }
-                Some(Face { contact_min: lo, contact_max: hi, width: hi - lo + 2.0 * self.face_margin })
+                Some(Face {
+                    contact_min: lo,
+                    contact_max: hi,
+                    width: hi - lo + 2.0 * self.face_margin,
+                })
             }
             _ => None,
         };
@@ -323,13 +366,27 @@ impl CamDesign {
     }
 
     fn check_finite(&self) -> Result<(), CamError> {
-        let scalars = [self.r0, self.rb, self.roller, self.pressure_max_rise, self.pressure_max_return, self.rho_min];
-        let arrays_ok = self.profile.pitch.iter().chain(&self.profile.working).all(|p| p.x.is_finite() && p.y.is_finite())
+        let scalars = [
+            self.r0,
+            self.rb,
+            self.roller,
+            self.pressure_max_rise,
+            self.pressure_max_return,
+            self.rho_min,
+        ];
+        let arrays_ok = self
+            .profile
+            .pitch
+            .iter()
+            .chain(&self.profile.working)
+            .all(|p| p.x.is_finite() && p.y.is_finite())
             && self.profile.curvature.iter().chain(&self.profile.pressure).all(|x| x.is_finite());
         if scalars.iter().all(|x| x.is_finite()) && arrays_ok {
             Ok(())
         } else {
-            Err(CamError::Infeasible("the design degenerates (a non-finite value appeared); check the dimensions and the limits".into()))
+            Err(CamError::Infeasible(
+                "the design degenerates (a non-finite value appeared); check the dimensions and the limits".into(),
+            ))
         }
     }
 }

@@ -79,13 +79,24 @@ pub struct Region {
 impl Region {
     /// The square of half-size `r` centred at `c`.
     pub fn square(c: Vec2, r: f64) -> Self {
-        let v = vec![c + Vec2::new(-r, -r), c + Vec2::new(r, -r), c + Vec2::new(r, r), c + Vec2::new(-r, r)];
-        Region { vertices: v, scratch: Vec::new() }
+        let v = vec![
+            c + Vec2::new(-r, -r),
+            c + Vec2::new(r, -r),
+            c + Vec2::new(r, r),
+            c + Vec2::new(-r, r),
+        ];
+        Region {
+            vertices: v,
+            scratch: Vec::new(),
+        }
     }
 
     /// A convex polygon from its counter-clockwise vertices.
     pub fn from_vertices(vertices: Vec<Vec2>) -> Self {
-        Region { vertices, scratch: Vec::new() }
+        Region {
+            vertices,
+            scratch: Vec::new(),
+        }
     }
 
     /// Keep the part with `n·p ≥ c`.

@@ -61,7 +61,10 @@ fn shape_error(name: &str, e: ShapeError) -> CamError {
         ),
         ShapeError::NoRise => "the acceleration table gives no lift (its double integral is not positive)".to_string(),
     };
-    CamError::LawParameter { law: name.to_string(), reason }
+    CamError::LawParameter {
+        law: name.to_string(),
+        reason,
+    }
 }
 
 impl Law {
@@ -79,7 +82,10 @@ impl Law {
             LawKind::ConstAccel { u } => {
                 let u = *u;
                 if !(u > 0.0 && u < 1.0) {
-                    return Err(CamError::LawParameter { law: "const-accel".into(), reason: format!("u must lie strictly between 0 and 1, got {u}") });
+                    return Err(CamError::LawParameter {
+                        law: "const-accel".into(),
+                        reason: format!("u must lie strictly between 0 and 1, got {u}"),
+                    });
                 }
                 // areas +1 and −1: the velocity returns to zero (docs/cams.md §2)
                 Some(vec![Piece::linear(0.0, 1.0 / u, 0.0), Piece::linear(u, -1.0 / (1.0 - u), 0.0)])
@@ -109,10 +115,16 @@ impl Law {
             ]),
             LawKind::Table(v) => {
                 if v.len() < 2 {
-                    return Err(CamError::LawParameter { law: "table".into(), reason: "give at least two values of the acceleration analog".into() });
+                    return Err(CamError::LawParameter {
+                        law: "table".into(),
+                        reason: "give at least two values of the acceleration analog".into(),
+                    });
                 }
                 if v.iter().any(|a| !a.is_finite()) {
-                    return Err(CamError::LawParameter { law: "table".into(), reason: "every value must be a finite number".into() });
+                    return Err(CamError::LawParameter {
+                        law: "table".into(),
+                        reason: "every value must be a finite number".into(),
+                    });
                 }
                 let n = v.len() - 1;
                 let dx = 1.0 / n as f64;
@@ -163,7 +175,12 @@ impl Law {
             }
             LawKind::Poly345 => {
                 let (x2, x3) = (x * x, x * x * x);
-                [10.0 * x3 - 15.0 * x3 * x + 6.0 * x3 * x2, 30.0 * x2 - 60.0 * x3 + 30.0 * x2 * x2, 60.0 * x - 180.0 * x2 + 120.0 * x3, 60.0 - 360.0 * x + 360.0 * x2]
+                [
+                    10.0 * x3 - 15.0 * x3 * x + 6.0 * x3 * x2,
+                    30.0 * x2 - 60.0 * x3 + 30.0 * x2 * x2,
+                    60.0 * x - 180.0 * x2 + 120.0 * x3,
+                    60.0 - 360.0 * x + 360.0 * x2,
+                ]
             }
             LawKind::Poly4567 => {
                 let (x2, x3) = (x * x, x * x * x);
@@ -183,7 +200,10 @@ impl Law {
     /// Fractions of the phase inside which the acceleration or jerk may jump
     /// (piece joints), for the extreme searches.
     pub fn breaks(&self) -> Vec<f64> {
-        self.pieces.as_ref().map(|p| p.breaks().filter(|&x| x > 0.0).collect()).unwrap_or_default()
+        self.pieces
+            .as_ref()
+            .map(|p| p.breaks().filter(|&x| x > 0.0).collect())
+            .unwrap_or_default()
     }
 
     /// The order of continuity at a joint with a dwell: 1 — velocity continuous

@@ -47,3 +47,13 @@ pub mod sizing;
 pub mod spec;
 
 pub use error::CamError;
+
+/// `true` for a finite number above zero (NaN and infinities are not).
+///
+/// ```
+/// assert!(tmm_cams::positive(1e-300) && !tmm_cams::positive(0.0) && !tmm_cams::positive(f64::NAN));
+/// ```
+#[inline]
+pub fn positive(x: f64) -> bool {
+    x.is_finite() && x > 0.0
+}

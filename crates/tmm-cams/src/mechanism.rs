@@ -136,15 +136,27 @@ impl Mechanism {
     #[inline]
     pub fn frame_point(&self, m: &Motion) -> Jet {
         match *self {
-            Mechanism::TranslatingRoller { e, s0, .. } => {
-                Jet { p: Vec2::new(e, s0 + m.s), d1: Vec2::new(0.0, m.v), d2: Vec2::new(0.0, m.a) }
-            }
-            Mechanism::TranslatingFlat { r0, .. } => Jet { p: Vec2::new(0.0, r0 + m.s), d1: Vec2::new(0.0, m.v), d2: Vec2::new(0.0, m.a) },
-            Mechanism::OscillatingRoller { pivot, arm, psi0, kappa, .. } => {
+            Mechanism::TranslatingRoller { e, s0, .. } => Jet {
+                p: Vec2::new(e, s0 + m.s),
+                d1: Vec2::new(0.0, m.v),
+                d2: Vec2::new(0.0, m.a),
+            },
+            Mechanism::TranslatingFlat { r0, .. } => Jet {
+                p: Vec2::new(0.0, r0 + m.s),
+                d1: Vec2::new(0.0, m.v),
+                d2: Vec2::new(0.0, m.a),
+            },
+            Mechanism::OscillatingRoller {
+                pivot, arm, psi0, kappa, ..
+            } => {
                 let psi = psi0 + kappa * m.s;
                 let u = Vec2::new(psi.cos(), psi.sin());
                 let (w, dw) = (kappa * m.v, kappa * m.a);
-                Jet { p: pivot + u * arm, d1: quarter(u) * (arm * w), d2: quarter(u) * (arm * dw) - u * (arm * w * w) }
+                Jet {
+                    p: pivot + u * arm,
+                    d1: quarter(u) * (arm * w),
+                    d2: quarter(u) * (arm * dw) - u * (arm * w * w),
+                }
             }
             Mechanism::OscillatingFlat { .. } => {
                 let l = self.frame_line(m);
@@ -152,7 +164,11 @@ impl Mechanism {
                 let t = quarter(n);
                 let (a1, a2) = (l.alpha[1], l.alpha[2]);
                 // foot point F = p·n: F′ = p′n + p·α′·t, F″ = p″n + 2p′α′t + p(α″t − α′²n)
-                Jet { p: n * l.p[0], d1: n * l.p[1] + t * (l.p[0] * a1), d2: n * l.p[2] + t * (2.0 * l.p[1] * a1 + l.p[0] * a2) - n * (l.p[0] * a1 * a1) }
+                Jet {
+                    p: n * l.p[0],
+                    d1: n * l.p[1] + t * (l.p[0] * a1),
+                    d2: n * l.p[2] + t * (2.0 * l.p[1] * a1 + l.p[0] * a2) - n * (l.p[0] * a1 * a1),
+                }
             }
         }
     }
@@ -161,15 +177,24 @@ impl Mechanism {
     #[inline]
     pub fn frame_line(&self, m: &Motion) -> LineJet {
         match *self {
-            Mechanism::TranslatingFlat { r0, .. } => LineJet { alpha: [std::f64::consts::FRAC_PI_2, 0.0, 0.0], p: [r0 + m.s, m.v, m.a] },
+            Mechanism::TranslatingFlat { r0, .. } => LineJet {
+                alpha: [std::f64::consts::FRAC_PI_2, 0.0, 0.0],
+                p: [r0 + m.s, m.v, m.a],
+            },
             Mechanism::OscillatingFlat { a, delta0 } => {
                 // face through A = (a, 0) at the angle ψ = π + δ, δ = δ₀ + s;
                 // unit normal n = J·u = (sin δ, −cos δ), α = δ − π/2, p = n·A = a·sin δ
                 let d = delta0 + m.s;
                 let (sd, cd) = d.sin_cos();
-                LineJet { alpha: [d - std::f64::consts::FRAC_PI_2, m.v, m.a], p: [a * sd, a * cd * m.v, a * (cd * m.a - sd * m.v * m.v)] }
+                LineJet {
+                    alpha: [d - std::f64::consts::FRAC_PI_2, m.v, m.a],
+                    p: [a * sd, a * cd * m.v, a * (cd * m.a - sd * m.v * m.v)],
+                }
             }
-            _ => LineJet { alpha: [0.0; 3], p: [0.0; 3] },
+            _ => LineJet {
+                alpha: [0.0; 3],
+                p: [0.0; 3],
+            },
         }
     }
 
@@ -199,7 +224,9 @@ impl Mechanism {
         match *self {
             Mechanism::TranslatingRoller { e, s0, .. } => ((sigma * m.v - e).abs()).atan2(s0 + m.s),
             Mechanism::TranslatingFlat { .. } => 0.0,
-            Mechanism::OscillatingRoller { pivot, arm, psi0, kappa, .. } => {
+            Mechanism::OscillatingRoller {
+                pivot, arm, psi0, kappa, ..
+            } => {
                 let psi = psi0 + kappa * m.s;
                 let u = Vec2::new(psi.cos(), psi.sin());
                 let b = pivot + u * arm;

@@ -66,9 +66,17 @@ pub fn over_pieces(prog: &Program, scan: usize, mut f: impl FnMut(&Motion) -> f6
         cuts.push(ph.angle);
         for w in cuts.windows(2) {
             let mut g = |x: f64| f(&prog.eval_in(k, x));
-            let v = if max { maximize(&mut g, w[0], w[1], scan.max(8)).1 } else { minimize(&mut g, w[0], w[1], scan.max(8)).1 };
+            let v = if max {
+                maximize(&mut g, w[0], w[1], scan.max(8)).1
+            } else {
+                minimize(&mut g, w[0], w[1], scan.max(8)).1
+            };
             let (ga, gb) = (g(w[0]), g(w[1]));
-            best = if max { best.max(v).max(ga).max(gb) } else { best.min(v).min(ga).min(gb) };
+            best = if max {
+                best.max(v).max(ga).max(gb)
+            } else {
+                best.min(v).min(ga).min(gb)
+            };
         }
     }
     best
@@ -82,7 +90,9 @@ pub fn pressure_extremes(prog: &Program, mech: &Mechanism, sigma: f64) -> (f64, 
             continue;
         }
         let (_, m) = maximize(|x| mech.pressure_angle(&prog.eval_in(k, x), sigma), 0.0, ph.angle, 256);
-        let ends = mech.pressure_angle(&prog.eval_in(k, 0.0), sigma).max(mech.pressure_angle(&prog.eval_in(k, ph.angle), sigma));
+        let ends = mech
+            .pressure_angle(&prog.eval_in(k, 0.0), sigma)
+            .max(mech.pressure_angle(&prog.eval_in(k, ph.angle), sigma));
         let m = m.max(ends);
         if ph.kind == PhaseKind::Rise {
             rise = rise.max(m);

@@ -6,8 +6,8 @@
 //! taken with respect to the cam angle φ (kinematic analogs, аналоги скорости
 //! и ускорения).
 
-use crate::CamError;
 use crate::law::Law;
+use crate::{CamError, positive};
 use std::f64::consts::TAU;
 
 /// What the follower does during a phase.
@@ -85,7 +85,7 @@ impl Program {
     /// assert!((p.eval(d(60.0)).s - 0.0065).abs() < 1e-15);
     /// ```
     pub fn new(stroke: f64, phases: Vec<Phase>) -> Result<Self, CamError> {
-        if !(stroke > 0.0) || !stroke.is_finite() {
+        if !positive(stroke) {
             return Err(CamError::Stroke(stroke));
         }
         if phases.is_empty() {
@@ -97,19 +97,31 @@ impl Program {
         let mut top = false;
         for (i, ph) in phases.iter().enumerate() {
             let before = if top { stroke } else { 0.0 };
-            if !(ph.angle > 0.0) || !ph.angle.is_finite() {
-                return Err(CamError::Phase { text: format!("phase {} ({})", i + 1, ph.kind.name()), reason: "the phase angle must be positive".into() });
+            if !positive(ph.angle) {
+                return Err(CamError::Phase {
+                    text: format!("phase {} ({})", i + 1, ph.kind.name()),
+                    reason: "the phase angle must be positive".into(),
+                });
             }
             match ph.kind {
                 PhaseKind::Rise if top => {
-                    return Err(CamError::Sequence(format!("phase {}: a rise must start from the bottom, but the follower is already at the top", i + 1)));
+                    return Err(CamError::Sequence(format!(
+                        "phase {}: a rise must start from the bottom, but the follower is already at the top",
+                        i + 1
+                    )));
                 }
                 PhaseKind::Return if !top => {
-                    return Err(CamError::Sequence(format!("phase {}: a return must follow a rise (the follower is at the bottom)", i + 1)));
+                    return Err(CamError::Sequence(format!(
+                        "phase {}: a return must follow a rise (the follower is at the bottom)",
+                        i + 1
+                    )));
                 }
                 PhaseKind::Rise | PhaseKind::Return => {
                     if ph.law.is_none() {
-                        return Err(CamError::Phase { text: format!("phase {} ({})", i + 1, ph.kind.name()), reason: "a rise or return needs a motion law".into() });
+                        return Err(CamError::Phase {
+                            text: format!("phase {} ({})", i + 1, ph.kind.name()),
+                            reason: "a rise or return needs a motion law".into(),
+                        });
                     }
                     top = !top;
                 }
@@ -123,12 +135,19 @@ impl Program {
             return Err(CamError::PhaseSum { sum_deg: sum.to_degrees() });
         }
         if top {
-            return Err(CamError::Sequence("the cycle ends at the top: add a return so that the follower comes back to the bottom".into()));
+            return Err(CamError::Sequence(
+                "the cycle ends at the top: add a return so that the follower comes back to the bottom".into(),
+            ));
         }
         if !phases.iter().any(|p| p.kind == PhaseKind::Rise) {
             return Err(CamError::Sequence("the cycle has no rise".into()));
         }
-        Ok(Program { stroke, phases, starts, levels })
+        Ok(Program {
+            stroke,
+            phases,
+            starts,
+            levels,
+        })
     }
 
     /// The stroke h (ход толкателя): m, or rad for an oscillating follower.
@@ -179,9 +198,19 @@ impl Program {
                 let [y, y1, y2, y3] = law.eval(dphi / b);
                 let sg = if ph.kind == PhaseKind::Rise { 1.0 } else { -1.0 };
                 let s = if ph.kind == PhaseKind::Rise { h * y } else { h * (1.0 - y) };
-                Motion { s, v: sg * h * y1 / b, a: sg * h * y2 / (b * b), j: sg * h * y3 / (b * b * b) }
+                Motion {
+                    s,
+                    v: sg * h * y1 / b,
+                    a: sg * h * y2 / (b * b),
+                    j: sg * h * y3 / (b * b * b),
+                }
             }
-            _ => Motion { s: level, v: 0.0, a: 0.0, j: 0.0 },
+            _ => Motion {
+                s: level,
+                v: 0.0,
+                a: 0.0,
+                j: 0.0,
+            },
         }
     }
 

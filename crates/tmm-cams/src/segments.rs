@@ -35,7 +35,16 @@ pub struct Piece {
 impl Piece {
     /// A piece starting at `x0`: `a(t) = c0 + c1·t + a·sin(wt) + b·cos(wt)`.
     pub const fn new(x0: f64, c0: f64, c1: f64, a: f64, b: f64, w: f64) -> Self {
-        Piece { x0, c0, c1, a, b, w, v0: 0.0, y0: 0.0 }
+        Piece {
+            x0,
+            c0,
+            c1,
+            a,
+            b,
+            w,
+            v0: 0.0,
+            y0: 0.0,
+        }
     }
     /// A piece with a linear acceleration `c0 + c1·t`.
     pub const fn linear(x0: f64, c0: f64, c1: f64) -> Self {
@@ -106,7 +115,7 @@ impl Pieces {
         if abs_area > 0.0 && (v / abs_area).abs() > tol {
             return Err(ShapeError::Unbalanced { ratio: v / abs_area });
         }
-        if !(y > 0.0) || !y.is_finite() {
+        if !(y.is_finite() && y > 0.0) {
             return Err(ShapeError::NoRise);
         }
         Ok(Pieces { pieces, scale: 1.0 / y })

@@ -17,12 +17,12 @@
 //! `ρ = r₀ + s + d²s/dφ²` (Geronimus; Artobolevsky, ТММ, §26.6), so the
 //! smallest base circle is `r₀ = ρ_min − min(s + d²s/dφ²)`.
 
-use crate::CamError;
 use crate::extreme::{maximize, minimize};
 use crate::halfplane::{HalfPlane, Region, nearest_few};
 use crate::mechanism::{Mechanism, quarter};
 use crate::program::{PhaseKind, Program};
 use crate::spec::Limits;
+use crate::{CamError, positive};
 use tmm_geom::Vec2;
 
 /// Samples per phase for the extreme searches.
@@ -75,25 +75,37 @@ pub fn translating_roller(prog: &Program, sigma: f64, limits: Limits, offset: Op
     // half-planes in (x = e, y = s₀): x + t·y ≥ c₊ and −x + t·y ≥ c₋
     let mut hs: Vec<HalfPlane> = Vec::with_capacity(2 * plus.len());
     for (&(_, t, cp), &(_, _, cm)) in plus.iter().zip(&minus) {
-        hs.push(HalfPlane { n: Vec2::new(1.0, t), c: cp });
-        hs.push(HalfPlane { n: Vec2::new(-1.0, t), c: cm });
+        hs.push(HalfPlane {
+            n: Vec2::new(1.0, t),
+            c: cp,
+        });
+        hs.push(HalfPlane {
+            n: Vec2::new(-1.0, t),
+            c: cm,
+        });
     }
     let (e, s0) = match offset {
         Some(e) => {
             if !e.is_finite() {
-                return Err(CamError::Dimension { field: "offset", reason: "must be a finite length".into() });
+                return Err(CamError::Dimension {
+                    field: "offset",
+                    reason: "must be a finite length".into(),
+                });
             }
             // s₀ ≥ (c − n.x·e)/t for every half-plane
             let s0 = hs.iter().map(|h| (h.c - h.n.x * e) / h.n.y).fold(0.0f64, f64::max);
             (e, s0)
         }
         None => {
-            let p = nearest_few(&hs, Vec2::ZERO).ok_or_else(|| CamError::Infeasible("no cam centre satisfies the pressure-angle limits".into()))?;
+            let p = nearest_few(&hs, Vec2::ZERO)
+                .ok_or_else(|| CamError::Infeasible("no cam centre satisfies the pressure-angle limits".into()))?;
             (p.x, p.y)
         }
     };
-    if !(s0 > 0.0) || !s0.is_finite() {
-        return Err(CamError::Infeasible(format!("the pressure-angle limits give a degenerate cam (s₀ = {s0:e} m)")));
+    if !positive(s0) {
+        return Err(CamError::Infeasible(format!(
+            "the pressure-angle limits give a degenerate cam (s₀ = {s0:e} m)"
+        )));
     }
     Ok((e, s0))
 }
@@ -104,17 +116,33 @@ pub fn translating_roller(prog: &Program, sigma: f64, limits: Limits, offset: Op
 ///
 /// Both senses of the arm's swing relative to the cam's rotation are tried.
 /// Returns the mechanism with a zero roller radius.
-pub fn oscillating_roller(prog: &Program, sigma: f64, limits: Limits, arm: f64, pivot: Option<f64>, samples: usize) -> Result<Mechanism, CamError> {
-    if !(arm > 0.0) || !arm.is_finite() {
-        return Err(CamError::Dimension { field: "arm", reason: format!("the arm length must be positive, got {arm}") });
+pub fn oscillating_roller(
+    prog: &Program,
+    sigma: f64,
+    limits: Limits,
+    arm: f64,
+    pivot: Option<f64>,
+    samples: usize,
+) -> Result<Mechanism, CamError> {
+    if !positive(arm) {
+        return Err(CamError::Dimension {
+            field: "arm",
+            reason: format!("the arm length must be positive, got {arm}"),
+        });
     }
     if prog.stroke() >= std::f64::consts::PI {
-        return Err(CamError::Dimension { field: "stroke", reason: "an oscillating follower's stroke is an angle below 180°".into() });
+        return Err(CamError::Dimension {
+            field: "stroke",
+            reason: "an oscillating follower's stroke is an angle below 180°".into(),
+        });
     }
     if let Some(a) = pivot
-        && (!(a > 0.0) || !a.is_finite())
+        && !positive(a)
     {
-        return Err(CamError::Dimension { field: "pivot", reason: format!("the pivot distance must be positive, got {a}") });
+        return Err(CamError::Dimension {
+            field: "pivot",
+            reason: format!("the pivot distance must be positive, got {a}"),
+        });
     }
     let mut best: Option<(f64, Mechanism)> = None;
     for kappa in [1.0, -1.0] {
@@ -137,7 +165,16 @@ pub fn oscillating_roller(prog: &Program, sigma: f64, limits: Limits, arm: f64, 
         let Some(o) = o else { continue };
         let r0 = (o - b0).hypot();
         if r0 > 1e-9 * arm && best.as_ref().is_none_or(|(r, _)| r0 < *r) {
-            best = Some((r0, Mechanism::OscillatingRoller { pivot: -o, arm, psi0: 0.0, kappa, roller: 0.0 }));
+            best = Some((
+                r0,
+                Mechanism::OscillatingRoller {
+                    pivot: -o,
+                    arm,
+                    psi0: 0.0,
+                    kappa,
+                    roller: 0.0,
+                },
+            ));
         }
     }
     best.map(|(_, m)| m).ok_or_else(|| {
@@ -262,12 +299,18 @@ pub fn translating_flat(prog: &Program, rho_min: f64) -> f64 {
 /// r₀ over (0, a), the minimum of ρ over the cycle being evaluated from the
 /// envelope formula of [`crate::profile`]).
 pub fn oscillating_flat(prog: &Program, sigma: f64, a: f64, rho_min: f64) -> Result<f64, CamError> {
-    if !(a > 0.0) || !a.is_finite() {
-        return Err(CamError::Dimension { field: "pivot", reason: format!("the pivot distance must be positive, got {a}") });
+    if !positive(a) {
+        return Err(CamError::Dimension {
+            field: "pivot",
+            reason: format!("the pivot distance must be positive, got {a}"),
+        });
     }
     let h = prog.stroke();
     if h >= std::f64::consts::FRAC_PI_2 {
-        return Err(CamError::Dimension { field: "stroke", reason: "an oscillating flat face needs a swing below 90°".into() });
+        return Err(CamError::Dimension {
+            field: "stroke",
+            reason: "an oscillating flat face needs a swing below 90°".into(),
+        });
     }
     let margin = |r0: f64| -> f64 {
         let d0 = (r0 / a).asin();

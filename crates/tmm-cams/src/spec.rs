@@ -24,8 +24,13 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
         if piece.is_empty() {
             continue;
         }
-        let err = |reason: String| CamError::Phase { text: piece.to_string(), reason };
-        let (kw, rest) = piece.split_once(char::is_whitespace).ok_or_else(|| err("write KIND ANGLE [LAW], e.g. `rise 108 cosine`".into()))?;
+        let err = |reason: String| CamError::Phase {
+            text: piece.to_string(),
+            reason,
+        };
+        let (kw, rest) = piece
+            .split_once(char::is_whitespace)
+            .ok_or_else(|| err("write KIND ANGLE [LAW], e.g. `rise 108 cosine`".into()))?;
         let kind = match kw.to_ascii_lowercase().as_str() {
             "rise" | "подъем" | "подъём" => PhaseKind::Rise,
             "return" | "fall" | "опускание" => PhaseKind::Return,
@@ -38,7 +43,9 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
         } else {
             let cut = last_word_start(rest);
             if cut == 0 {
-                return Err(err(format!("give the angle and the law, e.g. `{kw} 108 cosine`; laws: {LAW_NAMES}")));
+                return Err(err(format!(
+                    "give the angle and the law, e.g. `{kw} 108 cosine`; laws: {LAW_NAMES}"
+                )));
             }
             (rest[..cut].trim(), Some(parse_law(rest[cut..].trim())?))
         };
@@ -46,7 +53,10 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
         out.push(Phase { kind, angle, law });
     }
     if out.is_empty() {
-        return Err(CamError::Phase { text: text.to_string(), reason: "no phases given".into() });
+        return Err(CamError::Phase {
+            text: text.to_string(),
+            reason: "no phases given".into(),
+        });
     }
     Ok(out)
 }
@@ -64,10 +74,13 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
     let t = text.trim();
     let (name, args) = match t.find('(') {
         Some(p) => {
-            let close = t.rfind(')').filter(|&c| c > p && c == t.len() - 1).ok_or_else(|| CamError::LawParameter {
-                law: t.to_string(),
-                reason: "the parenthesis is not closed".into(),
-            })?;
+            let close = t
+                .rfind(')')
+                .filter(|&c| c > p && c == t.len() - 1)
+                .ok_or_else(|| CamError::LawParameter {
+                    law: t.to_string(),
+                    reason: "the parenthesis is not closed".into(),
+                })?;
             (t[..p].trim(), Some(&t[p + 1..close]))
         }
         None => (t, None),
@@ -75,7 +88,10 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
     let lname = name.to_ascii_lowercase().replace('_', "-");
     let no_args = |k: LawKind| -> Result<LawKind, CamError> {
         match args {
-            Some(a) if !a.trim().is_empty() => Err(CamError::LawParameter { law: t.to_string(), reason: "this law takes no parameters".into() }),
+            Some(a) if !a.trim().is_empty() => Err(CamError::LawParameter {
+                law: t.to_string(),
+                reason: "this law takes no parameters".into(),
+            }),
             _ => Ok(k),
         }
     };
@@ -86,7 +102,10 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
                 Some(a) => {
                     let a = a.trim();
                     let v = a.strip_prefix("u").map(|r| r.trim_start().trim_start_matches('=')).unwrap_or(a);
-                    units::parse(v, Dim::Ratio).map_err(|e| CamError::LawParameter { law: t.to_string(), reason: format!("{e}; write const-accel(u=1/3)") })?
+                    units::parse(v, Dim::Ratio).map_err(|e| CamError::LawParameter {
+                        law: t.to_string(),
+                        reason: format!("{e}; write const-accel(u=1/3)"),
+                    })?
                 }
             };
             LawKind::ConstAccel { u }
@@ -105,7 +124,10 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
                 .split(|c: char| c == ',' || c.is_whitespace())
                 .filter(|w| !w.is_empty())
                 .map(|w| {
-                    units::parse(w, Dim::Ratio).map_err(|e| CamError::LawParameter { law: "table".into(), reason: format!("{e}; separate the values with commas and use a decimal point") })
+                    units::parse(w, Dim::Ratio).map_err(|e| CamError::LawParameter {
+                        law: "table".into(),
+                        reason: format!("{e}; separate the values with commas and use a decimal point"),
+                    })
                 })
                 .collect();
             LawKind::Table(vals?)
@@ -129,7 +151,10 @@ impl Limits {
     pub fn check(self) -> Result<Self, CamError> {
         for (phase, v) in [("rise", self.rise), ("return", self.ret)] {
             if !(v > 0.0 && v < std::f64::consts::FRAC_PI_2) {
-                return Err(CamError::PressureLimit { phase, deg: v.to_degrees() });
+                return Err(CamError::PressureLimit {
+                    phase,
+                    deg: v.to_degrees(),
+                });
             }
         }
         Ok(self)
@@ -147,7 +172,10 @@ impl Limits {
 /// ```
 pub fn parse_limits(text: &str, transmission: bool) -> Result<Limits, CamError> {
     let conv = |v: f64| if transmission { std::f64::consts::FRAC_PI_2 - v } else { v };
-    let bad = |reason: String| CamError::Phase { text: text.to_string(), reason };
+    let bad = |reason: String| CamError::Phase {
+        text: text.to_string(),
+        reason,
+    };
     let t = text.trim();
     let (mut rise, mut ret) = (None, None);
     if t.contains("rise") || t.contains("return") {
@@ -156,7 +184,9 @@ pub fn parse_limits(text: &str, transmission: bool) -> Result<Limits, CamError> 
             if part.is_empty() {
                 continue;
             }
-            let (k, v) = part.split_once(char::is_whitespace).ok_or_else(|| bad(format!("`{part}`: write `rise 15, return 30`")))?;
+            let (k, v) = part
+                .split_once(char::is_whitespace)
+                .ok_or_else(|| bad(format!("`{part}`: write `rise 15, return 30`")))?;
             let v = conv(units::parse(v.trim_start_matches('=').trim(), Dim::Angle).map_err(|e| bad(e.to_string()))?);
             match k {
                 "rise" => rise = Some(v),

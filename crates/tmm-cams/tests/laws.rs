@@ -143,7 +143,11 @@ fn peak_coefficients_match_closed_forms_and_nortons_table() {
         }
     }
     // Norton table 8-2, to the three decimals printed there
-    for (k, cv, ca) in [(LawKind::ModTrapezoid, 2.000, 4.888), (LawKind::ModSine, 1.760, 5.528), (LawKind::Poly4567, 2.188, 7.513)] {
+    for (k, cv, ca) in [
+        (LawKind::ModTrapezoid, 2.000, 4.888),
+        (LawKind::ModSine, 1.760, 5.528),
+        (LawKind::Poly4567, 2.188, 7.513),
+    ] {
         let (v, a, _) = peaks(&Law::new(k.clone()).unwrap());
         assert!((v - cv).abs() < 1.5e-3, "{k}: Cv {v} vs {cv}");
         assert!((a - ca).abs() < 1.5e-3, "{k}: Ca {a} vs {ca}");
@@ -157,11 +161,7 @@ fn poly4567_peak_acceleration_from_its_jerk_root() {
     let (mut lo, mut hi) = (0.0, 0.5);
     for _ in 0..200 {
         let m = 0.5 * (lo + hi);
-        if g(lo) * g(m) <= 0.0 {
-            hi = m
-        } else {
-            lo = m
-        }
+        if g(lo) * g(m) <= 0.0 { hi = m } else { lo = m }
     }
     let x = 0.5 * (lo + hi);
     let ypp = 420.0 * x.powi(2) - 1680.0 * x.powi(3) + 2100.0 * x.powi(4) - 840.0 * x.powi(5);
@@ -185,7 +185,10 @@ fn const_accel_has_the_seed_amplitude_ratio() {
 fn tables_reproduce_the_piecewise_linear_laws() {
     let pairs = [
         (LawKind::Table(vec![1.0, 0.0, -1.0]), LawKind::LinearDecreasing),
-        (LawKind::Table(vec![0.0, 1.0, 1.0, 1.0, 0.0, -1.0, -1.0, -1.0, 0.0]), LawKind::Trapezoid),
+        (
+            LawKind::Table(vec![0.0, 1.0, 1.0, 1.0, 0.0, -1.0, -1.0, -1.0, 0.0]),
+            LawKind::Trapezoid,
+        ),
     ];
     for (t, k) in pairs {
         let (a, b) = (Law::new(t).unwrap(), Law::new(k.clone()).unwrap());

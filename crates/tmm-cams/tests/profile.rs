@@ -27,17 +27,58 @@ fn task(phases: &str, h: f64, follower: FollowerSpec, rot: Rotation, limits: &st
 fn designs() -> Vec<(CamTask, CamDesign)> {
     let smooth = "rise 120 poly345; dwell 40; return 100 sine; dwell 100";
     let tasks = vec![
-        task(smooth, 0.02, FollowerSpec::TranslatingRoller { offset: None, roller: None }, Rotation::Ccw, "rise 25, return 35"),
-        task(smooth, 0.02, FollowerSpec::TranslatingRoller { offset: Some(-0.004), roller: Some(0.0) }, Rotation::Cw, "30"),
+        task(
+            smooth,
+            0.02,
+            FollowerSpec::TranslatingRoller {
+                offset: None,
+                roller: None,
+            },
+            Rotation::Ccw,
+            "rise 25, return 35",
+        ),
+        task(
+            smooth,
+            0.02,
+            FollowerSpec::TranslatingRoller {
+                offset: Some(-0.004),
+                roller: Some(0.0),
+            },
+            Rotation::Cw,
+            "30",
+        ),
         task(smooth, 0.02, FollowerSpec::TranslatingFlat { offset: 0.003 }, Rotation::Ccw, "30"),
-        task(smooth, 0.3, FollowerSpec::OscillatingRoller { arm: 0.09, pivot: None, roller: None }, Rotation::Ccw, "35"),
-        task(smooth, 0.3, FollowerSpec::OscillatingRoller { arm: 0.09, pivot: None, roller: Some(0.004) }, Rotation::Cw, "35"),
+        task(
+            smooth,
+            0.3,
+            FollowerSpec::OscillatingRoller {
+                arm: 0.09,
+                pivot: None,
+                roller: None,
+            },
+            Rotation::Ccw,
+            "35",
+        ),
+        task(
+            smooth,
+            0.3,
+            FollowerSpec::OscillatingRoller {
+                arm: 0.09,
+                pivot: None,
+                roller: Some(0.004),
+            },
+            Rotation::Cw,
+            "35",
+        ),
         task(smooth, 0.25, FollowerSpec::OscillatingFlat { pivot: 0.12 }, Rotation::Ccw, "30"),
     ];
-    tasks.into_iter().map(|t| {
-        let d = t.solve().unwrap();
-        (t, d)
-    }).collect()
+    tasks
+        .into_iter()
+        .map(|t| {
+            let d = t.solve().unwrap();
+            (t, d)
+        })
+        .collect()
 }
 
 /// Indices whose neighbours are all inside one smooth piece of the cycle
@@ -70,7 +111,11 @@ fn curvature_matches_the_parametric_formula_on_the_points() {
             // the cam-frame curve runs clockwise for a counter-clockwise cam
             let k = -sigma * k;
             let kc = d.profile.curvature[i];
-            assert!((k - kc).abs() < 2e-3 * kc.abs().max(1.0 / d.r0), "{} at {i}: {k} vs {kc}", t.follower.name());
+            assert!(
+                (k - kc).abs() < 2e-3 * kc.abs().max(1.0 / d.r0),
+                "{} at {i}: {k} vs {kc}",
+                t.follower.name()
+            );
             checked += 1;
         }
         assert!(checked > N / 2);
@@ -115,7 +160,13 @@ fn pressure_angle_recomputed_from_the_profile() {
             let b = rot(p[i], sigma * phi);
             let dir = rise_direction(&d.mechanism, b);
             let th = normal.dot(dir).abs().min(1.0).acos();
-            assert!((th - d.profile.pressure[i]).abs() < 1e-5, "{} at φ = {:.2}°: {th} vs {}", t.follower.name(), phi.to_degrees(), d.profile.pressure[i]);
+            assert!(
+                (th - d.profile.pressure[i]).abs() < 1e-5,
+                "{} at φ = {:.2}°: {th} vs {}",
+                t.follower.name(),
+                phi.to_degrees(),
+                d.profile.pressure[i]
+            );
         }
     }
 }
@@ -146,7 +197,12 @@ fn radii_and_the_roller_offset() {
     for (t, d) in designs() {
         let prof = &d.profile;
         let min_pitch = prof.pitch.iter().map(|p| p.hypot()).fold(f64::INFINITY, f64::min);
-        assert!((min_pitch - d.r0).abs() < 1e-9, "{}: r0 {} vs nearest pitch point {min_pitch}", t.follower.name(), d.r0);
+        assert!(
+            (min_pitch - d.r0).abs() < 1e-9,
+            "{}: r0 {} vs nearest pitch point {min_pitch}",
+            t.follower.name(),
+            d.r0
+        );
         let min_work = prof.working.iter().map(|p| p.hypot()).fold(f64::INFINITY, f64::min);
         assert!((min_work - d.rb).abs() < 1e-6, "{}: rb {} vs {min_work}", t.follower.name(), d.rb);
         if !d.mechanism.is_flat() {
@@ -157,7 +213,14 @@ fn radii_and_the_roller_offset() {
                 assert!(nearest > d.roller - 1e-6, "the working profile is undercut at {i}");
             }
             // the course's rule
-            assert!(d.roller <= 0.4 * d.r0 + 1e-15 || t.follower != FollowerSpec::TranslatingRoller { offset: None, roller: None });
+            assert!(
+                d.roller <= 0.4 * d.r0 + 1e-15
+                    || t.follower
+                        != FollowerSpec::TranslatingRoller {
+                            offset: None,
+                            roller: None
+                        }
+            );
         }
     }
 }

@@ -6,8 +6,8 @@ use tmm_cams::CamError;
 use tmm_cams::design::{CamTask, FollowerSpec};
 use tmm_cams::mechanism::{Mechanism, Rotation};
 use tmm_cams::program::{PhaseKind, Program};
-use tmm_cams::spec::{self, Limits};
 use tmm_cams::sizing;
+use tmm_cams::spec::{self, Limits};
 
 const SEED: &str = "rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129";
 
@@ -39,13 +39,18 @@ fn samples(p: &Program, lim: Limits, n: usize) -> Vec<(f64, f64, f64)> {
 /// contact normal joins it to the roller centre: tan ϑ = |σ·s′ − e|/(s₀ + s).
 /// The least admissible s₀ for one e is the largest of |σs′ − e|/t − s.
 fn least_s0(smp: &[(f64, f64, f64)], sigma: f64, e: f64) -> f64 {
-    smp.iter().map(|&(s, v, t)| (sigma * v - e).abs() / t - s).fold(f64::NEG_INFINITY, f64::max)
+    smp.iter()
+        .map(|&(s, v, t)| (sigma * v - e).abs() / t - s)
+        .fold(f64::NEG_INFINITY, f64::max)
 }
 
 #[test]
 fn translating_roller_optimum_beats_a_grid_of_offsets() {
     let p = program(0.013, SEED);
-    for (lim, sigma) in [(spec::parse_limits("rise 75, return 60", true).unwrap(), 1.0), (spec::parse_limits("30", false).unwrap(), -1.0)] {
+    for (lim, sigma) in [
+        (spec::parse_limits("rise 75, return 60", true).unwrap(), 1.0),
+        (spec::parse_limits("30", false).unwrap(), -1.0),
+    ] {
         let (e, s0) = sizing::translating_roller(&p, sigma, lim, None).unwrap();
         let r0 = e.hypot(s0);
         let smp = samples(&p, lim, 4000);
@@ -131,7 +136,9 @@ fn oscillating_roller_optimum_beats_a_grid_of_centres() {
     let arm = 0.1;
     let sigma = 1.0;
     let m = sizing::oscillating_roller(&p, sigma, lim, arm, None, tmm_cams::design::OSC_SAMPLES).unwrap();
-    let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else { panic!() };
+    let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else {
+        panic!()
+    };
     let o = (-pivot.x, -pivot.y);
     let r0 = (o.0 - arm).hypot(o.1);
     // brute force over both senses of the swing: a 0.5 mm grid over ±100 mm,
@@ -164,7 +171,10 @@ fn oscillating_roller_optimum_beats_a_grid_of_centres() {
     assert_eq!(kappa, best.2, "the sense of the swing");
     assert!((r0 - best.0).abs() < 5e-5, "solver r0 {r0} vs grid {}", best.0);
     // the solver's centre keeps the limits to within the sampling of the cones
-    let slack = Limits { rise: lim.rise + 1e-4, ret: lim.ret + 1e-4 };
+    let slack = Limits {
+        rise: lim.rise + 1e-4,
+        ret: lim.ret + 1e-4,
+    };
     assert!(osc_feasible(&p, slack, o, arm, kappa, sigma, 5000));
 }
 
@@ -174,7 +184,9 @@ fn oscillating_roller_with_a_given_pivot_distance() {
     let lim = spec::parse_limits("35", false).unwrap();
     let (arm, a) = (0.08, 0.1);
     let m = sizing::oscillating_roller(&p, -1.0, lim, arm, Some(a), tmm_cams::design::OSC_SAMPLES).unwrap();
-    let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else { panic!() };
+    let Mechanism::OscillatingRoller { pivot, kappa, .. } = m else {
+        panic!()
+    };
     assert!((pivot.hypot() - a).abs() < 1e-12);
     let o = (-pivot.x, -pivot.y);
     let r0 = (o.0 - arm).hypot(o.1);
@@ -220,17 +232,38 @@ fn flat_face_meets_geronimus_with_equality() {
 
 #[test]
 fn bad_inputs_are_refused() {
-    assert!(matches!(Program::new(0.01, spec::parse_phases("rise 100 sine; return 100 sine; dwell 100").unwrap()), Err(CamError::PhaseSum { .. })));
-    assert!(matches!(Program::new(0.0, spec::parse_phases("rise 180 sine; return 180 sine").unwrap()), Err(CamError::Stroke(_))));
-    assert!(matches!(Program::new(-1.0, spec::parse_phases("rise 180 sine; return 180 sine").unwrap()), Err(CamError::Stroke(_))));
+    assert!(matches!(
+        Program::new(0.01, spec::parse_phases("rise 100 sine; return 100 sine; dwell 100").unwrap()),
+        Err(CamError::PhaseSum { .. })
+    ));
+    assert!(matches!(
+        Program::new(0.0, spec::parse_phases("rise 180 sine; return 180 sine").unwrap()),
+        Err(CamError::Stroke(_))
+    ));
+    assert!(matches!(
+        Program::new(-1.0, spec::parse_phases("rise 180 sine; return 180 sine").unwrap()),
+        Err(CamError::Stroke(_))
+    ));
     assert!(matches!(spec::parse_limits("90", false), Err(CamError::PressureLimit { .. })));
-    assert!(matches!(spec::parse_limits("rise 0, return 30", true), Err(CamError::PressureLimit { .. })));
-    assert!(matches!(spec::parse_phases("rise 180 bogus; return 180 sine"), Err(CamError::UnknownLaw { .. })));
-    assert!(matches!(Program::new(0.01, spec::parse_phases("return 180 sine; rise 180 sine").unwrap()), Err(CamError::Sequence(_))));
+    assert!(matches!(
+        spec::parse_limits("rise 0, return 30", true),
+        Err(CamError::PressureLimit { .. })
+    ));
+    assert!(matches!(
+        spec::parse_phases("rise 180 bogus; return 180 sine"),
+        Err(CamError::UnknownLaw { .. })
+    ));
+    assert!(matches!(
+        Program::new(0.01, spec::parse_phases("return 180 sine; rise 180 sine").unwrap()),
+        Err(CamError::Sequence(_))
+    ));
     // a roller larger than the pitch curve's curvature
     let task = CamTask {
         program: program(0.013, SEED),
-        follower: FollowerSpec::TranslatingRoller { offset: None, roller: Some(0.05) },
+        follower: FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: Some(0.05),
+        },
         rotation: Rotation::Ccw,
         limits: spec::parse_limits("30", false).unwrap(),
         min_curvature: None,

@@ -7,7 +7,11 @@ use std::process::{Command, Output};
 const SEED_PHASES: &str = "rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129";
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm")).args(args).current_dir(env!("CARGO_MANIFEST_DIR")).output().expect("run tmm")
+    Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run tmm")
 }
 
 fn tmp(name: &str) -> PathBuf {
@@ -24,7 +28,18 @@ fn json(o: &Output) -> serde_json::Value {
 }
 
 fn seed(extra: &[&str]) -> Vec<String> {
-    let mut v: Vec<String> = ["cam", "--follower", "translating-roller", "--stroke", "13 mm", "--phases", SEED_PHASES].iter().map(|s| s.to_string()).collect();
+    let mut v: Vec<String> = [
+        "cam",
+        "--follower",
+        "translating-roller",
+        "--stroke",
+        "13 mm",
+        "--phases",
+        SEED_PHASES,
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
     v.extend(extra.iter().map(|s| s.to_string()));
     v
 }
@@ -47,9 +62,25 @@ fn seed_roller_cam_prints_tables() {
 
 #[test]
 fn json_is_one_document_with_the_promised_keys() {
-    let v = json(&run(&seed(&["--min-transmission", "rise 75, return 60", "--omega", "200 rad/s", "--json", "--points", "360"])));
+    let v = json(&run(&seed(&[
+        "--min-transmission",
+        "rise 75, return 60",
+        "--omega",
+        "200 rad/s",
+        "--json",
+        "--points",
+        "360",
+    ])));
     assert_eq!(v["units"], "SI");
-    for k in ["r0", "rb", "e", "roller_radius", "pressure_angle_max_rise", "pressure_angle_max_return", "rho_min"] {
+    for k in [
+        "r0",
+        "rb",
+        "e",
+        "roller_radius",
+        "pressure_angle_max_rise",
+        "pressure_angle_max_return",
+        "rho_min",
+    ] {
         assert!(v[k].is_number(), "{k}");
     }
     let (r0, rb, roller) = (f(&v, "r0"), f(&v, "rb"), f(&v, "roller_radius"));
@@ -62,7 +93,11 @@ fn json_is_one_document_with_the_promised_keys() {
     // r0 is the smallest radius of the pitch curve, rb of the working profile
     let (px, py) = (v["pitch_x"].as_array().unwrap(), v["pitch_y"].as_array().unwrap());
     assert_eq!(px.len(), 360);
-    let min_r = px.iter().zip(py).map(|(x, y)| x.as_f64().unwrap().hypot(y.as_f64().unwrap())).fold(f64::INFINITY, f64::min);
+    let min_r = px
+        .iter()
+        .zip(py)
+        .map(|(x, y)| x.as_f64().unwrap().hypot(y.as_f64().unwrap()))
+        .fold(f64::INFINITY, f64::min);
     assert!((min_r - r0).abs() < 1e-9);
     // v = ω·ds/dφ
     let (ds, vel) = (v["ds_dphi"].as_array().unwrap(), v["velocity"].as_array().unwrap());
@@ -83,7 +118,18 @@ fn pressure_and_transmission_limits_are_the_same_limit() {
 
 #[test]
 fn flat_face_reports_its_width() {
-    let o = tmm(&["cam", "--follower", "translating-flat", "--stroke", "13 mm", "--phases", SEED_PHASES, "--json", "--points", "64"]);
+    let o = tmm(&[
+        "cam",
+        "--follower",
+        "translating-flat",
+        "--stroke",
+        "13 mm",
+        "--phases",
+        SEED_PHASES,
+        "--json",
+        "--points",
+        "64",
+    ]);
     let v = json(&o);
     assert_eq!(f(&v, "rb"), f(&v, "r0"));
     assert!(f(&v, "face_width") > 2.0 * 0.005);
@@ -92,9 +138,37 @@ fn flat_face_reports_its_width() {
 
 #[test]
 fn oscillating_followers_run() {
-    let v = json(&tmm(&["cam", "--follower", "oscillating-roller", "--stroke", "20 deg", "--arm", "100 mm", "--phases", "rise 120 sine; dwell 30; return 120 sine; dwell 90", "--max-pressure", "35", "--json", "--points", "64"]));
+    let v = json(&tmm(&[
+        "cam",
+        "--follower",
+        "oscillating-roller",
+        "--stroke",
+        "20 deg",
+        "--arm",
+        "100 mm",
+        "--phases",
+        "rise 120 sine; dwell 30; return 120 sine; dwell 90",
+        "--max-pressure",
+        "35",
+        "--json",
+        "--points",
+        "64",
+    ]));
     assert!(f(&v, "pivot_distance") > 0.0);
-    let v = json(&tmm(&["cam", "--follower", "oscillating-flat", "--stroke", "15 deg", "--pivot", "120 mm", "--phases", "rise 120 poly345; dwell 30; return 120 poly345; dwell 90", "--json", "--points", "64"]));
+    let v = json(&tmm(&[
+        "cam",
+        "--follower",
+        "oscillating-flat",
+        "--stroke",
+        "15 deg",
+        "--pivot",
+        "120 mm",
+        "--phases",
+        "rise 120 poly345; dwell 30; return 120 poly345; dwell 90",
+        "--json",
+        "--points",
+        "64",
+    ]));
     assert!(f(&v, "face_width") > 0.0);
 }
 
@@ -103,7 +177,18 @@ fn drawings_dxf_and_csv_are_written() {
     let d = tmp("files");
     let dxf = d.join("profile.dxf");
     let csv = d.join("profile.csv");
-    let o = run(&seed(&["--max-pressure", "rise 15, return 30", "--points", "100", "--svg", d.to_str().unwrap(), "--dxf", dxf.to_str().unwrap(), "--csv", csv.to_str().unwrap()]));
+    let o = run(&seed(&[
+        "--max-pressure",
+        "rise 15, return 30",
+        "--points",
+        "100",
+        "--svg",
+        d.to_str().unwrap(),
+        "--dxf",
+        dxf.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]));
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for n in ["cam.svg", "cam-analogs.svg", "cam-motion.svg", "cam-pressure.svg", "cam-sizing.svg"] {
         let s = std::fs::read_to_string(d.join(n)).unwrap();
@@ -111,7 +196,11 @@ fn drawings_dxf_and_csv_are_written() {
     }
     let c = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(c.lines().count(), 101);
-    assert!(c.lines().skip(1).all(|l| l.split(',').count() == 7 && l.split(',').all(|x| x.parse::<f64>().is_ok())));
+    assert!(
+        c.lines()
+            .skip(1)
+            .all(|l| l.split(',').count() == 7 && l.split(',').all(|x| x.parse::<f64>().is_ok()))
+    );
     let x = std::fs::read_to_string(&dxf).unwrap();
     assert!(x.contains("LWPOLYLINE") && x.contains("PROFILE"));
     let _ = std::fs::remove_dir_all(&d);
@@ -119,7 +208,13 @@ fn drawings_dxf_and_csv_are_written() {
 
 fn fails_naming(args: &[String], what: &[&str]) {
     let o = run(args);
-    assert_eq!(o.status.code(), Some(2), "stdout {} stderr {}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "stdout {} stderr {}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
     let e = String::from_utf8_lossy(&o.stderr);
     for w in what {
         assert!(e.contains(w), "`{w}` not in: {e}");
@@ -130,21 +225,52 @@ fn fails_naming(args: &[String], what: &[&str]) {
 #[test]
 fn bad_inputs_exit_2_and_name_the_option() {
     let p = |ph: &str, extra: &[&str]| {
-        let mut v: Vec<String> = ["cam", "--follower", "translating-roller", "--stroke", "13 mm", "--phases", ph].iter().map(|s| s.to_string()).collect();
+        let mut v: Vec<String> = ["cam", "--follower", "translating-roller", "--stroke", "13 mm", "--phases", ph]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
         v.extend(extra.iter().map(|s| s.to_string()));
         v
     };
-    fails_naming(&p("rise 108 cosine; dwell 15; return 108 cosine; dwell 100", &["--max-pressure", "30"]), &["--phases", "360"]);
-    fails_naming(&p("rise 108 wobble; dwell 15; return 108 cosine; dwell 129", &["--max-pressure", "30"]), &["--phases", "unknown motion law", "wobble"]);
+    fails_naming(
+        &p("rise 108 cosine; dwell 15; return 108 cosine; dwell 100", &["--max-pressure", "30"]),
+        &["--phases", "360"],
+    );
+    fails_naming(
+        &p("rise 108 wobble; dwell 15; return 108 cosine; dwell 129", &["--max-pressure", "30"]),
+        &["--phases", "unknown motion law", "wobble"],
+    );
     fails_naming(&seed(&["--max-pressure", "90"]), &["--max-pressure", "90"]);
     fails_naming(&seed(&["--min-transmission", "rise 0, return 60"]), &["--min-transmission"]);
     fails_naming(&seed(&["--max-pressure", "30", "--roller", "40 mm"]), &["--roller", "undercut"]);
     fails_naming(&seed(&["--max-pressure", "30", "--roller", "3 kg"]), &["--roller"]);
     fails_naming(&seed(&["--max-pressure", "30", "--rotation", "sideways"]), &["--rotation"]);
     fails_naming(&seed(&[]), &["--max-pressure"]);
-    let zero = ["cam", "--follower", "translating-roller", "--stroke", "0 mm", "--phases", SEED_PHASES, "--max-pressure", "30"].map(String::from);
+    let zero = [
+        "cam",
+        "--follower",
+        "translating-roller",
+        "--stroke",
+        "0 mm",
+        "--phases",
+        SEED_PHASES,
+        "--max-pressure",
+        "30",
+    ]
+    .map(String::from);
     fails_naming(&zero, &["--stroke"]);
-    let neg = ["cam", "--follower", "translating-roller", "--stroke", "-5 mm", "--phases", SEED_PHASES, "--max-pressure", "30"].map(String::from);
+    let neg = [
+        "cam",
+        "--follower",
+        "translating-roller",
+        "--stroke",
+        "-5 mm",
+        "--phases",
+        SEED_PHASES,
+        "--max-pressure",
+        "30",
+    ]
+    .map(String::from);
     fails_naming(&neg, &["--stroke"]);
     let kind = ["cam", "--follower", "wobbly", "--stroke", "5 mm", "--phases", SEED_PHASES].map(String::from);
     fails_naming(&kind, &["--follower", "translating-roller"]);

@@ -1,6 +1,9 @@
 //! `tmm cam`: a cam mechanism from a compact command line (or the `[cam]`
 //! section of a task file): motion law, smallest size, profile, drawings.
 
+// The shared `Error` is large by design (it carries the task file for located messages).
+#![allow(clippy::result_large_err)]
+
 use std::path::PathBuf;
 
 use tmm_report::cam::input::{self, Field, Raw};
@@ -12,7 +15,9 @@ use super::common::{print_json, read_task};
 
 /// Arguments of `tmm cam`.
 #[derive(clap::Args)]
-#[command(after_help = "Example (seed 001, MADI variant 17):\n  tmm cam --follower translating-roller --stroke \"13 mm\" \\\n    --phases \"rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129\" \\\n    --min-transmission \"rise 75, return 60\" --omega \"200 rad/s\" --svg out/\nLaws: const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …)")]
+#[command(
+    after_help = "Example (seed 001, MADI variant 17):\n  tmm cam --follower translating-roller --stroke \"13 mm\" \\\n    --phases \"rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129\" \\\n    --min-transmission \"rise 75, return 60\" --omega \"200 rad/s\" --svg out/\nLaws: const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …)"
+)]
 pub struct Args {
     /// A task file whose [cam] section to run (instead of the options below)
     pub file: Option<PathBuf>,
@@ -80,7 +85,11 @@ impl Args {
         let t = |s: &Option<String>| s.as_ref().map(|v| RawQty::Text(v.clone()));
         let points = match &self.points {
             None => None,
-            Some(p) => Some(p.trim().parse::<i64>().map_err(|_| Error::input("--points", format!("`{p}` is not a whole number")).with_help("e.g. --points 3600"))?),
+            Some(p) => Some(
+                p.trim()
+                    .parse::<i64>()
+                    .map_err(|_| Error::input("--points", format!("`{p}` is not a whole number")).with_help("e.g. --points 3600"))?,
+            ),
         };
         Ok(Raw {
             follower: self.follower.clone(),
@@ -125,15 +134,21 @@ impl Args {
 
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
-    let targets = Targets { svg_dir: a.svg.clone(), dxf: a.dxf.clone(), csv: a.csv.clone() };
+    let targets = Targets {
+        svg_dir: a.svg.clone(),
+        dxf: a.dxf.clone(),
+        csv: a.csv.clone(),
+    };
     let (task, design) = match &a.file {
         Some(path) => {
             if let Some(opt) = a.any_task_option() {
-                return Err(Error::input(opt, "cannot be combined with a task file").with_help("give either a task file with a [cam] section or the options"));
+                return Err(Error::input(opt, "cannot be combined with a task file")
+                    .with_help("give either a task file with a [cam] section or the options"));
             }
             let src: TaskSource = read_task(path)?;
             let Some((sec, span)) = input::read_section(&src)? else {
-                return Err(Error::input(&src.name, "the task file has no [cam] section").with_help("add a [cam] section (see `tmm run --print-default`) or give the options"));
+                return Err(Error::input(&src.name, "the task file has no [cam] section")
+                    .with_help("add a [cam] section (see `tmm run --print-default`) or give the options"));
             };
             let loc = input::file_locator(&src, &sec, span);
             let task = input::build(&sec.raw(), &loc)?;

@@ -38,9 +38,42 @@ pub fn analogs(task: &CamTask, d: &CamDesign) -> String {
     let (w, h) = (200.0, 80.0);
     stack(
         &[
-            plot("Displacement s(φ)", "cam angle φ, deg", &format!("s, {u}"), &[Series { name: "s", points: &s, color: "#1f4e9c" }], w, h),
-            plot("Velocity analog ds/dφ", "cam angle φ, deg", &format!("ds/dφ, {u}"), &[Series { name: "ds/dφ", points: &v, color: "#2e7d32" }], w, h),
-            plot("Acceleration analog d²s/dφ²", "cam angle φ, deg", &format!("d²s/dφ², {u}"), &[Series { name: "d²s/dφ²", points: &a, color: "#c62828" }], w, h),
+            plot(
+                "Displacement s(φ)",
+                "cam angle φ, deg",
+                &format!("s, {u}"),
+                &[Series {
+                    name: "s",
+                    points: &s,
+                    color: "#1f4e9c",
+                }],
+                w,
+                h,
+            ),
+            plot(
+                "Velocity analog ds/dφ",
+                "cam angle φ, deg",
+                &format!("ds/dφ, {u}"),
+                &[Series {
+                    name: "ds/dφ",
+                    points: &v,
+                    color: "#2e7d32",
+                }],
+                w,
+                h,
+            ),
+            plot(
+                "Acceleration analog d²s/dφ²",
+                "cam angle φ, deg",
+                &format!("d²s/dφ², {u}"),
+                &[Series {
+                    name: "d²s/dφ²",
+                    points: &a,
+                    color: "#c62828",
+                }],
+                w,
+                h,
+            ),
         ],
         w,
         h,
@@ -57,14 +90,62 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
     let v = pts(&|i| p.motion[i].v * w);
     let a = pts(&|i| p.motion[i].a * w * w);
     let j = pts(&|i| p.motion[i].j * w * w * w);
-    let (su, vu, au, ju) = if osc { ("rad", "rad/s", "rad/s²", "rad/s³") } else { ("mm", "m/s", "m/s²", "m/s³") };
+    let (su, vu, au, ju) = if osc {
+        ("rad", "rad/s", "rad/s²", "rad/s³")
+    } else {
+        ("mm", "m/s", "m/s²", "m/s³")
+    };
     let (pw, ph) = (200.0, 70.0);
     stack(
         &[
-            plot("Follower displacement", "time t, ms", &format!("s, {su}"), &[Series { name: "s", points: &s, color: "#1f4e9c" }], pw, ph),
-            plot("Follower velocity", "time t, ms", &format!("v, {vu}"), &[Series { name: "v", points: &v, color: "#2e7d32" }], pw, ph),
-            plot("Follower acceleration", "time t, ms", &format!("a, {au}"), &[Series { name: "a", points: &a, color: "#c62828" }], pw, ph),
-            plot("Follower jerk", "time t, ms", &format!("j, {ju}"), &[Series { name: "j", points: &j, color: "#6a1b9a" }], pw, ph),
+            plot(
+                "Follower displacement",
+                "time t, ms",
+                &format!("s, {su}"),
+                &[Series {
+                    name: "s",
+                    points: &s,
+                    color: "#1f4e9c",
+                }],
+                pw,
+                ph,
+            ),
+            plot(
+                "Follower velocity",
+                "time t, ms",
+                &format!("v, {vu}"),
+                &[Series {
+                    name: "v",
+                    points: &v,
+                    color: "#2e7d32",
+                }],
+                pw,
+                ph,
+            ),
+            plot(
+                "Follower acceleration",
+                "time t, ms",
+                &format!("a, {au}"),
+                &[Series {
+                    name: "a",
+                    points: &a,
+                    color: "#c62828",
+                }],
+                pw,
+                ph,
+            ),
+            plot(
+                "Follower jerk",
+                "time t, ms",
+                &format!("j, {ju}"),
+                &[Series {
+                    name: "j",
+                    points: &j,
+                    color: "#6a1b9a",
+                }],
+                pw,
+                ph,
+            ),
         ],
         pw,
         ph,
@@ -74,13 +155,27 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
 /// Pressure angle over the cycle with the limits.
 pub fn pressure(task: &CamTask, d: &CamDesign) -> String {
     let p = &d.profile;
-    let th: Vec<(f64, f64)> = (0..p.phi.len()).map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees())).collect();
+    let th: Vec<(f64, f64)> = (0..p.phi.len())
+        .map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees()))
+        .collect();
     let lr = [(0.0, task.limits.rise.to_degrees()), (360.0, task.limits.rise.to_degrees())];
     let lt = [(0.0, task.limits.ret.to_degrees()), (360.0, task.limits.ret.to_degrees())];
-    let mut series = vec![Series { name: "ϑ", points: &th, color: "#1f4e9c" }];
+    let mut series = vec![Series {
+        name: "ϑ",
+        points: &th,
+        color: "#1f4e9c",
+    }];
     if !d.mechanism.is_flat() {
-        series.push(Series { name: "allowed, rise", points: &lr, color: "#c62828" });
-        series.push(Series { name: "allowed, return", points: &lt, color: "#ef6c00" });
+        series.push(Series {
+            name: "allowed, rise",
+            points: &lr,
+            color: "#c62828",
+        });
+        series.push(Series {
+            name: "allowed, return",
+            points: &lt,
+            color: "#ef6c00",
+        });
     }
     plot("Pressure angle over the cycle", "cam angle φ, deg", "ϑ, deg", &series, 200.0, 90.0)
 }
@@ -94,14 +189,28 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
     let prog = &task.program;
     let n = d.profile.phi.len();
     let mut c = Canvas::new(200.0, 200.0);
-    let region_style = Style { width: 0.2, color: "#2e7d32", dash: None, fill: Some("#c8e6c9") };
-    let (curve, region, centre, b0, title): (Vec<(f64, f64)>, Option<Region>, (f64, f64), (f64, f64), &str) = match d.mechanism {
+    let region_style = Style {
+        width: 0.2,
+        color: "#2e7d32",
+        dash: None,
+        fill: Some("#c8e6c9"),
+    };
+    type Pt = (f64, f64);
+    let (curve, region, centre, b0, title): (Vec<Pt>, Option<Region>, Pt, Pt, &str) = match d.mechanism {
         Mechanism::TranslatingRoller { e, s0, .. } => {
-            let curve = (0..n).map(|i| (-sigma * d.profile.motion[i].v * 1e3, d.profile.motion[i].s * 1e3)).collect();
+            let curve = (0..n)
+                .map(|i| (-sigma * d.profile.motion[i].v * 1e3, d.profile.motion[i].s * 1e3))
+                .collect();
             let size = 4.0 * d.r0.max(prog.stroke());
             let region = sizing::translating_region(prog, sigma, task.limits, size);
             let region = Region::from_vertices(region.vertices.iter().map(|v| *v * 1e3).collect());
-            (curve, Some(region), (-e * 1e3, -s0 * 1e3), (0.0, 0.0), "s–ds/dφ diagram: admissible region of the cam centre")
+            (
+                curve,
+                Some(region),
+                (-e * 1e3, -s0 * 1e3),
+                (0.0, 0.0),
+                "s–ds/dφ diagram: admissible region of the cam centre",
+            )
         }
         Mechanism::OscillatingRoller { pivot, arm, kappa, .. } => {
             // frame of the construction: pivot at the origin, B₀ = (l, 0)
@@ -116,12 +225,24 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
                 .collect();
             let region = sizing::oscillating_region(prog, sigma, task.limits, arm, kappa, 360);
             let region = Region::from_vertices(region.vertices.iter().map(|v| *v * 1e3).collect());
-            (curve, Some(region), (-pivot.x * 1e3, -pivot.y * 1e3), (arm * 1e3, 0.0), "Points K (arm ψ′ laid off along the arm) and the admissible region of the cam centre")
+            (
+                curve,
+                Some(region),
+                (-pivot.x * 1e3, -pivot.y * 1e3),
+                (arm * 1e3, 0.0),
+                "Points K (arm ψ′ laid off along the arm) and the admissible region of the cam centre",
+            )
         }
         _ => {
             // Geronimus: s against d²s/dφ², r₀ read on the s axis
             let curve = (0..n).map(|i| (d.profile.motion[i].a * 1e3, d.profile.motion[i].s * 1e3)).collect();
-            (curve, None, (0.0, -d.r0 * 1e3), (0.0, 0.0), "Geronimus' diagram s(d²s/dφ²): base circle from convexity")
+            (
+                curve,
+                None,
+                (0.0, -d.r0 * 1e3),
+                (0.0, 0.0),
+                "Geronimus' diagram s(d²s/dφ²): base circle from convexity",
+            )
         }
     };
     // world box: the curve, the centre and B₀, with a margin
@@ -155,8 +276,16 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
             }
         }
         // clip the region to the view
-        for (nx, ny, cc) in [(1.0, 0.0, world.0), (-1.0, 0.0, -world.1), (0.0, 1.0, world.2), (0.0, -1.0, -world.3)] {
-            r.clip(tmm_cams::halfplane::HalfPlane { n: Vec2::new(nx, ny), c: cc });
+        for (nx, ny, cc) in [
+            (1.0, 0.0, world.0),
+            (-1.0, 0.0, -world.1),
+            (0.0, 1.0, world.2),
+            (0.0, -1.0, -world.3),
+        ] {
+            r.clip(tmm_cams::halfplane::HalfPlane {
+                n: Vec2::new(nx, ny),
+                c: cc,
+            });
         }
         let pts: Vec<(f64, f64)> = r.vertices.iter().map(|v| (v.x, v.y)).collect();
         c.polygon(&pts, region_style);
@@ -264,7 +393,9 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
             c.line((x - hw, y), (x + hw, y), follower);
             c.line((x, y), (x, y + 2.5 * task.program.stroke() * 1e3), follower);
         }
-        Mechanism::OscillatingRoller { pivot, arm, psi0, roller, .. } => {
+        Mechanism::OscillatingRoller {
+            pivot, arm, psi0, roller, ..
+        } => {
             let a = (pivot.x * 1e3, pivot.y * 1e3);
             let b = pivot + Vec2::new(psi0.cos(), psi0.sin()) * arm;
             let b = (b.x * 1e3, b.y * 1e3);
@@ -287,7 +418,14 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
     }
     c.text_paper(
         (105.0, 222.0),
-        &format!("{} follower: r0 = {:.3} mm, rb = {:.3} mm, roller {:.3} mm, ρmin = {:.3} mm", task.follower.name(), d.r0 * 1e3, d.rb * 1e3, d.roller * 1e3, d.rho_min * 1e3),
+        &format!(
+            "{} follower: r0 = {:.3} mm, rb = {:.3} mm, roller {:.3} mm, ρmin = {:.3} mm",
+            task.follower.name(),
+            d.r0 * 1e3,
+            d.rb * 1e3,
+            d.roller * 1e3,
+            d.rho_min * 1e3
+        ),
         3.2,
         Anchor::Middle,
         "#000",

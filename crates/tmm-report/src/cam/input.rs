@@ -256,23 +256,38 @@ fn limits_of(raw: &RawQty, transmission: bool, f: Field, loc: &Locate<'_>) -> Re
         let what = if transmission { "transmission" } else { "pressure" };
         let msg = match e {
             CamError::PressureLimit { phase, deg } if transmission => {
-                format!("the allowed transmission angle on the {phase} must lie strictly between 0° and 90°, got {:.3}°", 90.0 - deg)
+                format!(
+                    "the allowed transmission angle on the {phase} must lie strictly between 0° and 90°, got {:.3}°",
+                    90.0 - deg
+                )
             }
             e => e.to_string(),
         };
-        loc(f, msg).with_help(format!("write the allowed {what} angles as \"rise 15, return 30\" or one value for both, in degrees below 90"))
+        loc(f, msg).with_help(format!(
+            "write the allowed {what} angles as \"rise 15, return 30\" or one value for both, in degrees below 90"
+        ))
     })
 }
 
 /// Build the cam task from the inputs; every error is located by `loc`.
 pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
-    let follower_name = raw.follower.as_deref().ok_or_else(|| loc(Field::Follower, "the follower kind is missing".into()).with_help(format!("one of {FOLLOWERS}")))?;
+    let follower_name = raw
+        .follower
+        .as_deref()
+        .ok_or_else(|| loc(Field::Follower, "the follower kind is missing".into()).with_help(format!("one of {FOLLOWERS}")))?;
     let oscillating = follower_name.starts_with("oscillating");
     let stroke_dim = if oscillating { Dim::Angle } else { Dim::Length };
     let stroke = quantity(&raw.stroke, stroke_dim, Field::Stroke, loc)?.ok_or_else(|| {
-        loc(Field::Stroke, "the stroke is missing".into()).with_help(if oscillating { "the swing angle, e.g. \"20 deg\"" } else { "a length, e.g. \"13 mm\"" })
+        loc(Field::Stroke, "the stroke is missing".into()).with_help(if oscillating {
+            "the swing angle, e.g. \"20 deg\""
+        } else {
+            "a length, e.g. \"13 mm\""
+        })
     })?;
-    let phases_text = raw.phases.as_deref().ok_or_else(|| loc(Field::Phases, "the phase list is missing".into()).with_help(PHASES_HELP))?;
+    let phases_text = raw
+        .phases
+        .as_deref()
+        .ok_or_else(|| loc(Field::Phases, "the phase list is missing".into()).with_help(PHASES_HELP))?;
     let phases = spec::parse_phases(phases_text).map_err(|e| cam_error(e, loc))?;
     let program = Program::new(stroke, phases).map_err(|e| cam_error(e, loc))?;
     let len = |r: &Option<RawQty>, f: Field| quantity(r, Dim::Length, f, loc);
@@ -286,14 +301,19 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
     let min_curvature = len(&raw.min_curvature, Field::MinCurvature)?;
     let face_margin = len(&raw.face_margin, Field::FaceMargin)?.unwrap_or(0.005);
     let omega = quantity(&raw.omega, Dim::AngularVelocity, Field::Omega, loc)?.unwrap_or(1.0);
-    if !(omega > 0.0) {
-        return Err(loc(Field::Omega, format!("the cam speed must be positive, got {omega} rad/s")).with_help("e.g. \"200 rad/s\" or \"1910 rpm\"; the sense of rotation is --rotation"));
+    if !tmm_cams::positive(omega) {
+        return Err(loc(Field::Omega, format!("the cam speed must be positive, got {omega} rad/s"))
+            .with_help("e.g. \"200 rad/s\" or \"1910 rpm\"; the sense of rotation is --rotation"));
     }
     let rotation = match raw.rotation.as_deref().map(|s| s.trim().to_ascii_lowercase()) {
         None => Rotation::Ccw,
         Some(s) if s == "ccw" || s == "counter-clockwise" || s == "counterclockwise" => Rotation::Ccw,
         Some(s) if s == "cw" || s == "clockwise" => Rotation::Cw,
-        Some(s) => return Err(loc(Field::Rotation, format!("`{s}` is not a sense of rotation")).with_help("ccw (counter-clockwise, the default) or cw")),
+        Some(s) => {
+            return Err(
+                loc(Field::Rotation, format!("`{s}` is not a sense of rotation")).with_help("ccw (counter-clockwise, the default) or cw")
+            );
+        }
     };
     let points = match raw.points {
         None => 720,
@@ -308,7 +328,13 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
         }
     };
     let need_arm = |f: Option<f64>, field: Field| {
-        f.ok_or_else(|| loc(field, format!("a {follower_name} follower needs it")).with_help(if field == Field::Arm { "the arm length, e.g. \"100 mm\"" } else { "the pivot distance OA, e.g. \"120 mm\"" }))
+        f.ok_or_else(|| {
+            loc(field, format!("a {follower_name} follower needs it")).with_help(if field == Field::Arm {
+                "the arm length, e.g. \"100 mm\""
+            } else {
+                "the pivot distance OA, e.g. \"120 mm\""
+            })
+        })
     };
     let follower = match follower_name {
         "translating-roller" | "knife-edge" | "translating-knife" => {
@@ -321,34 +347,61 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
             not_for(Field::Roller, roller.is_some())?;
             not_for(Field::Arm, arm.is_some())?;
             not_for(Field::Pivot, pivot.is_some())?;
-            FollowerSpec::TranslatingFlat { offset: offset.unwrap_or(0.0) }
+            FollowerSpec::TranslatingFlat {
+                offset: offset.unwrap_or(0.0),
+            }
         }
         "oscillating-roller" => {
             not_for(Field::Offset, offset.is_some())?;
-            FollowerSpec::OscillatingRoller { arm: need_arm(arm, Field::Arm)?, pivot, roller }
+            FollowerSpec::OscillatingRoller {
+                arm: need_arm(arm, Field::Arm)?,
+                pivot,
+                roller,
+            }
         }
         "oscillating-flat" => {
             not_for(Field::Offset, offset.is_some())?;
             not_for(Field::Roller, roller.is_some())?;
             not_for(Field::Arm, arm.is_some())?;
-            FollowerSpec::OscillatingFlat { pivot: need_arm(pivot, Field::Pivot)? }
+            FollowerSpec::OscillatingFlat {
+                pivot: need_arm(pivot, Field::Pivot)?,
+            }
         }
         other => return Err(loc(Field::Follower, format!("`{other}` is not a follower kind")).with_help(format!("one of {FOLLOWERS}"))),
     };
-    let flat = matches!(follower, FollowerSpec::TranslatingFlat { .. } | FollowerSpec::OscillatingFlat { .. });
+    let flat = matches!(
+        follower,
+        FollowerSpec::TranslatingFlat { .. } | FollowerSpec::OscillatingFlat { .. }
+    );
     let limits = match (&raw.max_pressure, &raw.min_transmission) {
         (Some(_), Some(_)) => {
-            return Err(loc(Field::MinTransmission, "give either the pressure limit or the transmission limit, not both".into()).with_help("γ = 90° − ϑ: they are the same limit"));
+            return Err(loc(
+                Field::MinTransmission,
+                "give either the pressure limit or the transmission limit, not both".into(),
+            )
+            .with_help("γ = 90° − ϑ: they are the same limit"));
         }
         (Some(p), None) => limits_of(p, false, Field::MaxPressure, loc)?,
         (None, Some(t)) => limits_of(t, true, Field::MinTransmission, loc)?,
-        (None, None) if flat => Limits { rise: 89f64.to_radians(), ret: 89f64.to_radians() },
+        (None, None) if flat => Limits {
+            rise: 89f64.to_radians(),
+            ret: 89f64.to_radians(),
+        },
         (None, None) => {
             return Err(loc(Field::MaxPressure, "a roller follower needs the allowed pressure angles".into())
                 .with_help("e.g. max_pressure = \"rise 30, return 45\" (--max-pressure) or min_transmission = \"rise 75, return 60\" (--min-transmission)"));
         }
     };
-    Ok(CamTask { program, follower, rotation, limits, min_curvature, face_margin, omega, points })
+    Ok(CamTask {
+        program,
+        follower,
+        rotation,
+        limits,
+        min_curvature,
+        face_margin,
+        omega,
+        points,
+    })
 }
 
 /// Help for the phase list.
@@ -359,7 +412,9 @@ pub fn cam_error(e: CamError, loc: &Locate<'_>) -> Error {
     let msg = e.to_string();
     match &e {
         CamError::Phase { .. } | CamError::Sequence(_) => loc(Field::Phases, msg).with_help(PHASES_HELP),
-        CamError::UnknownLaw { .. } | CamError::LawParameter { .. } => loc(Field::Phases, msg).with_help(format!("the laws are {LAW_NAMES}")),
+        CamError::UnknownLaw { .. } | CamError::LawParameter { .. } => {
+            loc(Field::Phases, msg).with_help(format!("the laws are {LAW_NAMES}"))
+        }
         CamError::PhaseSum { sum_deg } => {
             let gap = 360.0 - sum_deg;
             loc(Field::Phases, msg).with_help(if gap > 0.0 {
@@ -368,7 +423,8 @@ pub fn cam_error(e: CamError, loc: &Locate<'_>) -> Error {
                 format!("remove {:.4}° from the phases", -gap)
             })
         }
-        CamError::Stroke(_) => loc(Field::Stroke, msg).with_help("a positive length such as \"13 mm\" (an angle such as \"20 deg\" for an oscillating follower)"),
+        CamError::Stroke(_) => loc(Field::Stroke, msg)
+            .with_help("a positive length such as \"13 mm\" (an angle such as \"20 deg\" for an oscillating follower)"),
         CamError::PressureLimit { .. } => loc(Field::MaxPressure, msg).with_help("e.g. \"rise 30, return 45\""),
         CamError::Dimension { field, .. } => {
             let f = match *field {
@@ -385,7 +441,9 @@ pub fn cam_error(e: CamError, loc: &Locate<'_>) -> Error {
             };
             loc(f, msg)
         }
-        CamError::RollerTooLarge { allowed_mm, .. } => loc(Field::Roller, msg).with_help(format!("take a roller radius below {allowed_mm:.3} mm, or omit it to get the course's rule")),
+        CamError::RollerTooLarge { allowed_mm, .. } => loc(Field::Roller, msg).with_help(format!(
+            "take a roller radius below {allowed_mm:.3} mm, or omit it to get the course's rule"
+        )),
         CamError::Infeasible(_) => loc(Field::Section, msg),
     }
 }

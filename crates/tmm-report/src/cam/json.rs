@@ -83,7 +83,9 @@ pub fn document(task: &CamTask, d: &CamDesign) -> Value {
         m.insert("face_margin".into(), num(task.face_margin));
     }
     match d.mechanism {
-        Mechanism::OscillatingRoller { pivot, arm, psi0, kappa, .. } => {
+        Mechanism::OscillatingRoller {
+            pivot, arm, psi0, kappa, ..
+        } => {
             m.insert("pivot".into(), json!([num(pivot.x), num(pivot.y)]));
             m.insert("pivot_distance".into(), num(pivot.hypot()));
             m.insert("arm".into(), num(arm));

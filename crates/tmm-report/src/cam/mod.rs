@@ -10,6 +10,10 @@
 //! | [`draw`] | SVG: diagrams, sizing diagram, the cam and follower |
 //! | [`cad`] | DXF and CSV of the working profile |
 
+// The shared `Error` carries the source text for located messages; it is
+// large by design and returned only on the cold path.
+#![allow(clippy::result_large_err)]
+
 pub mod cad;
 pub mod draw;
 pub mod input;
@@ -74,12 +78,21 @@ pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput
     let cam = input::build(&sec.raw(), &loc)?;
     let d = solve(&cam, &loc)?;
     let dir = out.join("cam");
-    let targets = Targets { svg_dir: Some(dir.clone()), dxf: Some(dir.join("cam-profile.dxf")), csv: Some(dir.join("cam-profile.csv")) };
+    let targets = Targets {
+        svg_dir: Some(dir.clone()),
+        dxf: Some(dir.join("cam-profile.dxf")),
+        csv: Some(dir.join("cam-profile.csv")),
+    };
     let mut files = write_outputs(&cam, &d, &targets)?;
     let json = json::document(&cam, &d);
     let text = text::tables(&cam, &d, 15);
     let body = serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?;
     write_file(&dir.join("cam.json"), &body, &mut files)?;
     write_file(&dir.join("cam.txt"), &text, &mut files)?;
-    Ok(Some(SectionOutput { section: "cam", text, json, files }))
+    Ok(Some(SectionOutput {
+        section: "cam",
+        text,
+        json,
+        files,
+    }))
 }
