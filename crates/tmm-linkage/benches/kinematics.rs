@@ -15,9 +15,22 @@ fn main() {
 fn fourbar() -> Mechanism {
     Mechanism::new(&MechanismDef {
         fixed: vec![("A".into(), Vec2::new(0.0, 0.0)), ("D".into(), Vec2::new(0.51, 0.0))],
-        links: vec![LinkDef::bar("1", "A", "B", 0.12), LinkDef::bar("2", "B", "C", 0.48), LinkDef::bar("3", "D", "C", 0.38)],
-        input: Some(InputDef { link: "1".into(), pivot: "A".into(), pin: "B".into(), omega: 94.25, epsilon: 0.0 }),
-        hints: vec![AssemblyHint { point: "C".into(), kind: HintKind::Below("A".into(), "D".into()) }],
+        links: vec![
+            LinkDef::bar("1", "A", "B", 0.12),
+            LinkDef::bar("2", "B", "C", 0.48),
+            LinkDef::bar("3", "D", "C", 0.38),
+        ],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "A".into(),
+            pin: "B".into(),
+            omega: 94.25,
+            epsilon: 0.0,
+        }),
+        hints: vec![AssemblyHint {
+            point: "C".into(),
+            kind: HintKind::Below("A".into(), "D".into()),
+        }],
         ..Default::default()
     })
     .unwrap()
@@ -28,10 +41,38 @@ fn sixbar() -> Mechanism {
     rocker.points.push(("C".into(), Vec2::new(-0.6, 0.0)));
     Mechanism::new(&MechanismDef {
         fixed: vec![("O".into(), Vec2::new(-1.25, 0.0)), ("E".into(), Vec2::new(0.0, 0.0))],
-        links: vec![LinkDef::bar("1", "O", "A", 0.27), LinkDef::bar("2", "A", "B", 1.25), rocker, LinkDef::bar("4", "C", "D", 0.65), LinkDef::block("5", "D")],
-        sliders: vec![SliderDef { slider: "5".into(), point: "D".into(), guide_link: "frame".into(), through: Vec2::new(0.0, -0.2), angle: 0.0, angle_on_slider: 0.0 }],
-        input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 12.0, epsilon: 0.0 }),
-        hints: vec![AssemblyHint { point: "B".into(), kind: HintKind::Above("O".into(), "E".into()) }, AssemblyHint { point: "D".into(), kind: HintKind::Near(Vec2::new(0.5, -0.2)) }],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.27),
+            LinkDef::bar("2", "A", "B", 1.25),
+            rocker,
+            LinkDef::bar("4", "C", "D", 0.65),
+            LinkDef::block("5", "D"),
+        ],
+        sliders: vec![SliderDef {
+            slider: "5".into(),
+            point: "D".into(),
+            guide_link: "frame".into(),
+            through: Vec2::new(0.0, -0.2),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "O".into(),
+            pin: "A".into(),
+            omega: 12.0,
+            epsilon: 0.0,
+        }),
+        hints: vec![
+            AssemblyHint {
+                point: "B".into(),
+                kind: HintKind::Above("O".into(), "E".into()),
+            },
+            AssemblyHint {
+                point: "D".into(),
+                kind: HintKind::Near(Vec2::new(0.5, -0.2)),
+            },
+        ],
         ..Default::default()
     })
     .unwrap()

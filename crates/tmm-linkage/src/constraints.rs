@@ -70,7 +70,10 @@ pub fn assemble(pairs: &[&Pair], unknown: &[usize], links: &[LinkState], mode: M
                 let (pa, pb) = (perp(ra), perp(rb));
                 let res = sa.o + ra - sb.o - rb;
                 let quad = -ra * (sa.omega * sa.omega) + rb * (sb.omega * sb.omega);
-                for (k, (ca, cb)) in [((1.0, 0.0, pa.x), (-1.0, 0.0, -pb.x)), ((0.0, 1.0, pa.y), (0.0, -1.0, -pb.y))].into_iter().enumerate() {
+                for (k, (ca, cb)) in [((1.0, 0.0, pa.x), (-1.0, 0.0, -pb.x)), ((0.0, 1.0, pa.y), (0.0, -1.0, -pb.y))]
+                    .into_iter()
+                    .enumerate()
+                {
                     let r = row + k;
                     rhs[r] = match mode {
                         Mode::Position => -[res.x, res.y][k],
@@ -82,7 +85,15 @@ pub fn assemble(pairs: &[&Pair], unknown: &[usize], links: &[LinkState], mode: M
                 }
                 row += 2;
             }
-            Pair::P { slider: s, guide: g, ps, q, d, rel, .. } => {
+            Pair::P {
+                slider: s,
+                guide: g,
+                ps,
+                q,
+                d,
+                rel,
+                ..
+            } => {
                 let (ss, sg) = (&links[s], &links[g]);
                 let n = rot(sg.u, perp(d));
                 let rs = rot(ss.u, ps);
@@ -95,7 +106,9 @@ pub fn assemble(pairs: &[&Pair], unknown: &[usize], links: &[LinkState], mode: M
                     Mode::Acceleration => {
                         let ndot = perp(n) * sg.omega;
                         let edot = ss.v + perp(rs) * ss.omega - sg.v - perp(rg) * sg.omega;
-                        -(-(sg.omega * sg.omega) * n.dot(e) + 2.0 * ndot.dot(edot) + n.dot(-rs * (ss.omega * ss.omega) + rg * (sg.omega * sg.omega)))
+                        -(-(sg.omega * sg.omega) * n.dot(e)
+                            + 2.0 * ndot.dot(edot)
+                            + n.dot(-rs * (ss.omega * ss.omega) + rg * (sg.omega * sg.omega)))
                     }
                 };
                 put(jac, rhs, r, s, (n.x, n.y, n.dot(perp(rs))));

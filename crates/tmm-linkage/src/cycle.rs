@@ -65,13 +65,33 @@ impl Output {
     /// coordinate along the guide; any other link its angle.
     pub fn of(m: &Mechanism) -> Self {
         for p in &m.pairs {
-            if let Pair::P { slider, guide: 0, q, d, point, .. } = *p {
+            if let Pair::P {
+                slider,
+                guide: 0,
+                q,
+                d,
+                point,
+                ..
+            } = *p
+            {
                 if slider == m.output {
-                    return Output { link: slider, kind: OutputKind::Linear, point, origin: q, dir: d };
+                    return Output {
+                        link: slider,
+                        kind: OutputKind::Linear,
+                        point,
+                        origin: q,
+                        dir: d,
+                    };
                 }
             }
         }
-        Output { link: m.output, kind: OutputKind::Angular, point: 0, origin: Vec2::ZERO, dir: Vec2::ZERO }
+        Output {
+            link: m.output,
+            kind: OutputKind::Angular,
+            point: 0,
+            origin: Vec2::ZERO,
+            dir: Vec2::ZERO,
+        }
     }
 
     /// The output's s, ds/dt, d²s/dt². An angle is continuous near `near`.
@@ -80,7 +100,11 @@ impl Output {
         match self.kind {
             OutputKind::Linear => {
                 let p = &sol.points[self.point];
-                OutputState { s: (p.p - self.origin).dot(self.dir), v: p.v.dot(self.dir), a: p.a.dot(self.dir) }
+                OutputState {
+                    s: (p.p - self.origin).dot(self.dir),
+                    v: p.v.dot(self.dir),
+                    a: p.a.dot(self.dir),
+                }
             }
             OutputKind::Angular => {
                 let l = &sol.links[self.link];
@@ -172,8 +196,14 @@ pub fn check_assembly(m: &Mechanism, sol: &mut Solution) -> Result<(), LinkageEr
     if bad.is_empty() {
         return Ok(());
     }
-    let ranges: Vec<String> = bad.iter().map(|(a, b)| format!("{:.4}°…{:.4}°", a.to_degrees(), b.to_degrees())).collect();
-    Err(LinkageError::AssemblyRanges { ranges: ranges.join(", "), reason: reason.unwrap_or_default() })
+    let ranges: Vec<String> = bad
+        .iter()
+        .map(|(a, b)| format!("{:.4}°…{:.4}°", a.to_degrees(), b.to_degrees()))
+        .collect();
+    Err(LinkageError::AssemblyRanges {
+        ranges: ranges.join(", "),
+        reason: reason.unwrap_or_default(),
+    })
 }
 
 /// Bisection on the boundary between an assembling and a failing angle.
@@ -231,7 +261,18 @@ impl Cycle {
         };
         if roots.len() < 2 || output.kind == OutputKind::Angular && rotates_fully(m, &output) {
             let s = stroke_and(phi0, &mut sol);
-            return Ok(Cycle { output, dead: vec![], start: phi0, working_angle: TAU, return_angle: 0.0, kv: 1.0, theta: 0.0, stroke: 0.0, s_start: s, work_sign: 1.0 });
+            return Ok(Cycle {
+                output,
+                dead: vec![],
+                start: phi0,
+                working_angle: TAU,
+                return_angle: 0.0,
+                kv: 1.0,
+                theta: 0.0,
+                stroke: 0.0,
+                s_start: s,
+                work_sign: 1.0,
+            });
         }
         // the two extremes: the global min and max of s among the roots
         let mut ext: Vec<(f64, f64)> = roots.iter().map(|&r| (r, stroke_and(r, &mut sol))).collect();
@@ -277,7 +318,11 @@ impl Cycle {
         let mut out: Vec<Position> = (0..n)
             .map(|k| {
                 let psi = TAU * k as f64 / n as f64;
-                Position { label: k.to_string(), phi: tmm_geom::angle::wrap_2pi(self.start + sg * psi), psi }
+                Position {
+                    label: k.to_string(),
+                    phi: tmm_geom::angle::wrap_2pi(self.start + sg * psi),
+                    psi,
+                }
             })
             .collect();
         if self.dead.len() == 2 {
@@ -285,7 +330,14 @@ impl Cycle {
             let k = (psi / (TAU / n as f64)).floor() as usize;
             let on_grid = (psi - TAU * k as f64 / n as f64).abs() < 1e-9;
             if !on_grid {
-                out.insert(k + 1, Position { label: format!("{k}'"), phi: self.dead[1], psi });
+                out.insert(
+                    k + 1,
+                    Position {
+                        label: format!("{k}'"),
+                        phi: self.dead[1],
+                        psi,
+                    },
+                );
             }
         }
         out
@@ -355,7 +407,11 @@ pub fn pressure_angles(m: &Mechanism, sol: &Solution, out: &mut Vec<(usize, f64)
                 if let Pair::P { guide, d, point, .. } = *mid {
                     let n = perp(crate::state::rot(sol.links[guide].u, d));
                     // the guide link turns about its own outer joint
-                    let x = if e1.links().0 == guide || e1.links().1 == guide { e1.point() } else { e2.point() };
+                    let x = if e1.links().0 == guide || e1.links().1 == guide {
+                        e1.point()
+                    } else {
+                        e2.point()
+                    };
                     out.push((point, angle(n, perp(p(point) - p(x)))));
                 }
             }

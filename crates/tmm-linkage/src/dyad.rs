@@ -45,15 +45,26 @@ impl std::fmt::Display for DyadFail {
         match *self {
             DyadFail::Circles { d, r1, r2 } => {
                 if d > r1 + r2 {
-                    write!(f, "the outer joints are {d:.6} m apart, more than the two links reach ({r1:.6} + {r2:.6} = {:.6} m)", r1 + r2)
+                    write!(
+                        f,
+                        "the outer joints are {d:.6} m apart, more than the two links reach ({r1:.6} + {r2:.6} = {:.6} m)",
+                        r1 + r2
+                    )
                 } else {
-                    write!(f, "the outer joints are {d:.6} m apart, less than the difference of the links ({:.6} m)", (r1 - r2).abs())
+                    write!(
+                        f,
+                        "the outer joints are {d:.6} m apart, less than the difference of the links ({:.6} m)",
+                        (r1 - r2).abs()
+                    )
                 }
             }
             DyadFail::CircleLine { h, r } => write!(f, "the joint is {h:.6} m from the guide line, more than the link length {r:.6} m"),
             DyadFail::Parallel => write!(f, "the two guide lines are parallel"),
             DyadFail::Singular => write!(f, "the links of the group are aligned (dead centre)"),
-            DyadFail::NoClosure => write!(f, "the group's loop does not close near the previous position (Newton's method did not converge)"),
+            DyadFail::NoClosure => write!(
+                f,
+                "the group's loop does not close near the previous position (Newton's method did not converge)"
+            ),
         }
     }
 }
@@ -72,7 +83,11 @@ impl KnownPoint {
     fn state(&self, links: &[LinkState]) -> PointState {
         if self.link == 0 {
             // a fixed point: the frame does not move
-            PointState { p: self.local, v: Vec2::ZERO, a: Vec2::ZERO }
+            PointState {
+                p: self.local,
+                v: Vec2::ZERO,
+                a: Vec2::ZERO,
+            }
         } else {
             links[self.link].point(self.local)
         }
@@ -238,7 +253,18 @@ impl DyadGeom {
     #[inline]
     pub fn solve(&self, sign: f64, links: &mut [LinkState]) -> Result<(), DyadFail> {
         match *self {
-            DyadGeom::Rrr { l1, l2, a, a1, dir1, len1, c, c2, dir2, len2 } => {
+            DyadGeom::Rrr {
+                l1,
+                l2,
+                a,
+                a1,
+                dir1,
+                len1,
+                c,
+                c2,
+                dir2,
+                len2,
+            } => {
                 let pa = a.state(links);
                 let pc = c.state(links);
                 let d = pc.p - pa.p;
@@ -248,7 +274,11 @@ impl DyadGeom {
                 let x = 0.5 * (len1 * len1 - len2 * len2 + dd) * inv_d;
                 let h2 = len1 * len1 - x * x;
                 if !(dist > 0.0) || h2 < -1e-12 * len1 * len1 || !h2.is_finite() {
-                    return Err(DyadFail::Circles { d: dist, r1: len1, r2: len2 });
+                    return Err(DyadFail::Circles {
+                        d: dist,
+                        r1: len1,
+                        r2: len2,
+                    });
                 }
                 let h = h2.max(0.0).sqrt();
                 let e = d * inv_d;
@@ -267,7 +297,18 @@ impl DyadGeom {
                 links[l2] = LinkState::from_point(&pc, c2, u2, w2, e2);
                 Ok(())
             }
-            DyadGeom::Rrp { l1, l2, a, a1, dir1, len1, b_off, b2, guide, rel } => {
+            DyadGeom::Rrp {
+                l1,
+                l2,
+                a,
+                a1,
+                dir1,
+                len1,
+                b_off,
+                b2,
+                guide,
+                rel,
+            } => {
                 let pa = a.state(links);
                 let gl = links[guide.link];
                 let q = gl.pos(guide.through);
@@ -292,11 +333,25 @@ impl DyadGeom {
                 let (e1, _sdd) = solve2(c1, c2v, r, tol).ok_or(DyadFail::Singular)?;
                 let u1 = rot(ab * (1.0 / len1), conj(dir1));
                 links[l1] = LinkState::from_point(&pa, a1, u1, w1, e1);
-                let pbs = PointState { p: b, v: pa.v + perp(ab) * w1, a: pa.a + perp(ab) * e1 - ab * (w1 * w1) };
+                let pbs = PointState {
+                    p: b,
+                    v: pa.v + perp(ab) * w1,
+                    a: pa.a + perp(ab) * e1 - ab * (w1 * w1),
+                };
                 links[l2] = LinkState::from_point(&pbs, b2, u2, gl.omega, gl.eps);
                 Ok(())
             }
-            DyadGeom::Rpr { g, s, x, xg, y, ys, w, dir, rel } => {
+            DyadGeom::Rpr {
+                g,
+                s,
+                x,
+                xg,
+                y,
+                ys,
+                w,
+                dir,
+                rel,
+            } => {
                 let px = x.state(links);
                 let py = y.state(links);
                 let yx = py.p - px.p;
@@ -322,7 +377,18 @@ impl DyadGeom {
                 links[s] = LinkState::from_point(&py, ys, rot(ugn, rel), wg, eg);
                 Ok(())
             }
-            DyadGeom::Prp { l1, l2, g1, rel1, off1, b1, g2, rel2, off2, b2 } => {
+            DyadGeom::Prp {
+                l1,
+                l2,
+                g1,
+                rel1,
+                off1,
+                b1,
+                g2,
+                rel2,
+                off2,
+                b2,
+            } => {
                 let k1 = links[g1.link];
                 let k2 = links[g2.link];
                 let u1 = rot(k1.u, rel1);
@@ -338,12 +404,29 @@ impl DyadGeom {
                 let (sd1, sd2) = solve2(d1, -d2, v2 - v1, 1e-12).ok_or(DyadFail::Singular)?;
                 let r = a2 + perp(d2) * (2.0 * k2.omega * sd2) - a1 - perp(d1) * (2.0 * k1.omega * sd1);
                 let (sdd1, _) = solve2(d1, -d2, r, 1e-12).ok_or(DyadFail::Singular)?;
-                let pb = PointState { p: b, v: v1 + d1 * sd1, a: a1 + perp(d1) * (2.0 * k1.omega * sd1) + d1 * sdd1 };
+                let pb = PointState {
+                    p: b,
+                    v: v1 + d1 * sd1,
+                    a: a1 + perp(d1) * (2.0 * k1.omega * sd1) + d1 * sdd1,
+                };
                 links[l1] = LinkState::from_point(&pb, b1, u1, k1.omega, k1.eps);
                 links[l2] = LinkState::from_point(&pb, b2, u2, k2.omega, k2.eps);
                 Ok(())
             }
-            DyadGeom::Rpp { l1, l2, a, a1, guide, rel2, p2, relm, qm, dm, pm, guide_on_l2 } => {
+            DyadGeom::Rpp {
+                l1,
+                l2,
+                a,
+                a1,
+                guide,
+                rel2,
+                p2,
+                relm,
+                qm,
+                dm,
+                pm,
+                guide_on_l2,
+            } => {
                 let pa = a.state(links);
                 let k = links[guide.link];
                 let u2 = rot(k.u, rel2);
@@ -366,7 +449,14 @@ impl DyadGeom {
                 links[l1] = LinkState::from_point(&pa, a1, u1, k.omega, k.eps);
                 let o2 = o2_0 + g * s2;
                 let (vo, ao) = k.kin_at(o2);
-                links[l2] = LinkState { o: o2, v: vo + g * sd2, a: ao + perp(g) * (2.0 * k.omega * sd2) + g * sdd2, u: u2, omega: k.omega, eps: k.eps };
+                links[l2] = LinkState {
+                    o: o2,
+                    v: vo + g * sd2,
+                    a: ao + perp(g) * (2.0 * k.omega * sd2) + g * sdd2,
+                    u: u2,
+                    omega: k.omega,
+                    eps: k.eps,
+                };
                 Ok(())
             }
         }

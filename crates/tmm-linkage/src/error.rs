@@ -14,7 +14,9 @@ pub enum LinkageError {
         message: String,
     },
     /// The degree of freedom is not 1.
-    #[error("the mechanism has {dof} degrees of freedom (W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {w}); a mechanism driven by one crank needs 1{detail}")]
+    #[error(
+        "the mechanism has {dof} degrees of freedom (W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {w}); a mechanism driven by one crank needs 1{detail}"
+    )]
     Mobility {
         /// DOF from the rank of the constraint equations.
         dof: i64,
@@ -64,6 +66,9 @@ pub enum LinkageError {
 impl LinkageError {
     /// A description error.
     pub fn desc(field: impl Into<String>, message: impl Into<String>) -> Self {
-        LinkageError::Description { field: field.into(), message: message.into() }
+        LinkageError::Description {
+            field: field.into(),
+            message: message.into(),
+        }
     }
 }

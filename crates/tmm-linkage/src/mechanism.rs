@@ -208,7 +208,10 @@ impl Mechanism {
                 return Err(de(format!("links[{i}].name"), "a link needs a name"));
             }
             if index.insert(l.name.as_str(), link_names.len()).is_some() {
-                return Err(de(format!("links[{i}].name"), format!("duplicate link name `{}` (link names must be unique; `frame` is reserved)", l.name)));
+                return Err(de(
+                    format!("links[{i}].name"),
+                    format!("duplicate link name `{}` (link names must be unique; `frame` is reserved)", l.name),
+                ));
             }
             if l.points.is_empty() {
                 return Err(de(format!("links.{}", l.name), "a link needs at least one point"));
@@ -218,11 +221,20 @@ impl Mechanism {
                     return Err(de(format!("links.{}.{pn}", l.name), "coordinates must be finite"));
                 }
                 if l.points[..k].iter().any(|(q, _)| q == pn) {
-                    return Err(de(format!("links.{}.{pn}", l.name), format!("duplicate point `{pn}` on link `{}`", l.name)));
+                    return Err(de(
+                        format!("links.{}.{pn}", l.name),
+                        format!("duplicate point `{pn}` on link `{}`", l.name),
+                    ));
                 }
             }
             if l.points.len() >= 2 && (l.points[1].1 - l.points[0].1).hypot() <= 1e-12 {
-                return Err(de(format!("links.{}.length", l.name), format!("zero length: `{}` and `{}` coincide; a link length must be > 0", l.points[0].0, l.points[1].0)));
+                return Err(de(
+                    format!("links.{}.length", l.name),
+                    format!(
+                        "zero length: `{}` and `{}` coincide; a link length must be > 0",
+                        l.points[0].0, l.points[1].0
+                    ),
+                ));
             }
             link_names.push(l.name.clone());
             mass_centers.push(l.mass_center);
@@ -240,7 +252,11 @@ impl Mechanism {
                 return Err(de(format!("fixed.{name}"), "coordinates must be finite"));
             }
             pidx.insert(name.clone(), points.len());
-            points.push(NamedPoint { name: name.clone(), link: 0, local: *p });
+            points.push(NamedPoint {
+                name: name.clone(),
+                link: 0,
+                local: *p,
+            });
             occ.push(vec![(0, *p)]);
         }
         for (li, l) in def.links.iter().enumerate() {
@@ -249,7 +265,11 @@ impl Mechanism {
                     Some(&k) => occ[k].push((li + 1, *p)),
                     None => {
                         pidx.insert(pn.clone(), points.len());
-                        points.push(NamedPoint { name: pn.clone(), link: li + 1, local: *p });
+                        points.push(NamedPoint {
+                            name: pn.clone(),
+                            link: li + 1,
+                            local: *p,
+                        });
                         occ.push(vec![(li + 1, *p)]);
                     }
                 }
@@ -268,38 +288,72 @@ impl Mechanism {
         let mut pairs = Vec::new();
         for (k, o) in occ.iter().enumerate() {
             for &(lb, pb) in &o[1..] {
-                pairs.push(Pair::R { a: o[0].0, b: lb, la: o[0].1, lb: pb, point: k });
+                pairs.push(Pair::R {
+                    a: o[0].0,
+                    b: lb,
+                    la: o[0].1,
+                    lb: pb,
+                    point: k,
+                });
             }
         }
         // --- prismatic pairs
         for (i, s) in def.sliders.iter().enumerate() {
             let f = |x: &str| format!("sliders[{i}].{x}");
-            let slider = *index.get(s.slider.as_str()).ok_or_else(|| de(f("link"), format!("unknown link `{}`", s.slider)))?;
+            let slider = *index
+                .get(s.slider.as_str())
+                .ok_or_else(|| de(f("link"), format!("unknown link `{}`", s.slider)))?;
             if slider == 0 {
                 return Err(de(f("link"), "the frame cannot slide"));
             }
-            let guide = *index.get(s.guide_link.as_str()).ok_or_else(|| de(f("guide.link"), format!("unknown link `{}` (a link name or `frame`)", s.guide_link)))?;
+            let guide = *index
+                .get(s.guide_link.as_str())
+                .ok_or_else(|| de(f("guide.link"), format!("unknown link `{}` (a link name or `frame`)", s.guide_link)))?;
             if guide == slider {
                 return Err(de(f("guide.link"), "a link cannot slide on itself"));
             }
-            let ps = def.links[slider - 1].point(&s.point).ok_or_else(|| de(f("point"), format!("unknown point `{}` on link `{}`", s.point, s.slider)))?;
+            let ps = def.links[slider - 1]
+                .point(&s.point)
+                .ok_or_else(|| de(f("point"), format!("unknown point `{}` on link `{}`", s.point, s.slider)))?;
             if !(s.angle.is_finite() && s.angle_on_slider.is_finite() && s.through.x.is_finite() && s.through.y.is_finite()) {
                 return Err(de(f("guide"), "the guide must be finite"));
             }
             let dd = polar(s.angle);
             let rel = rot(dd, conj(polar(s.angle_on_slider)));
-            pairs.push(Pair::P { slider, guide, ps, q: s.through, d: dd, rel, point: pidx[&s.point] });
+            pairs.push(Pair::P {
+                slider,
+                guide,
+                ps,
+                q: s.through,
+                d: dd,
+                rel,
+                point: pidx[&s.point],
+            });
         }
         // --- input crank
-        let inp = def.input.as_ref().ok_or_else(|| de("input", "the mechanism needs an input crank (input.link)"))?;
-        let cl = *index.get(inp.link.as_str()).ok_or_else(|| de("input.link", format!("unknown link `{}`", inp.link)))?;
+        let inp = def
+            .input
+            .as_ref()
+            .ok_or_else(|| de("input", "the mechanism needs an input crank (input.link)"))?;
+        let cl = *index
+            .get(inp.link.as_str())
+            .ok_or_else(|| de("input.link", format!("unknown link `{}`", inp.link)))?;
         if cl == 0 {
             return Err(de("input.link", "the input must be a moving link"));
         }
         let cdef = &def.links[cl - 1];
-        let pivot_local = cdef.point(&inp.pivot).ok_or_else(|| de("input.pivot", format!("`{}` is not a point of the crank `{}`", inp.pivot, inp.link)))?;
-        let pin_local = cdef.point(&inp.pin).ok_or_else(|| de("input.pin", format!("`{}` is not a point of the crank `{}`", inp.pin, inp.link)))?;
-        let pivot = def.fixed.iter().find(|(n, _)| *n == inp.pivot).map(|(_, p)| *p).ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
+        let pivot_local = cdef
+            .point(&inp.pivot)
+            .ok_or_else(|| de("input.pivot", format!("`{}` is not a point of the crank `{}`", inp.pivot, inp.link)))?;
+        let pin_local = cdef
+            .point(&inp.pin)
+            .ok_or_else(|| de("input.pin", format!("`{}` is not a point of the crank `{}`", inp.pin, inp.link)))?;
+        let pivot = def
+            .fixed
+            .iter()
+            .find(|(n, _)| *n == inp.pivot)
+            .map(|(_, p)| *p)
+            .ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
         let radius = (pin_local - pivot_local).hypot();
         if radius <= 1e-12 {
             return Err(de("input", "zero crank length"));
@@ -324,11 +378,21 @@ impl Mechanism {
                 let (a, b) = p.links();
                 a == l || b == l
             }) {
-                return Err(de(format!("links.{name}"), format!("link `{name}` shares no point with any other link or the frame")));
+                return Err(de(
+                    format!("links.{name}"),
+                    format!("link `{name}` shares no point with any other link or the frame"),
+                ));
             }
         }
         // --- structure
-        let plinks: Vec<PairLink> = pairs.iter().map(|p| PairLink { a: p.links().0, b: p.links().1, kind: p.kind() }).collect();
+        let plinks: Vec<PairLink> = pairs
+            .iter()
+            .map(|p| PairLink {
+                a: p.links().0,
+                b: p.links().1,
+                kind: p.kind(),
+            })
+            .collect();
         let n = nl - 1;
         let p5 = pairs.len();
         let w = 3 * n as i64 - 2 * p5 as i64;
@@ -338,19 +402,46 @@ impl Mechanism {
             Err(left) => {
                 let names: Vec<&str> = left.iter().map(|&l| link_names[l].as_str()).collect();
                 if w != 1 {
-                    return Err(LinkageError::Mobility { dof: w, w, n, p5, p4: 0, detail: format!("; links {} do not form Assur groups", names.join(", ")) });
+                    return Err(LinkageError::Mobility {
+                        dof: w,
+                        w,
+                        n,
+                        p5,
+                        p4: 0,
+                        detail: format!("; links {} do not form Assur groups", names.join(", ")),
+                    });
                 }
-                return Err(LinkageError::Structure(format!("links {} do not form Assur groups on the crank `{}`", names.join(", "), inp.link)));
+                return Err(LinkageError::Structure(format!(
+                    "links {} do not form Assur groups on the crank `{}`",
+                    names.join(", "),
+                    inp.link
+                )));
             }
         };
         let mut groups = Vec::new();
         let mut infos = Vec::new();
         for (mut set, mut pids) in raw_groups {
             let (class, order, kind) = structure::classify(&mut set, &mut pids, &plinks);
-            let info = GroupInfo { class, order, kind, links: set.iter().map(|&l| link_names[l].clone()).collect(), link_ids: set.clone(), pair_ids: pids.clone() };
-            let solver = if class == 2 { Solver::Dyad(build_dyad(&set, &pids, &pairs)?) } else { Solver::General };
+            let info = GroupInfo {
+                class,
+                order,
+                kind,
+                links: set.iter().map(|&l| link_names[l].clone()).collect(),
+                link_ids: set.clone(),
+                pair_ids: pids.clone(),
+            };
+            let solver = if class == 2 {
+                Solver::Dyad(build_dyad(&set, &pids, &pairs)?)
+            } else {
+                Solver::General
+            };
             infos.push(info.clone());
-            groups.push(Group { info, solver, sign: 1.0, pairs: pids });
+            groups.push(Group {
+                info,
+                solver,
+                sign: 1.0,
+                pairs: pids,
+            });
         }
         let class = infos.iter().map(|g| g.class).max().unwrap_or(1);
         let mut formula = format!("I(0,{})", link_names[cl]);
@@ -361,11 +452,25 @@ impl Mechanism {
             formula.push_str(&format!(" → {}({})", roman(g.class), names.join(",")));
         }
         let output = match &def.output {
-            Some(o) => *index.get(o.as_str()).filter(|&&i| i != 0).ok_or_else(|| de("output", format!("unknown link `{o}`")))?,
+            Some(o) => *index
+                .get(o.as_str())
+                .filter(|&&i| i != 0)
+                .ok_or_else(|| de("output", format!("unknown link `{o}`")))?,
             None => default_output(&groups, &pairs, cl),
         };
         let scale = points.iter().map(|p| p.local.hypot()).fold(radius, f64::max).max(1e-9);
-        let structure = Structure { dof: w, n, p5, p4: 0, groups: infos, formula, class, dof_rank: w, redundant: 0, passive: 0 };
+        let structure = Structure {
+            dof: w,
+            n,
+            p5,
+            p4: 0,
+            groups: infos,
+            formula,
+            class,
+            dof_rank: w,
+            redundant: 0,
+            passive: 0,
+        };
         let has_general = groups.iter().any(|g| g.solver == Solver::General);
         let moving_points: Vec<usize> = (0..points.len()).filter(|&i| points[i].link != 0).collect();
         let mut m = Mechanism {
@@ -403,8 +508,25 @@ impl Mechanism {
         let n = 3 * self.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(2);
         Solution {
             phi: f64::NAN,
-            links: if self.init.is_empty() { vec![LinkState::default(); self.link_names.len()] } else { self.init.clone() },
-            points: self.points.iter().map(|p| if p.link == 0 { PointState { p: p.local, ..Default::default() } } else { PointState::default() }).collect(),
+            links: if self.init.is_empty() {
+                vec![LinkState::default(); self.link_names.len()]
+            } else {
+                self.init.clone()
+            },
+            points: self
+                .points
+                .iter()
+                .map(|p| {
+                    if p.link == 0 {
+                        PointState {
+                            p: p.local,
+                            ..Default::default()
+                        }
+                    } else {
+                        PointState::default()
+                    }
+                })
+                .collect(),
             jac: vec![0.0; n * n],
             rhs: vec![0.0; n],
             warm: None,
@@ -436,7 +558,11 @@ impl Mechanism {
         let c = &self.crank;
         let (s, co) = phi.sin_cos();
         let u = rot(Vec2::new(co, s), conj(c.dir_local));
-        let piv = PointState { p: c.pivot, v: Vec2::ZERO, a: Vec2::ZERO };
+        let piv = PointState {
+            p: c.pivot,
+            v: Vec2::ZERO,
+            a: Vec2::ZERO,
+        };
         sol.links[c.link] = LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps);
         for g in &self.groups {
             match &g.solver {
@@ -458,7 +584,11 @@ impl Mechanism {
         for &i in &self.moving_points {
             let p = &self.points[i];
             let l = &links[p.link];
-            sol.points[i] = if p.local == Vec2::ZERO { PointState { p: l.o, v: l.v, a: l.a } } else { l.point(p.local) };
+            sol.points[i] = if p.local == Vec2::ZERO {
+                PointState { p: l.o, v: l.v, a: l.a }
+            } else {
+                l.point(p.local)
+            };
         }
         sol.warm = Some(phi);
         Ok(())
@@ -466,8 +596,15 @@ impl Mechanism {
 
     fn fail(&self, g: &Group, phi: f64, e: DyadFail) -> LinkageError {
         match e {
-            DyadFail::Singular => LinkageError::Singular { phi_deg: phi.to_degrees(), group: g.label() },
-            _ => LinkageError::Assembly { phi_deg: phi.to_degrees(), group: g.label(), reason: e.to_string() },
+            DyadFail::Singular => LinkageError::Singular {
+                phi_deg: phi.to_degrees(),
+                group: g.label(),
+            },
+            _ => LinkageError::Assembly {
+                phi_deg: phi.to_degrees(),
+                group: g.label(),
+                reason: e.to_string(),
+            },
         }
     }
 
@@ -500,7 +637,10 @@ impl Mechanism {
     /// assembly hints at the assembly angle.
     fn choose_branches(&mut self, def: &MechanismDef) -> Result<(), LinkageError> {
         for (i, h) in def.hints.iter().enumerate() {
-            let check = |n: &str| self.point(n).ok_or_else(|| LinkageError::desc(format!("assembly[{i}]"), format!("unknown point `{n}`")));
+            let check = |n: &str| {
+                self.point(n)
+                    .ok_or_else(|| LinkageError::desc(format!("assembly[{i}]"), format!("unknown point `{n}`")))
+            };
             check(&h.point)?;
             match &h.kind {
                 HintKind::Above(a, b) | HintKind::Below(a, b) | HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
@@ -510,7 +650,9 @@ impl Mechanism {
                 HintKind::Near(_) => {}
             }
         }
-        let branchy: Vec<usize> = (0..self.groups.len()).filter(|&g| self.groups[g].dyad().is_some_and(|d| d.has_branches())).collect();
+        let branchy: Vec<usize> = (0..self.groups.len())
+            .filter(|&g| self.groups[g].dyad().is_some_and(|d| d.has_branches()))
+            .collect();
         let phi = self.assembly_angle;
         let mut best: Option<(f64, Vec<f64>, Vec<LinkState>)> = None;
         let mut first_err = None;
@@ -544,7 +686,14 @@ impl Mechanism {
         };
         if score >= 1e6 {
             let h: Vec<String> = def.hints.iter().map(|h| format!("{} {:?}", h.point, h.kind)).collect();
-            return Err(LinkageError::desc("assembly", format!("no assembly at φ = {:.3}° satisfies every hint ({})", phi.to_degrees(), h.join("; "))));
+            return Err(LinkageError::desc(
+                "assembly",
+                format!(
+                    "no assembly at φ = {:.3}° satisfies every hint ({})",
+                    phi.to_degrees(),
+                    h.join("; ")
+                ),
+            ));
         }
         for (g, s) in self.groups.iter_mut().zip(signs) {
             g.sign = s;
@@ -567,14 +716,30 @@ impl Mechanism {
                 HintKind::Above(a, b) | HintKind::Below(a, b) => {
                     let (pa, pb) = side(a, b);
                     let dx = pb.x - pa.x;
-                    let yl = if dx.abs() < 1e-15 { f64::NAN } else { pa.y + (pb.y - pa.y) * (p.x - pa.x) / dx };
-                    if matches!(h.kind, HintKind::Above(..)) { p.y > yl } else { p.y < yl }
+                    let yl = if dx.abs() < 1e-15 {
+                        f64::NAN
+                    } else {
+                        pa.y + (pb.y - pa.y) * (p.x - pa.x) / dx
+                    };
+                    if matches!(h.kind, HintKind::Above(..)) {
+                        p.y > yl
+                    } else {
+                        p.y < yl
+                    }
                 }
                 HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
                     let (pa, pb) = side(a, b);
                     let dy = pb.y - pa.y;
-                    let xl = if dy.abs() < 1e-15 { f64::NAN } else { pa.x + (pb.x - pa.x) * (p.y - pa.y) / dy };
-                    if matches!(h.kind, HintKind::LeftOf(..)) { p.x < xl } else { p.x > xl }
+                    let xl = if dy.abs() < 1e-15 {
+                        f64::NAN
+                    } else {
+                        pa.x + (pb.x - pa.x) * (p.y - pa.y) / dy
+                    };
+                    if matches!(h.kind, HintKind::LeftOf(..)) {
+                        p.x < xl
+                    } else {
+                        p.x > xl
+                    }
                 }
                 HintKind::Near(q) => {
                     s += (p - *q).hypot();
@@ -598,7 +763,13 @@ impl Mechanism {
             rng ^= rng << 17;
             (rng >> 11) as f64 / (1u64 << 53) as f64
         };
-        let centre = self.points.iter().filter(|p| p.link == 0).map(|p| p.local).fold(Vec2::ZERO, |a, b| a + b) * (1.0 / self.points.iter().filter(|p| p.link == 0).count().max(1) as f64);
+        let centre = self
+            .points
+            .iter()
+            .filter(|p| p.link == 0)
+            .map(|p| p.local)
+            .fold(Vec2::ZERO, |a, b| a + b)
+            * (1.0 / self.points.iter().filter(|p| p.link == 0).count().max(1) as f64);
         for g in &self.groups {
             if g.solver != Solver::General {
                 continue;
@@ -616,7 +787,11 @@ impl Mechanism {
                         }
                     }
                 }
-                sol.links[l] = LinkState { o, u, ..Default::default() };
+                sol.links[l] = LinkState {
+                    o,
+                    u,
+                    ..Default::default()
+                };
             }
         }
     }
@@ -631,7 +806,14 @@ impl Mechanism {
         let cols = 3 * n;
         let mut jac = vec![0.0; (rows + 1) * cols];
         let mut rhs = vec![0.0; rows + 1];
-        constraints::assemble(&prs, &unknown, &self.init, Mode::Velocity, &mut jac[..rows * cols], &mut rhs[..rows]);
+        constraints::assemble(
+            &prs,
+            &unknown,
+            &self.init,
+            Mode::Velocity,
+            &mut jac[..rows * cols],
+            &mut rhs[..rows],
+        );
         let r = constraints::rank(&jac[..rows * cols], rows, cols, 1e-9);
         // hold the crank: θ_crank fixed
         jac[rows * cols + 3 * (self.crank.link - 1) + 2] = 1.0;
@@ -641,7 +823,14 @@ impl Mechanism {
         s.redundant = rows as i64 - r as i64;
         s.passive = cols as i64 - r_held as i64;
         if s.dof_rank != 1 {
-            return Err(LinkageError::Mobility { dof: s.dof_rank, w: s.dof, n: s.n, p5: s.p5, p4: s.p4, detail: String::new() });
+            return Err(LinkageError::Mobility {
+                dof: s.dof_rank,
+                w: s.dof,
+                n: s.n,
+                p5: s.p5,
+                p4: s.p4,
+                detail: String::new(),
+            });
         }
         Ok(())
     }
@@ -689,7 +878,10 @@ fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom,
             Pair::P { .. } => unreachable!("revolute expected"),
         }
     };
-    let kind: String = [e1.kind(), m.kind(), e2.kind()].iter().map(|k| if *k == PairKind::R { 'R' } else { 'P' }).collect();
+    let kind: String = [e1.kind(), m.kind(), e2.kind()]
+        .iter()
+        .map(|k| if *k == PairKind::R { 'R' } else { 'P' })
+        .collect();
     let bad = |why: &str| LinkageError::Structure(format!("dyad of links {l1}, {l2} ({kind}): {why}"));
     match kind.as_str() {
         "RRR" => {
@@ -702,13 +894,35 @@ fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom,
             if len1 <= 1e-12 || len2 <= 1e-12 {
                 return Err(bad("zero link length"));
             }
-            Ok(DyadGeom::Rrr { l1, l2, a, a1, dir1: unit(b1 - a1), len1, c, c2, dir2: unit(b2 - c2), len2 })
+            Ok(DyadGeom::Rrr {
+                l1,
+                l2,
+                a,
+                a1,
+                dir1: unit(b1 - a1),
+                len1,
+                c,
+                c2,
+                dir2: unit(b2 - c2),
+                len2,
+            })
         }
         "RRP" => {
             let (a1, a) = r_on(e1, l1);
             let b1 = r_both(m, l1);
             let b2 = r_both(m, l2);
-            let Pair::P { slider, guide, ps, q, d, rel, .. } = *e2 else { return Err(bad("prismatic pair expected")) };
+            let Pair::P {
+                slider,
+                guide,
+                ps,
+                q,
+                d,
+                rel,
+                ..
+            } = *e2
+            else {
+                return Err(bad("prismatic pair expected"));
+            };
             if slider != l2 {
                 return Err(bad("the outer guide must carry the slider of the group, not be carried by it"));
             }
@@ -716,18 +930,74 @@ fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom,
             if len1 <= 1e-12 {
                 return Err(bad("zero link length"));
             }
-            Ok(DyadGeom::Rrp { l1, l2, a, a1, dir1: unit(b1 - a1), len1, b_off: b2 - ps, b2, guide: KnownGuide { link: guide, through: q, dir: d }, rel })
+            Ok(DyadGeom::Rrp {
+                l1,
+                l2,
+                a,
+                a1,
+                dir1: unit(b1 - a1),
+                len1,
+                b_off: b2 - ps,
+                b2,
+                guide: KnownGuide {
+                    link: guide,
+                    through: q,
+                    dir: d,
+                },
+                rel,
+            })
         }
         "RPR" => {
-            let Pair::P { slider, guide, ps, q, d, rel, .. } = *m else { return Err(bad("prismatic pair expected")) };
+            let Pair::P {
+                slider,
+                guide,
+                ps,
+                q,
+                d,
+                rel,
+                ..
+            } = *m
+            else {
+                return Err(bad("prismatic pair expected"));
+            };
             let (g, s) = (guide, slider);
             let (eg, es) = if r_on_link(e1, g) { (e1, e2) } else { (e2, e1) };
             let (xg, x) = r_on(eg, g);
             let (ys, y) = r_on(es, s);
-            Ok(DyadGeom::Rpr { g, s, x, xg, y, ys, w: q + rot(rel, ys - ps), dir: d, rel })
+            Ok(DyadGeom::Rpr {
+                g,
+                s,
+                x,
+                xg,
+                y,
+                ys,
+                w: q + rot(rel, ys - ps),
+                dir: d,
+                rel,
+            })
         }
         "PRP" => {
-            let (Pair::P { slider: s1, guide: k1, ps: p1, q: q1, d: d1, rel: rel1, .. }, Pair::P { slider: s2, guide: k2, ps: p2, q: q2, d: d2, rel: rel2, .. }) = (e1.clone(), e2.clone()) else {
+            let (
+                Pair::P {
+                    slider: s1,
+                    guide: k1,
+                    ps: p1,
+                    q: q1,
+                    d: d1,
+                    rel: rel1,
+                    ..
+                },
+                Pair::P {
+                    slider: s2,
+                    guide: k2,
+                    ps: p2,
+                    q: q2,
+                    d: d2,
+                    rel: rel2,
+                    ..
+                },
+            ) = (e1.clone(), e2.clone())
+            else {
                 return Err(bad("prismatic pairs expected"));
             };
             if s1 != l1 || s2 != l2 {
@@ -738,11 +1008,19 @@ fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom,
             Ok(DyadGeom::Prp {
                 l1,
                 l2,
-                g1: KnownGuide { link: k1, through: q1, dir: d1 },
+                g1: KnownGuide {
+                    link: k1,
+                    through: q1,
+                    dir: d1,
+                },
                 rel1,
                 off1: b1 - p1,
                 b1,
-                g2: KnownGuide { link: k2, through: q2, dir: d2 },
+                g2: KnownGuide {
+                    link: k2,
+                    through: q2,
+                    dir: d2,
+                },
                 rel2,
                 off2: b2 - p2,
                 b2,
@@ -750,15 +1028,53 @@ fn build_dyad(set: &[usize], pids: &[usize], pairs: &[Pair]) -> Result<DyadGeom,
         }
         "RPP" => {
             let (a1, a) = r_on(e1, l1);
-            let Pair::P { slider: so, guide: ko, ps: p2, q, d, rel: rel2, .. } = *e2 else { return Err(bad("prismatic pair expected")) };
+            let Pair::P {
+                slider: so,
+                guide: ko,
+                ps: p2,
+                q,
+                d,
+                rel: rel2,
+                ..
+            } = *e2
+            else {
+                return Err(bad("prismatic pair expected"));
+            };
             if so != l2 {
                 return Err(bad("the outer guide must carry the slider of the group"));
             }
-            let Pair::P { slider: sm, ps: pm, q: qm, d: dm, rel: relm_raw, .. } = *m else { return Err(bad("prismatic pair expected")) };
+            let Pair::P {
+                slider: sm,
+                ps: pm,
+                q: qm,
+                d: dm,
+                rel: relm_raw,
+                ..
+            } = *m
+            else {
+                return Err(bad("prismatic pair expected"));
+            };
             let guide_on_l2 = sm == l1;
             // u_slider = u_guide·rel ⇒ u1 = u2·rel (guide on l2) or u1 = u2·conj(rel)
             let relm = if guide_on_l2 { relm_raw } else { conj(relm_raw) };
-            Ok(DyadGeom::Rpp { l1, l2, a, a1, guide: KnownGuide { link: ko, through: q, dir: d }, rel2, p2, relm, qm, dm, pm, guide_on_l2 })
+            Ok(DyadGeom::Rpp {
+                l1,
+                l2,
+                a,
+                a1,
+                guide: KnownGuide {
+                    link: ko,
+                    through: q,
+                    dir: d,
+                },
+                rel2,
+                p2,
+                relm,
+                qm,
+                dm,
+                pm,
+                guide_on_l2,
+            })
         }
         _ => Err(bad("not a dyad kind (RRR, RRP, RPR, PRP, RPP)")),
     }

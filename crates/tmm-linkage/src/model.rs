@@ -127,7 +127,11 @@ impl LinkDef {
 
     /// A slider block with one point at its origin.
     pub fn block(name: &str, point: &str) -> Self {
-        LinkDef { name: name.to_string(), points: vec![(point.to_string(), Vec2::ZERO)], mass_center: Vec2::ZERO }
+        LinkDef {
+            name: name.to_string(),
+            points: vec![(point.to_string(), Vec2::ZERO)],
+            mass_center: Vec2::ZERO,
+        }
     }
 
     /// Local coordinates of a named point.

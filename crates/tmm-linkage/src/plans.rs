@@ -70,8 +70,10 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
             continue;
         }
         let s = &sol.points[i];
-        out.velocity.push(pv(format!("V_{}", p.name), Vec2::ZERO, s.v, VectorKind::Absolute));
-        out.acceleration.push(pv(format!("a_{}", p.name), Vec2::ZERO, s.a, VectorKind::Absolute));
+        out.velocity
+            .push(pv(format!("V_{}", p.name), Vec2::ZERO, s.v, VectorKind::Absolute));
+        out.acceleration
+            .push(pv(format!("a_{}", p.name), Vec2::ZERO, s.a, VectorKind::Absolute));
     }
     // links in solving order: crank, then each group's links
     let mut order = vec![m.crank.link];
@@ -81,8 +83,18 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
     for &l in &order {
         let ls = &sol.links[l];
         // the link's base point: its first revolute joint shared with an earlier link or the frame
-        let joints: Vec<usize> = m.points.iter().enumerate().filter(|(_, p)| on_link(m, p.name.as_str(), l)).map(|(i, _)| i).collect();
-        let Some(&base) = joints.iter().find(|&&i| m.pairs.iter().any(|pr| matches!(pr, Pair::R { .. }) && pr.point() == i && is_on(pr, l))) else {
+        let joints: Vec<usize> = m
+            .points
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| on_link(m, p.name.as_str(), l))
+            .map(|(i, _)| i)
+            .collect();
+        let Some(&base) = joints.iter().find(|&&i| {
+            m.pairs
+                .iter()
+                .any(|pr| matches!(pr, Pair::R { .. }) && pr.point() == i && is_on(pr, l))
+        }) else {
             continue;
         };
         let x = &sol.points[base];
@@ -94,9 +106,16 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
             let r = y.p - x.p;
             let an = -r * (ls.omega * ls.omega);
             let at = perp(r) * ls.eps;
-            out.velocity.push(pv(format!("V_{}{}", name(j), name(base)), x.v, y.v, VectorKind::Relative));
-            out.acceleration.push(pv(format!("a^n_{}{}", name(j), name(base)), x.a, x.a + an, VectorKind::Normal));
-            out.acceleration.push(pv(format!("a^t_{}{}", name(j), name(base)), x.a + an, x.a + an + at, VectorKind::Tangential));
+            out.velocity
+                .push(pv(format!("V_{}{}", name(j), name(base)), x.v, y.v, VectorKind::Relative));
+            out.acceleration
+                .push(pv(format!("a^n_{}{}", name(j), name(base)), x.a, x.a + an, VectorKind::Normal));
+            out.acceleration.push(pv(
+                format!("a^t_{}{}", name(j), name(base)),
+                x.a + an,
+                x.a + an + at,
+                VectorKind::Tangential,
+            ));
         }
     }
     // sliding pairs
@@ -111,13 +130,16 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
             let yn = name(point);
             if guide != 0 {
                 out.velocity.push(pv(format!("V_{yn}{ng}"), Vec2::ZERO, vg, VectorKind::Absolute));
-                out.acceleration.push(pv(format!("a_{yn}{ng}"), Vec2::ZERO, ag, VectorKind::Absolute));
+                out.acceleration
+                    .push(pv(format!("a_{yn}{ng}"), Vec2::ZERO, ag, VectorKind::Absolute));
             }
             out.velocity.push(pv(format!("V_{yn}{ns}{yn}{ng}"), vg, y.v, VectorKind::Sliding));
             if guide != 0 {
-                out.acceleration.push(pv(format!("a^k_{yn}{ns}{yn}{ng}"), ag, ag + cor, VectorKind::Coriolis));
+                out.acceleration
+                    .push(pv(format!("a^k_{yn}{ns}{yn}{ng}"), ag, ag + cor, VectorKind::Coriolis));
             }
-            out.acceleration.push(pv(format!("a^r_{yn}{ns}{yn}{ng}"), ag + cor, y.a, VectorKind::Sliding));
+            out.acceleration
+                .push(pv(format!("a^r_{yn}{ns}{yn}{ng}"), ag + cor, y.a, VectorKind::Sliding));
         }
     }
     out

@@ -58,7 +58,14 @@ pub struct LinkState {
 
 impl Default for LinkState {
     fn default() -> Self {
-        LinkState { o: Vec2::ZERO, v: Vec2::ZERO, a: Vec2::ZERO, u: Vec2::new(1.0, 0.0), omega: 0.0, eps: 0.0 }
+        LinkState {
+            o: Vec2::ZERO,
+            v: Vec2::ZERO,
+            a: Vec2::ZERO,
+            u: Vec2::new(1.0, 0.0),
+            omega: 0.0,
+            eps: 0.0,
+        }
     }
 }
 
@@ -97,7 +104,14 @@ impl LinkState {
     pub fn from_point(pt: &PointState, l: Vec2, u: Vec2, omega: f64, eps: f64) -> Self {
         let d = -rot(u, l);
         let pd = perp(d);
-        LinkState { o: pt.p + d, v: pt.v + omega * pd, a: pt.a + eps * pd - omega * omega * d, u, omega, eps }
+        LinkState {
+            o: pt.p + d,
+            v: pt.v + omega * pd,
+            a: pt.a + eps * pd - omega * omega * d,
+            u,
+            omega,
+            eps,
+        }
     }
 }
 

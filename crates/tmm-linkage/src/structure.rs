@@ -219,7 +219,11 @@ fn is_group(set: &[usize], pairs: &[PairLink], known: &[bool]) -> Option<Vec<usi
 pub fn classify(set: &mut [usize], pids: &mut Vec<usize>, pairs: &[PairLink]) -> (u32, u32, String) {
     let inset = |l: usize| set.contains(&l);
     let letter = |k: PairKind| if k == PairKind::R { 'R' } else { 'P' };
-    let outer: Vec<usize> = pids.iter().copied().filter(|&i| !(inset(pairs[i].a) && inset(pairs[i].b))).collect();
+    let outer: Vec<usize> = pids
+        .iter()
+        .copied()
+        .filter(|&i| !(inset(pairs[i].a) && inset(pairs[i].b)))
+        .collect();
     let inner: Vec<usize> = pids.iter().copied().filter(|&i| inset(pairs[i].a) && inset(pairs[i].b)).collect();
     let order = outer.len() as u32;
     if set.len() == 2 {
@@ -228,7 +232,9 @@ pub fn classify(set: &mut [usize], pids: &mut Vec<usize>, pairs: &[PairLink]) ->
         let e1 = *outer.iter().find(|&&i| on(l1, i)).unwrap_or(&outer[0]);
         let e2 = *outer.iter().find(|&&i| on(l2, i) && i != e1).unwrap_or(&outer[1]);
         let m = inner[0];
-        let mut kind: String = [letter(pairs[e1].kind), letter(pairs[m].kind), letter(pairs[e2].kind)].iter().collect();
+        let mut kind: String = [letter(pairs[e1].kind), letter(pairs[m].kind), letter(pairs[e2].kind)]
+            .iter()
+            .collect();
         // Normalise mirrored kinds: PRR → RRP, PPR → RPP (swap the links).
         if kind == "PRR" || kind == "PPR" {
             set.swap(0, 1);
@@ -239,7 +245,11 @@ pub fn classify(set: &mut [usize], pids: &mut Vec<usize>, pairs: &[PairLink]) ->
         }
         return (2, order, kind);
     }
-    let max_inner_deg = set.iter().map(|&l| inner.iter().filter(|&&i| pairs[i].a == l || pairs[i].b == l).count()).max().unwrap_or(0) as u32;
+    let max_inner_deg = set
+        .iter()
+        .map(|&l| inner.iter().filter(|&&i| pairs[i].a == l || pairs[i].b == l).count())
+        .max()
+        .unwrap_or(0) as u32;
     let class = if max_inner_deg >= 3 { max_inner_deg } else { inner.len() as u32 };
     let kind: String = outer.iter().chain(inner.iter()).map(|&i| letter(pairs[i].kind)).collect();
     (class.max(3), order, kind)

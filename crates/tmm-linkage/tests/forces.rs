@@ -20,7 +20,10 @@ fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
         l.links[i] = LinkLoad {
             mass: 0.1 + 5.0 * rng.next(),
             inertia: 0.01 + 0.2 * rng.next(),
-            forces: vec![PointForce { local: v(rng.sym(0.2), rng.sym(0.2)), force: v(rng.sym(300.0), rng.sym(300.0)) }],
+            forces: vec![PointForce {
+                local: v(rng.sym(0.2), rng.sym(0.2)),
+                force: v(rng.sym(300.0), rng.sym(300.0)),
+            }],
             moment: rng.sym(50.0),
         };
     }
@@ -29,7 +32,12 @@ fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
 
 /// Virtual power of all given loads at a solved position, computed here from
 /// the link states (not from the crate's reductions).
-fn power(m: &Mechanism, loads: &Loads, sol: &tmm_linkage::Solution, extra: impl Fn(usize, &tmm_linkage::LinkState) -> (Vec2, Vec2, f64)) -> (f64, f64) {
+fn power(
+    m: &Mechanism,
+    loads: &Loads,
+    sol: &tmm_linkage::Solution,
+    extra: impl Fn(usize, &tmm_linkage::LinkState) -> (Vec2, Vec2, f64),
+) -> (f64, f64) {
     let (mut p, mut scale) = (0.0, 0.0);
     for i in 1..m.link_names.len() {
         let s = &sol.links[i];
@@ -77,7 +85,13 @@ fn free_body(m: &Mechanism, f: &tmm_linkage::forces::ForceSolution, links: &[usi
 }
 
 fn all_examples() -> Vec<(&'static str, Mechanism)> {
-    vec![("seed001", seed001()), ("seed003", seed003()), ("seed004", seed004()), ("triad", triad()), ("slotted", slotted())]
+    vec![
+        ("seed001", seed001()),
+        ("seed003", seed003()),
+        ("seed004", seed004()),
+        ("triad", triad()),
+        ("slotted", slotted()),
+    ]
 }
 
 #[test]
@@ -101,7 +115,10 @@ fn virtual_power_balances_at_every_position_of_every_example() {
                 let (p, scale) = power(&m, &loads, &sol, |_, _| (Vec2::ZERO, Vec2::ZERO, 0.0));
                 // M_b·ω1 + Σ F·v + Σ M·ω = 0
                 let resid = f.balancing_moment * w1 + p;
-                assert!(resid.abs() <= 1e-9 * (scale + (f.balancing_moment * w1).abs()), "{name} trial {trial} φ={phi}: {resid} vs {scale}");
+                assert!(
+                    resid.abs() <= 1e-9 * (scale + (f.balancing_moment * w1).abs()),
+                    "{name} trial {trial} φ={phi}: {resid} vs {scale}"
+                );
                 assert!(f.relative_difference() < 1e-9 || (f.balancing_moment - f.zhukovsky_moment).abs() < 1e-9 * scale / w1.abs());
                 solved += 1;
             }
@@ -133,7 +150,10 @@ fn every_group_and_link_free_body_sums_to_zero() {
             // the crank: its loads, reactions and the balancing torque
             let (sf, sm, scale) = free_body(&m, &f, &[m.crank.link]);
             assert!(sf.hypot() <= 1e-9 * scale, "{name} crank force");
-            assert!((sm + f.balancing_moment).abs() <= 1e-9 * (scale + f.balancing_moment.abs()), "{name} crank moment");
+            assert!(
+                (sm + f.balancing_moment).abs() <= 1e-9 * (scale + f.balancing_moment.abs()),
+                "{name} crank moment"
+            );
             // prismatic reactions are normal to their guides (no friction)
             for r in f.reactions.iter().filter(|r| r.prismatic) {
                 if let Pair::P { guide, d, .. } = m.pairs[r.pair] {
@@ -157,10 +177,30 @@ fn crank_slider_static_case_by_hand() {
     let (r, l, phi, p, h, m1, m3, g) = (0.1, 0.35, 50f64.to_radians(), 800.0, 0.02, 2.0, 3.0, 9.81);
     let def = MechanismDef {
         fixed: vec![("O".into(), v(0.0, 0.0))],
-        links: vec![LinkDef::bar("1", "O", "A", r), LinkDef::bar("2", "A", "B", l), LinkDef::block("3", "B")],
-        sliders: vec![SliderDef { slider: "3".into(), point: "B".into(), guide_link: "frame".into(), through: v(0.0, 0.0), angle: 0.0, angle_on_slider: 0.0 }],
-        input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 1e-7, epsilon: 0.0 }),
-        hints: vec![tmm_linkage::AssemblyHint { point: "B".into(), kind: tmm_linkage::HintKind::Near(v(0.4, 0.0)) }],
+        links: vec![
+            LinkDef::bar("1", "O", "A", r),
+            LinkDef::bar("2", "A", "B", l),
+            LinkDef::block("3", "B"),
+        ],
+        sliders: vec![SliderDef {
+            slider: "3".into(),
+            point: "B".into(),
+            guide_link: "frame".into(),
+            through: v(0.0, 0.0),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "O".into(),
+            pin: "A".into(),
+            omega: 1e-7,
+            epsilon: 0.0,
+        }),
+        hints: vec![tmm_linkage::AssemblyHint {
+            point: "B".into(),
+            kind: tmm_linkage::HintKind::Near(v(0.4, 0.0)),
+        }],
         ..Default::default()
     };
     let m = Mechanism::new(&def).unwrap();
@@ -168,7 +208,10 @@ fn crank_slider_static_case_by_hand() {
     loads.gravity = v(0.0, -g);
     loads.links[1].mass = m1;
     loads.links[3].mass = m3;
-    loads.links[3].forces.push(PointForce { local: v(0.0, h), force: v(-p, 0.0) });
+    loads.links[3].forces.push(PointForce {
+        local: v(0.0, h),
+        force: v(-p, 0.0),
+    });
     let mut k = Kinetostatics::new(&m, loads).unwrap();
     let mut sol = m.solution();
     let mut f = k.result();
@@ -207,7 +250,11 @@ fn seed001_sheet3_balancing_force_by_independent_virtual_power() {
         loads.links[i].mass = mass;
         loads.links[i].inertia = 0.1 * mass * lens[i - 1] * lens[i - 1];
     }
-    loads.resistance.push(Resistance { link: 3, action: Action::Moment { sign: None }, law: Law::Constant(380.0) });
+    loads.resistance.push(Resistance {
+        link: 3,
+        action: Action::Moment { sign: None },
+        law: Law::Constant(380.0),
+    });
     let mut k = Kinetostatics::new(&m, loads).unwrap();
     let mut sol = m.solution();
     let mut f = k.result();
@@ -253,7 +300,11 @@ fn seed001_sheet3_balancing_force_by_independent_virtual_power() {
     let mb = -pw / w1;
     let pb = mb / 0.12;
     // the finite differences are accurate to about 1e-7 relative
-    assert!((f.balancing_moment - mb).abs() < 1e-6 * mb.abs(), "kinetostatics {} vs virtual power {mb}", f.balancing_moment);
+    assert!(
+        (f.balancing_moment - mb).abs() < 1e-6 * mb.abs(),
+        "kinetostatics {} vs virtual power {mb}",
+        f.balancing_moment
+    );
     assert!((f.balancing_force - pb).abs() < 1e-6 * pb.abs());
     assert!(f.relative_difference() < 1e-12);
     // the rocker's own check: its speed matches the seed's plan within the seed's 1–2 %
@@ -271,7 +322,11 @@ fn seed001_dyad_reactions_by_the_course_method() {
         loads.links[i].mass = 10.0 * l;
         loads.links[i].inertia = 0.1 * 10.0 * l * l * l;
     }
-    loads.resistance.push(Resistance { link: 3, action: Action::Moment { sign: None }, law: Law::Constant(380.0) });
+    loads.resistance.push(Resistance {
+        link: 3,
+        action: Action::Moment { sign: None },
+        law: Law::Constant(380.0),
+    });
     let mut k = Kinetostatics::new(&m, loads).unwrap();
     let mut sol = m.solution();
     let mut f = k.result();
@@ -294,7 +349,11 @@ fn seed001_dyad_reactions_by_the_course_method() {
     let r12 = e2 * rn12 + n2 * rt12;
     let r03 = e3 * rn03 + n3 * rt03;
     let find = |from: usize, on: usize| {
-        let r = f.reactions.iter().find(|r| (r.from, r.on) == (from, on) || (r.from, r.on) == (on, from)).unwrap();
+        let r = f
+            .reactions
+            .iter()
+            .find(|r| (r.from, r.on) == (from, on) || (r.from, r.on) == (on, from))
+            .unwrap();
         if r.on == on { r.force } else { -r.force }
     };
     assert!((find(1, 2) - r12).hypot() < 1e-9 * r12.hypot());
@@ -307,7 +366,11 @@ fn seed001_dyad_reactions_by_the_course_method() {
 #[test]
 fn beam_diagrams_close_and_moment_derivative_is_shear() {
     let mut rng = Rng(42);
-    for (name, m, link) in [("seed004", seed004(), "4"), ("seed001", seed001(), "2"), ("seed003", seed003(), "3")] {
+    for (name, m, link) in [
+        ("seed004", seed004(), "4"),
+        ("seed001", seed001(), "2"),
+        ("seed003", seed003(), "3"),
+    ] {
         let mut loads = random_loads(&m, &mut rng);
         let li = m.link(link).unwrap();
         // S mid-way so the rod model is uniform except seed003's rocker (S at E, the middle)
@@ -316,16 +379,38 @@ fn beam_diagrams_close_and_moment_derivative_is_shear() {
         let mut sol = m.solution();
         let mut f = k.result();
         k.solve_at(m.assembly_angle + 0.7, &mut sol, &mut f).unwrap();
-        let pts: Vec<Vec2> = m.pairs.iter().filter_map(|p| match *p {
-            Pair::R { a, b, la, lb, .. } => if a == li { Some(la) } else if b == li { Some(lb) } else { None },
-            _ => None,
-        }).collect();
+        let pts: Vec<Vec2> = m
+            .pairs
+            .iter()
+            .filter_map(|p| match *p {
+                Pair::R { a, b, la, lb, .. } => {
+                    if a == li {
+                        Some(la)
+                    } else if b == li {
+                        Some(lb)
+                    } else {
+                        None
+                    }
+                }
+                _ => None,
+            })
+            .collect();
         let (mut a, mut b) = (pts[0], pts[1]);
-        for p in &pts { for q in &pts { if (*p - *q).hypot() > (a - b).hypot() { a = *p; b = *q; } } }
+        for p in &pts {
+            for q in &pts {
+                if (*p - *q).hypot() > (a - b).hypot() {
+                    a = *p;
+                    b = *q;
+                }
+            }
+        }
         let beam = Beam::new(&m, &loads, &sol, &f, li, a, b).unwrap();
         let scale: f64 = beam.loads.iter().map(|l| l.fe.abs() + l.fn_.abs()).sum::<f64>() + 1.0;
         let c = beam.closure();
-        assert!(c.n.abs() < 1e-9 * scale && c.q.abs() < 1e-9 * scale && c.m.abs() < 1e-9 * scale * beam.length, "{name}: {c:?}");
+        assert!(
+            c.n.abs() < 1e-9 * scale && c.q.abs() < 1e-9 * scale && c.m.abs() < 1e-9 * scale * beam.length,
+            "{name}: {c:?}"
+        );
         // dM/dz = Q between loads, by central differences
         let zs: Vec<f64> = beam.loads.iter().map(|l| l.z).collect();
         let (z0, z1) = beam.z_range;
@@ -353,8 +438,18 @@ fn uniform_rotating_rod_inertia_is_linearly_distributed() {
     // With the section cut at z the outer part pulls: N(z) = ρω²(L² − z²)/2.
     let def = MechanismDef {
         fixed: vec![("O".into(), v(0.0, 0.0)), ("D".into(), v(0.3, 0.0))],
-        links: vec![LinkDef::bar("1", "O", "A", 0.2), LinkDef::bar("2", "A", "B", 0.3), LinkDef::bar("3", "D", "B", 0.3)],
-        input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 30.0, epsilon: 0.0 }),
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.2),
+            LinkDef::bar("2", "A", "B", 0.3),
+            LinkDef::bar("3", "D", "B", 0.3),
+        ],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "O".into(),
+            pin: "A".into(),
+            omega: 30.0,
+            epsilon: 0.0,
+        }),
         ..Default::default()
     };
     let m = Mechanism::new(&def).unwrap();
@@ -385,12 +480,26 @@ fn bad_loads_are_reported() {
     // a load diagram that stops short of the stroke
     let m = seed003();
     let mut loads = Loads::new(&m);
-    loads.resistance.push(Resistance { link: 5, action: Action::Force { local: v(0.0, 0.0), dir: None }, law: Law::TravelTable(vec![(0.0, 100.0), (0.05, 100.0)]) });
+    loads.resistance.push(Resistance {
+        link: 5,
+        action: Action::Force {
+            local: v(0.0, 0.0),
+            dir: None,
+        },
+        law: Law::TravelTable(vec![(0.0, 100.0), (0.05, 100.0)]),
+    });
     let e = Kinetostatics::new(&m, loads).unwrap_err();
     assert!(e.to_string().contains("covers travel"), "{e}");
     // a malformed table
     let mut loads = Loads::new(&m);
-    loads.resistance.push(Resistance { link: 5, action: Action::Force { local: v(0.0, 0.0), dir: None }, law: Law::TravelTable(vec![(0.0, 1.0), (0.0, 2.0)]) });
+    loads.resistance.push(Resistance {
+        link: 5,
+        action: Action::Force {
+            local: v(0.0, 0.0),
+            dir: None,
+        },
+        law: Law::TravelTable(vec![(0.0, 1.0), (0.0, 2.0)]),
+    });
     assert!(Kinetostatics::new(&m, loads).is_err());
 }
 
@@ -398,7 +507,14 @@ fn bad_loads_are_reported() {
 fn seed003_sine_resistance_acts_on_the_working_stroke_only() {
     let m = seed003();
     let mut loads = Loads::new(&m);
-    loads.resistance.push(Resistance { link: 5, action: Action::Force { local: v(0.0, 0.0), dir: None }, law: Law::SineOfTravel(3000.0) });
+    loads.resistance.push(Resistance {
+        link: 5,
+        action: Action::Force {
+            local: v(0.0, 0.0),
+            dir: None,
+        },
+        law: Law::SineOfTravel(3000.0),
+    });
     let mut k = Kinetostatics::new(&m, loads).unwrap();
     let st = k.stroke.clone().unwrap();
     // the working stroke is the slower one
@@ -410,7 +526,11 @@ fn seed003_sine_resistance_acts_on_the_working_stroke_only() {
         let phi = st.phi_start + m.crank.omega.signum() * (i as f64 + 0.5) * 10f64.to_radians();
         k.solve_at(phi, &mut sol, &mut f).unwrap();
         let ph = f.phase.unwrap();
-        let expect = if ph.working { 3000.0 * (std::f64::consts::PI * ph.travel / st.travel).sin() } else { 0.0 };
+        let expect = if ph.working {
+            3000.0 * (std::f64::consts::PI * ph.travel / st.travel).sin()
+        } else {
+            0.0
+        };
         assert!((f.resistance[0] - expect).abs() < 1e-9);
         // travel from the dead position, computed here from the slider's x
         if ph.working { work += 1 } else { ret += 1 }

@@ -9,24 +9,47 @@ pub fn v(x: f64, y: f64) -> Vec2 {
 }
 
 fn near(p: &str, x: f64, y: f64) -> AssemblyHint {
-    AssemblyHint { point: p.into(), kind: HintKind::Near(v(x, y)) }
+    AssemblyHint {
+        point: p.into(),
+        kind: HintKind::Near(v(x, y)),
+    }
 }
 
 fn input(link: &str, pivot: &str, pin: &str, omega: f64) -> Option<InputDef> {
-    Some(InputDef { link: link.into(), pivot: pivot.into(), pin: pin.into(), omega, epsilon: 0.0 })
+    Some(InputDef {
+        link: link.into(),
+        pivot: pivot.into(),
+        pin: pin.into(),
+        omega,
+        epsilon: 0.0,
+    })
 }
 
 fn slider(link: &str, point: &str, through: Vec2, angle_deg: f64) -> SliderDef {
-    SliderDef { slider: link.into(), point: point.into(), guide_link: "frame".into(), through, angle: angle_deg.to_radians(), angle_on_slider: 0.0 }
+    SliderDef {
+        slider: link.into(),
+        point: point.into(),
+        guide_link: "frame".into(),
+        through,
+        angle: angle_deg.to_radians(),
+        angle_on_slider: 0.0,
+    }
 }
 
 /// Seed 001 four-bar: A(0,0), D(0.51,0), AB 0.12, BC 0.48, DC 0.38 m, 900 rpm ccw, C below AD.
 pub fn seed001() -> Mechanism {
     let def = MechanismDef {
         fixed: vec![("A".into(), v(0.0, 0.0)), ("D".into(), v(0.51, 0.0))],
-        links: vec![LinkDef::bar("1", "A", "B", 0.12), LinkDef::bar("2", "B", "C", 0.48), LinkDef::bar("3", "D", "C", 0.38)],
+        links: vec![
+            LinkDef::bar("1", "A", "B", 0.12),
+            LinkDef::bar("2", "B", "C", 0.48),
+            LinkDef::bar("3", "D", "C", 0.38),
+        ],
         input: input("1", "A", "B", 900.0 * std::f64::consts::PI / 30.0),
-        hints: vec![AssemblyHint { point: "C".into(), kind: HintKind::Below("A".into(), "D".into()) }],
+        hints: vec![AssemblyHint {
+            point: "C".into(),
+            kind: HintKind::Below("A".into(), "D".into()),
+        }],
         assembly_angle: 15f64.to_radians(),
         ..Default::default()
     };
@@ -35,13 +58,29 @@ pub fn seed001() -> Mechanism {
 
 /// Seed 003 six-bar (examples/seed-003-sixbar.toml).
 pub fn seed003() -> Mechanism {
-    let rocker = LinkDef { name: "3".into(), points: vec![("E".into(), v(0.0, 0.0)), ("B".into(), v(0.6, 0.0)), ("C".into(), v(-0.6, 0.0))], mass_center: v(0.0, 0.0) };
+    let rocker = LinkDef {
+        name: "3".into(),
+        points: vec![("E".into(), v(0.0, 0.0)), ("B".into(), v(0.6, 0.0)), ("C".into(), v(-0.6, 0.0))],
+        mass_center: v(0.0, 0.0),
+    };
     let def = MechanismDef {
         fixed: vec![("O".into(), v(-1.25, 0.0)), ("E".into(), v(0.0, 0.0))],
-        links: vec![LinkDef::bar("1", "O", "A", 0.27), LinkDef::bar("2", "A", "B", 1.25), rocker, LinkDef::bar("4", "C", "D", 0.65), LinkDef::block("5", "D")],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.27),
+            LinkDef::bar("2", "A", "B", 1.25),
+            rocker,
+            LinkDef::bar("4", "C", "D", 0.65),
+            LinkDef::block("5", "D"),
+        ],
         sliders: vec![slider("5", "D", v(0.0, -0.2), 0.0)],
         input: input("1", "O", "A", 12.0),
-        hints: vec![AssemblyHint { point: "B".into(), kind: HintKind::Above("O".into(), "E".into()) }, near("D", 0.5, -0.2)],
+        hints: vec![
+            AssemblyHint {
+                point: "B".into(),
+                kind: HintKind::Above("O".into(), "E".into()),
+            },
+            near("D", 0.5, -0.2),
+        ],
         assembly_angle: 80f64.to_radians(),
         ..Default::default()
     };
@@ -50,10 +89,19 @@ pub fn seed003() -> Mechanism {
 
 /// Seed 004 six-bar with two sliders (examples/seed-004-two-sliders.toml).
 pub fn seed004() -> Mechanism {
-    let coupler = LinkDef { points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.09, 0.0)), ("E".into(), v(0.045, 0.0))], ..LinkDef::bar("2", "B", "C", 0.09) };
+    let coupler = LinkDef {
+        points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.09, 0.0)), ("E".into(), v(0.045, 0.0))],
+        ..LinkDef::bar("2", "B", "C", 0.09)
+    };
     let def = MechanismDef {
         fixed: vec![("A".into(), v(0.0, 0.0))],
-        links: vec![LinkDef::bar("1", "A", "B", 0.03), coupler, LinkDef::bar("4", "E", "D", 0.115), LinkDef::block("3", "C"), LinkDef::block("5", "D")],
+        links: vec![
+            LinkDef::bar("1", "A", "B", 0.03),
+            coupler,
+            LinkDef::bar("4", "E", "D", 0.115),
+            LinkDef::block("3", "C"),
+            LinkDef::block("5", "D"),
+        ],
         sliders: vec![slider("3", "C", v(0.0, 0.0), 0.0), slider("5", "D", v(0.06, 0.0), 90.0)],
         input: input("1", "A", "B", 40.82),
         hints: vec![near("C", 0.12, 0.0), near("D", 0.06, 0.12)],
@@ -65,10 +113,24 @@ pub fn seed004() -> Mechanism {
 /// Class-III mechanism (examples/class3-triad.toml).
 pub fn triad() -> Mechanism {
     let a = -58.67f64.to_radians();
-    let base = LinkDef { name: "3".into(), points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.25, 0.0)), ("D".into(), v(0.2693 * a.cos(), 0.2693 * a.sin()))], mass_center: v(0.12, -0.05) };
+    let base = LinkDef {
+        name: "3".into(),
+        points: vec![
+            ("B".into(), v(0.0, 0.0)),
+            ("C".into(), v(0.25, 0.0)),
+            ("D".into(), v(0.2693 * a.cos(), 0.2693 * a.sin())),
+        ],
+        mass_center: v(0.12, -0.05),
+    };
     let def = MechanismDef {
         fixed: vec![("O1".into(), v(0.0, 0.0)), ("E".into(), v(0.7, 0.6)), ("F".into(), v(0.9, 0.0))],
-        links: vec![LinkDef::bar("1", "O1", "A", 0.02), LinkDef::bar("2", "A", "B", 0.4294), base, LinkDef::bar("4", "C", "E", 0.2693), LinkDef::bar("5", "D", "F", 0.2693)],
+        links: vec![
+            LinkDef::bar("1", "O1", "A", 0.02),
+            LinkDef::bar("2", "A", "B", 0.4294),
+            base,
+            LinkDef::bar("4", "C", "E", 0.2693),
+            LinkDef::bar("5", "D", "F", 0.2693),
+        ],
         input: input("1", "O1", "A", 10.0),
         hints: vec![near("C", 0.6, 0.35), near("D", 0.65, 0.1), near("B", 0.4, 0.2)],
         ..Default::default()
@@ -81,8 +143,19 @@ pub fn triad() -> Mechanism {
 pub fn slotted() -> Mechanism {
     let def = MechanismDef {
         fixed: vec![("O".into(), v(0.0, 0.0)), ("C".into(), v(0.0, -0.3))],
-        links: vec![LinkDef::bar("1", "O", "A", 0.1), LinkDef::block("2", "A"), LinkDef::bar("3", "C", "K", 0.6)],
-        sliders: vec![SliderDef { slider: "2".into(), point: "A".into(), guide_link: "3".into(), through: v(0.0, 0.0), angle: 0.0, angle_on_slider: 0.0 }],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.1),
+            LinkDef::block("2", "A"),
+            LinkDef::bar("3", "C", "K", 0.6),
+        ],
+        sliders: vec![SliderDef {
+            slider: "2".into(),
+            point: "A".into(),
+            guide_link: "3".into(),
+            through: v(0.0, 0.0),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
         input: input("1", "O", "A", -7.0),
         ..Default::default()
     };

@@ -19,9 +19,26 @@ const D: f64 = 0.51;
 fn fourbar(above: bool, omega: f64) -> Mechanism {
     let def = MechanismDef {
         fixed: vec![("A".into(), Vec2::new(0.0, 0.0)), ("D".into(), Vec2::new(D, 0.0))],
-        links: vec![LinkDef::bar("1", "A", "B", A), LinkDef::bar("2", "B", "C", B), LinkDef::bar("3", "D", "C", C)],
-        input: Some(InputDef { link: "1".into(), pivot: "A".into(), pin: "B".into(), omega, epsilon: 0.0 }),
-        hints: vec![AssemblyHint { point: "C".into(), kind: if above { HintKind::Above("A".into(), "D".into()) } else { HintKind::Below("A".into(), "D".into()) } }],
+        links: vec![
+            LinkDef::bar("1", "A", "B", A),
+            LinkDef::bar("2", "B", "C", B),
+            LinkDef::bar("3", "D", "C", C),
+        ],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "A".into(),
+            pin: "B".into(),
+            omega,
+            epsilon: 0.0,
+        }),
+        hints: vec![AssemblyHint {
+            point: "C".into(),
+            kind: if above {
+                HintKind::Above("A".into(), "D".into())
+            } else {
+                HintKind::Below("A".into(), "D".into())
+            },
+        }],
         ..Default::default()
     };
     Mechanism::new(&def).unwrap()
@@ -54,7 +71,10 @@ fn closed(t2: f64, w2: f64, sign: f64) -> (f64, f64, f64, f64, f64, f64) {
     // accelerations: a(−ω2²)e^{iθ2} + b(iα3 − ω3²)e^{iθ3} − c(iα4 − ω4²)e^{iθ4} = 0
     // real: −a ω2² cosθ2 − b α3 sinθ3 − b ω3² cosθ3 + c α4 sinθ4 + c ω4² cosθ4 = 0
     // imag: −a ω2² sinθ2 + b α3 cosθ3 − b ω3² sinθ3 − c α4 cosθ4 + c ω4² sinθ4 = 0
-    let ra = [a * w2 * w2 * t2.cos() + b * w3 * w3 * t3.cos() - c * w4 * w4 * t4.cos(), a * w2 * w2 * t2.sin() + b * w3 * w3 * t3.sin() - c * w4 * w4 * t4.sin()];
+    let ra = [
+        a * w2 * w2 * t2.cos() + b * w3 * w3 * t3.cos() - c * w4 * w4 * t4.cos(),
+        a * w2 * w2 * t2.sin() + b * w3 * w3 * t3.sin() - c * w4 * w4 * t4.sin(),
+    ];
     let a3 = (ra[0] * m[1][1] - m[0][1] * ra[1]) / det;
     let a4 = (m[0][0] * ra[1] - ra[0] * m[1][0]) / det;
     (t3, t4, w3, w4, a3, a4)

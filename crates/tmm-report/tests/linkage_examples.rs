@@ -47,14 +47,28 @@ fn velocities_and_accelerations_are_finite_differences() {
                 let (v, a) = (s0.points[i].v, s0.points[i].a);
                 let vs = v.hypot().max(w.abs() * 1e-3);
                 let as_ = a.hypot().max(w * w * 1e-3);
-                assert!((v - v_fd).hypot() <= 1e-6 * vs, "{name} {} v {v:?} vs {v_fd:?} at {phi}", m.points[i].name);
-                assert!((a - a_fd).hypot() <= 1e-6 * as_, "{name} {} a {a:?} vs {a_fd:?} at {phi}", m.points[i].name);
+                assert!(
+                    (v - v_fd).hypot() <= 1e-6 * vs,
+                    "{name} {} v {v:?} vs {v_fd:?} at {phi}",
+                    m.points[i].name
+                );
+                assert!(
+                    (a - a_fd).hypot() <= 1e-6 * as_,
+                    "{name} {} a {a:?} vs {a_fd:?} at {phi}",
+                    m.points[i].name
+                );
             }
             for l in 1..m.link_names.len() {
                 let om_fd = tmm_geom::angle::wrap_pi(sp.links[l].angle() - sm.links[l].angle()) * (w / (2.0 * h));
                 let ep_fd = (sp.links[l].omega - sm.links[l].omega) * (w / (2.0 * h));
-                assert!((s0.links[l].omega - om_fd).abs() <= 1e-6 * w.abs().max(s0.links[l].omega.abs()), "{name} ω{l}");
-                assert!((s0.links[l].eps - ep_fd).abs() <= 1e-6 * (w * w).max(s0.links[l].eps.abs()), "{name} ε{l}");
+                assert!(
+                    (s0.links[l].omega - om_fd).abs() <= 1e-6 * w.abs().max(s0.links[l].omega.abs()),
+                    "{name} ω{l}"
+                );
+                assert!(
+                    (s0.links[l].eps - ep_fd).abs() <= 1e-6 * (w * w).max(s0.links[l].eps.abs()),
+                    "{name} ε{l}"
+                );
             }
         }
     }
@@ -75,7 +89,15 @@ fn lengths_and_guides_hold() {
                         let d = s.links[a].pos(la) - s.links[b].pos(lb);
                         assert!(d.hypot() < 1e-12, "{name}: joint open by {} at {phi}", d.hypot());
                     }
-                    Pair::P { slider, guide, ps, q, d, rel, .. } => {
+                    Pair::P {
+                        slider,
+                        guide,
+                        ps,
+                        q,
+                        d,
+                        rel,
+                        ..
+                    } => {
                         let g = &s.links[guide];
                         let n = rot(g.u, tmm_geom::perp(d));
                         let off = (s.links[slider].pos(ps) - g.pos(q)).dot(n);
@@ -124,7 +146,17 @@ fn structure_of_every_example() {
         assert_eq!((s.redundant, s.passive), (0, 0), "{file}");
     }
     // the kinds of the dyads
-    let kinds = |f: &str| ex.iter().find(|(x, _)| x == f).unwrap().1.structure.groups.iter().map(|g| g.kind.clone()).collect::<Vec<_>>();
+    let kinds = |f: &str| {
+        ex.iter()
+            .find(|(x, _)| x == f)
+            .unwrap()
+            .1
+            .structure
+            .groups
+            .iter()
+            .map(|g| g.kind.clone())
+            .collect::<Vec<_>>()
+    };
     assert_eq!(kinds("seed-002-shaper.toml"), ["RPR", "RRP"]);
     assert_eq!(kinds("seed-003-sixbar.toml"), ["RRR", "RRP"]);
     assert_eq!(kinds("crank-slider-offset.toml"), ["RRP"]);

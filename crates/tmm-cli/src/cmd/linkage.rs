@@ -3,9 +3,9 @@
 use std::path::PathBuf;
 
 use tmm_geom::units::Dim;
+use tmm_report::Error;
 use tmm_report::linkage::{analyse, json_document, load, text_report, write_svgs};
 use tmm_report::task::arg_qty;
-use tmm_report::Error;
 
 use super::common::{print_json, read_task};
 
@@ -33,7 +33,8 @@ pub struct Args {
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
     let task = read_task(&a.file)?;
-    let l = load(&task)?.ok_or_else(|| Error::input(&task.name, "the file has no [linkage] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let l = load(&task)?
+        .ok_or_else(|| Error::input(&task.name, "the file has no [linkage] section").with_help("see examples/seed-001-fourbar.toml"))?;
     let at = match &a.at {
         Some(t) => Some(arg_qty("--at", t, Dim::Angle)?),
         None => None,

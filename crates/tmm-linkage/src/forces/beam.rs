@@ -83,7 +83,15 @@ pub struct Beam {
 impl Beam {
     /// Build the beam of link `link` with its axis from local point `a` to
     /// local point `b`, from a solved position and its kinetostatics.
-    pub fn new(m: &Mechanism, loads: &Loads, sol: &Solution, fs: &ForceSolution, link: usize, a: Vec2, b: Vec2) -> Result<Self, ForceError> {
+    pub fn new(
+        m: &Mechanism,
+        loads: &Loads,
+        sol: &Solution,
+        fs: &ForceSolution,
+        link: usize,
+        a: Vec2,
+        b: Vec2,
+    ) -> Result<Self, ForceError> {
         let name = &m.link_names[link];
         let st = &sol.links[link];
         let (pa, pb) = (st.pos(a), st.pos(b));
@@ -99,7 +107,13 @@ impl Beam {
             let z = r.dot(e);
             let h = r.dot(n);
             // the force at p = the force at the axis point z plus the couple of its offset h·n
-            out.push(BeamLoad { label, z, fe: f.dot(e), fn_: f.dot(n), couple: c + cross(n * h, f) });
+            out.push(BeamLoad {
+                label,
+                z,
+                fe: f.dot(e),
+                fn_: f.dot(n),
+                couple: c + cross(n * h, f),
+            });
         };
         // pair reactions
         for r in &fs.reactions {
@@ -135,7 +149,10 @@ impl Beam {
             if rho0 < -1e-12 * mass / len || rho0 + rho1 * len < -1e-12 * mass / len {
                 return Err(ForceError::load(
                     format!("strength.{name}"),
-                    format!("the centre of mass is {:.4} of the way along the beam; a rod with density varying linearly needs it within 1/3…2/3 of the length", zs / len),
+                    format!(
+                        "the centre of mass is {:.4} of the way along the beam; a rod with density varying linearly needs it within 1/3…2/3 of the length",
+                        zs / len
+                    ),
                 ));
             }
             let (_, a_a) = st.kin_at(pa);
@@ -155,7 +172,9 @@ impl Beam {
             if (lf.s - ps).hypot() <= 1e-12 * len {
                 // S on the axis: one concentrated remainder, the torque (J_line − J_S)·ε
                 let (df, dc) = (true_f - line_f, lf.inertia_moment + j_line * st.eps);
-                if df.hypot() > 1e-12 * (true_f.hypot() + line_f.hypot()) || dc.abs() > 1e-12 * (lf.inertia_moment.abs() + (j_line * st.eps).abs()) {
+                if df.hypot() > 1e-12 * (true_f.hypot() + line_f.hypot())
+                    || dc.abs() > 1e-12 * (lf.inertia_moment.abs() + (j_line * st.eps).abs())
+                {
                     push("S: J_S − J_rod torque".into(), ps, df, dc);
                 }
             } else {
@@ -166,7 +185,16 @@ impl Beam {
         out.sort_by(|x, y| x.z.total_cmp(&y.z));
         let zmin = out.first().map_or(0.0, |l| l.z).min(0.0);
         let zmax = out.last().map_or(len, |l| l.z).max(len);
-        Ok(Beam { link, origin: pa, axis: e, length: len, loads: out, qe, qn, z_range: (zmin, zmax) })
+        Ok(Beam {
+            link,
+            origin: pa,
+            axis: e,
+            length: len,
+            loads: out,
+            qe,
+            qn,
+            z_range: (zmin, zmax),
+        })
     }
 
     /// N, Q, M just right of section z (loads at z included when `after`).

@@ -41,6 +41,9 @@ pub enum ForceError {
 impl ForceError {
     /// A load error.
     pub fn load(field: impl Into<String>, message: impl Into<String>) -> Self {
-        ForceError::Load { field: field.into(), message: message.into() }
+        ForceError::Load {
+            field: field.into(),
+            message: message.into(),
+        }
     }
 }

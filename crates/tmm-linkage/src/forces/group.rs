@@ -41,7 +41,11 @@ impl GroupWork {
     /// Buffers for groups of up to `max_links` links.
     pub fn new(max_links: usize) -> Self {
         let n = 3 * max_links.max(1);
-        GroupWork { jac: vec![0.0; n * n], jt: vec![0.0; n * n], rhs: vec![0.0; n] }
+        GroupWork {
+            jac: vec![0.0; n * n],
+            jt: vec![0.0; n * n],
+            rhs: vec![0.0; n],
+        }
     }
 }
 
@@ -63,7 +67,14 @@ pub struct PairForce {
 /// `links`, given the applied loads `q[i] = (force, moment about the link's
 /// local origin)` of `links[i]`. Writes one [`PairForce`] per pair into `out`.
 /// Returns `false` when the equilibrium equations are singular.
-pub fn solve_group(pairs: &[&Pair], links: &[usize], states: &[LinkState], q: &[(Vec2, f64)], work: &mut GroupWork, out: &mut [PairForce]) -> bool {
+pub fn solve_group(
+    pairs: &[&Pair],
+    links: &[usize],
+    states: &[LinkState],
+    q: &[(Vec2, f64)],
+    work: &mut GroupWork,
+    out: &mut [PairForce],
+) -> bool {
     let n = 3 * links.len();
     let jac = &mut work.jac[..n * n];
     let rows = constraints::assemble(pairs, links, states, Mode::Velocity, jac, &mut work.rhs[..n]);
@@ -88,10 +99,18 @@ pub fn solve_group(pairs: &[&Pair], links: &[usize], states: &[LinkState], q: &[
     for (k, p) in pairs.iter().enumerate() {
         let (l1, l2) = (b[2 * k], b[2 * k + 1]);
         out[k] = match **p {
-            Pair::R { a, la, .. } => PairForce { force: Vec2::new(l1, l2), at: states[a].pos(la), couple: 0.0 },
+            Pair::R { a, la, .. } => PairForce {
+                force: Vec2::new(l1, l2),
+                at: states[a].pos(la),
+                couple: 0.0,
+            },
             Pair::P { slider, guide, ps, d, .. } => {
                 let nrm = rot(states[guide].u, perp(d));
-                PairForce { force: nrm * l1, at: states[slider].pos(ps), couple: l2 }
+                PairForce {
+                    force: nrm * l1,
+                    at: states[slider].pos(ps),
+                    couple: l2,
+                }
             }
         };
     }

@@ -102,7 +102,11 @@ impl ForceSolution {
     /// |M_b − M_Zh| / max(|M_b|, |M_Zh|), 0 when both are 0.
     pub fn relative_difference(&self) -> f64 {
         let s = self.balancing_moment.abs().max(self.zhukovsky_moment.abs());
-        if s == 0.0 { 0.0 } else { (self.balancing_moment - self.zhukovsky_moment).abs() / s }
+        if s == 0.0 {
+            0.0
+        } else {
+            (self.balancing_moment - self.zhukovsky_moment).abs() / s
+        }
     }
 }
 
@@ -130,11 +134,25 @@ impl<'m> Kinetostatics<'m> {
     /// As [`Kinetostatics::new`], choosing which stroke is the working one.
     pub fn with_working(m: &'m Mechanism, loads: Loads, working: Working) -> Result<Self, ForceError> {
         loads.check(m)?;
-        let stroke = if loads.resistance.iter().any(|r| r.law.needs_stroke()) { Some(Stroke::find(m, m.output, working)?) } else { None };
+        let stroke = if loads.resistance.iter().any(|r| r.law.needs_stroke()) {
+            Some(Stroke::find(m, m.output, working)?)
+        } else {
+            None
+        };
         for (k, r) in loads.resistance.iter().enumerate() {
-            r.law.check_cover(&format!("resistance[{k}]"), stroke.as_ref(), &|x, ang| if ang { format!("{:.4}°", x.to_degrees()) } else { format!("{:.6} m", x) })?;
+            r.law.check_cover(&format!("resistance[{k}]"), stroke.as_ref(), &|x, ang| {
+                if ang {
+                    format!("{:.4}°", x.to_degrees())
+                } else {
+                    format!("{:.6} m", x)
+                }
+            })?;
         }
-        let gpairs = m.groups.iter().map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect()).collect();
+        let gpairs = m
+            .groups
+            .iter()
+            .map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect())
+            .collect();
         let c = m.crank.link;
         let pivot_pair = m
             .pairs
@@ -142,7 +160,14 @@ impl<'m> Kinetostatics<'m> {
             .position(|p| matches!(*p, Pair::R { a, b, .. } if (a == 0 && b == c) || (a == c && b == 0)))
             .ok_or_else(|| ForceError::load("input", "the crank has no revolute pair with the frame"))?;
         let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
-        Ok(Kinetostatics { m, loads, stroke, gpairs, pivot_pair, work: GroupWork::new(max_links) })
+        Ok(Kinetostatics {
+            m,
+            loads,
+            stroke,
+            gpairs,
+            pivot_pair,
+            work: GroupWork::new(max_links),
+        })
     }
 
     /// A fresh result buffer.
@@ -204,7 +229,16 @@ impl<'m> Kinetostatics<'m> {
             }
             let f = fi + w + fe;
             let mo = mi + me;
-            out.links[l] = LinkForces { s, inertia_force: fi, inertia_moment: mi, weight: w, external_force: fe, external_moment: me, force: f, moment: mo };
+            out.links[l] = LinkForces {
+                s,
+                inertia_force: fi,
+                inertia_moment: mi,
+                weight: w,
+                external_force: fe,
+                external_moment: me,
+                force: f,
+                moment: mo,
+            };
             out.acc[l] = about_origin(st.o, f, s, mo);
         }
         // --- Assur groups from the last one back to the crank
@@ -214,14 +248,28 @@ impl<'m> Kinetostatics<'m> {
                 out.q[i] = out.acc[l];
             }
             let prs = &self.gpairs[g];
-            if !solve_group(prs, links, &sol.links, &out.q[..links.len()], &mut self.work, &mut out.pf[..prs.len()]) {
-                return Err(ForceError::Singular { phi_deg: phi.to_degrees(), group: grp.label() });
+            if !solve_group(
+                prs,
+                links,
+                &sol.links,
+                &out.q[..links.len()],
+                &mut self.work,
+                &mut out.pf[..prs.len()],
+            ) {
+                return Err(ForceError::Singular {
+                    phi_deg: phi.to_degrees(),
+                    group: grp.label(),
+                });
             }
             for (k, &pid) in grp.info.pair_ids.iter().enumerate() {
                 let p = &m.pairs[pid];
                 let (first, other) = p.links();
                 let pf = out.pf[k];
-                let (on, from, f, c) = if links.contains(&first) { (first, other, pf.force, pf.couple) } else { (other, first, -pf.force, -pf.couple) };
+                let (on, from, f, c) = if links.contains(&first) {
+                    (first, other, pf.force, pf.couple)
+                } else {
+                    (other, first, -pf.force, -pf.couple)
+                };
                 out.reactions[pid] = reaction(pid, p, from, on, f, pf.at, c, sol);
                 if from != 0 && !links.contains(&from) {
                     let (df, dm) = about_origin(sol.links[from].o, -f, pf.at, -c);
@@ -244,7 +292,10 @@ impl<'m> Kinetostatics<'m> {
         out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
         out.zhukovsky_moment = zhukovsky::balancing_moment(m, &self.loads, sol, &out.resistance);
         // --- nothing non-finite leaves
-        let bad = |what: &str| ForceError::NonFinite { phi_deg: phi.to_degrees(), what: what.to_string() };
+        let bad = |what: &str| ForceError::NonFinite {
+            phi_deg: phi.to_degrees(),
+            what: what.to_string(),
+        };
         if !(out.balancing_moment.is_finite() && out.zhukovsky_moment.is_finite()) {
             return Err(bad("the balancing torque"));
         }
@@ -273,5 +324,15 @@ fn reaction(pair: usize, p: &Pair, from: usize, on: usize, force: Vec2, at: Vec2
         }
         Pair::R { .. } => (false, 0.0, at),
     };
-    Reaction { pair, from, on, force, at, normal: force.dot(u), tangential: force.dot(perp(u)), offset, prismatic }
+    Reaction {
+        pair,
+        from,
+        on,
+        force,
+        at,
+        normal: force.dot(u),
+        tangential: force.dot(perp(u)),
+        offset,
+        prismatic,
+    }
 }

@@ -51,13 +51,20 @@ pub struct Loads {
 impl Loads {
     /// No loads at all on a mechanism's links.
     pub fn new(m: &Mechanism) -> Self {
-        Loads { links: vec![LinkLoad::default(); m.link_names.len()], gravity: Vec2::ZERO, resistance: Vec::new() }
+        Loads {
+            links: vec![LinkLoad::default(); m.link_names.len()],
+            gravity: Vec2::ZERO,
+            resistance: Vec::new(),
+        }
     }
 
     /// Check that the loads fit the mechanism and are physical.
     pub fn check(&self, m: &Mechanism) -> Result<(), ForceError> {
         if self.links.len() != m.link_names.len() {
-            return Err(ForceError::load("links", format!("{} link loads for {} links", self.links.len(), m.link_names.len())));
+            return Err(ForceError::load(
+                "links",
+                format!("{} link loads for {} links", self.links.len(), m.link_names.len()),
+            ));
         }
         if !(self.gravity.x.is_finite() && self.gravity.y.is_finite()) {
             return Err(ForceError::load("gravity", "must be finite"));
@@ -65,10 +72,16 @@ impl Loads {
         for (i, l) in self.links.iter().enumerate().skip(1) {
             let name = &m.link_names[i];
             if !(l.mass.is_finite() && l.mass >= 0.0) {
-                return Err(ForceError::load(format!("links.{name}.mass"), format!("the mass must be ≥ 0 kg, not {}", l.mass)));
+                return Err(ForceError::load(
+                    format!("links.{name}.mass"),
+                    format!("the mass must be ≥ 0 kg, not {}", l.mass),
+                ));
             }
             if !(l.inertia.is_finite() && l.inertia >= 0.0) {
-                return Err(ForceError::load(format!("links.{name}.inertia"), format!("the moment of inertia must be ≥ 0 kg·m², not {}", l.inertia)));
+                return Err(ForceError::load(
+                    format!("links.{name}.inertia"),
+                    format!("the moment of inertia must be ≥ 0 kg·m², not {}", l.inertia),
+                ));
             }
             if !l.moment.is_finite() {
                 return Err(ForceError::load(format!("links.{name}.moment"), "must be finite"));
@@ -81,7 +94,10 @@ impl Loads {
         }
         for (k, r) in self.resistance.iter().enumerate() {
             if r.link == 0 || r.link >= m.link_names.len() {
-                return Err(ForceError::load(format!("resistance[{k}].link"), "the useful resistance must act on a moving link"));
+                return Err(ForceError::load(
+                    format!("resistance[{k}].link"),
+                    "the useful resistance must act on a moving link",
+                ));
             }
             r.law.check(&format!("resistance[{k}]"))?;
         }

@@ -71,18 +71,30 @@ impl Law {
 
     /// Check the law's own numbers (`field` names it in messages).
     pub fn check(&self, field: &str) -> Result<(), ForceError> {
-        let finite = |v: f64, what: &str| if v.is_finite() { Ok(()) } else { Err(ForceError::load(format!("{field}.{what}"), "must be finite")) };
+        let finite = |v: f64, what: &str| {
+            if v.is_finite() {
+                Ok(())
+            } else {
+                Err(ForceError::load(format!("{field}.{what}"), "must be finite"))
+            }
+        };
         match self {
             Law::Constant(v) | Law::WorkingStroke(v) | Law::SineOfTravel(v) => finite(*v, "value"),
             Law::TravelTable(t) | Law::AngleTable(t) => {
                 if t.len() < 2 {
-                    return Err(ForceError::load(format!("{field}.table"), "a load diagram needs at least two points [x, value]"));
+                    return Err(ForceError::load(
+                        format!("{field}.table"),
+                        "a load diagram needs at least two points [x, value]",
+                    ));
                 }
                 for (i, &(x, v)) in t.iter().enumerate() {
                     finite(x, &format!("table[{i}]"))?;
                     finite(v, &format!("table[{i}]"))?;
                     if i > 0 && x <= t[i - 1].0 {
-                        return Err(ForceError::load(format!("{field}.table[{i}]"), format!("the abscissae must increase: {} after {}", x, t[i - 1].0)));
+                        return Err(ForceError::load(
+                            format!("{field}.table[{i}]"),
+                            format!("the abscissae must increase: {} after {}", x, t[i - 1].0),
+                        ));
                     }
                 }
                 Ok(())
@@ -97,14 +109,22 @@ impl Law {
         match self {
             Law::TravelTable(t) => {
                 let Some(s) = stroke else {
-                    return Err(ForceError::load(field, "a load diagram over travel needs an output that stops and returns (dead positions)"));
+                    return Err(ForceError::load(
+                        field,
+                        "a load diagram over travel needs an output that stops and returns (dead positions)",
+                    ));
                 };
                 let (lo, hi) = (t[0].0, t[t.len() - 1].0);
                 let h = s.travel;
                 if lo > tol * h.max(1e-12) || hi < h * (1.0 - tol) {
                     return Err(ForceError::load(
                         format!("{field}.table"),
-                        format!("the load diagram covers travel {}…{} but the working stroke is 0…{}; give values over the whole stroke", fmt(lo, s.angular), fmt(hi, s.angular), fmt(h, s.angular)),
+                        format!(
+                            "the load diagram covers travel {}…{} but the working stroke is 0…{}; give values over the whole stroke",
+                            fmt(lo, s.angular),
+                            fmt(hi, s.angular),
+                            fmt(h, s.angular)
+                        ),
                     ));
                 }
                 Ok(())
@@ -115,7 +135,11 @@ impl Law {
                 if lo > tol || hi < two_pi * (1.0 - tol) {
                     return Err(ForceError::load(
                         format!("{field}.table"),
-                        format!("the load diagram covers crank angles {:.3}°…{:.3}° but must cover 0…360° from the start of the working stroke", lo.to_degrees(), hi.to_degrees()),
+                        format!(
+                            "the load diagram covers crank angles {:.3}°…{:.3}° but must cover 0…360° from the start of the working stroke",
+                            lo.to_degrees(),
+                            hi.to_degrees()
+                        ),
                     ));
                 }
                 Ok(())

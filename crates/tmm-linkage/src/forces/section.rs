@@ -25,16 +25,66 @@ pub struct IBeam {
 
 /// GOST 8239-89, No. 10…30: h, A (cm²), W_x (cm³), in SI.
 pub const IBEAMS: &[IBeam] = &[
-    IBeam { number: "10", h: 0.100, area: 12.0e-4, w: 39.7e-6 },
-    IBeam { number: "12", h: 0.120, area: 14.7e-4, w: 58.4e-6 },
-    IBeam { number: "14", h: 0.140, area: 17.4e-4, w: 81.7e-6 },
-    IBeam { number: "16", h: 0.160, area: 20.2e-4, w: 109.0e-6 },
-    IBeam { number: "18", h: 0.180, area: 23.4e-4, w: 143.0e-6 },
-    IBeam { number: "20", h: 0.200, area: 26.8e-4, w: 184.0e-6 },
-    IBeam { number: "22", h: 0.220, area: 30.6e-4, w: 232.0e-6 },
-    IBeam { number: "24", h: 0.240, area: 34.8e-4, w: 289.0e-6 },
-    IBeam { number: "27", h: 0.270, area: 40.2e-4, w: 371.0e-6 },
-    IBeam { number: "30", h: 0.300, area: 46.5e-4, w: 472.0e-6 },
+    IBeam {
+        number: "10",
+        h: 0.100,
+        area: 12.0e-4,
+        w: 39.7e-6,
+    },
+    IBeam {
+        number: "12",
+        h: 0.120,
+        area: 14.7e-4,
+        w: 58.4e-6,
+    },
+    IBeam {
+        number: "14",
+        h: 0.140,
+        area: 17.4e-4,
+        w: 81.7e-6,
+    },
+    IBeam {
+        number: "16",
+        h: 0.160,
+        area: 20.2e-4,
+        w: 109.0e-6,
+    },
+    IBeam {
+        number: "18",
+        h: 0.180,
+        area: 23.4e-4,
+        w: 143.0e-6,
+    },
+    IBeam {
+        number: "20",
+        h: 0.200,
+        area: 26.8e-4,
+        w: 184.0e-6,
+    },
+    IBeam {
+        number: "22",
+        h: 0.220,
+        area: 30.6e-4,
+        w: 232.0e-6,
+    },
+    IBeam {
+        number: "24",
+        h: 0.240,
+        area: 34.8e-4,
+        w: 289.0e-6,
+    },
+    IBeam {
+        number: "27",
+        h: 0.270,
+        area: 40.2e-4,
+        w: 371.0e-6,
+    },
+    IBeam {
+        number: "30",
+        h: 0.300,
+        area: 46.5e-4,
+        w: 472.0e-6,
+    },
 ];
 
 /// The sizes found.
@@ -74,14 +124,18 @@ pub fn size_sections(samples: &[BeamSample], allowed: f64, k: f64) -> Result<Sec
     }
     let worst = |area: f64, w: f64| Beam::dangerous(samples, area, w);
     if worst(1.0, 1.0).1 == 0.0 {
-        return Err(ForceError::load("strength", "the link carries no load at this position: nothing to size"));
+        return Err(ForceError::load(
+            "strength",
+            "the link carries no load at this position: nothing to size",
+        ));
     }
     let size = |f: &dyn Fn(f64) -> (f64, f64)| -> Result<f64, ForceError> {
         let g = |x: f64| {
             let (a, w) = f(x);
             worst(a, w).1 / allowed - 1.0
         };
-        tmm_geom::root::brent(g, 1e-9, 100.0, 1e-15).ok_or_else(|| ForceError::load("strength", "no section size between 1 nm and 100 m holds the stress"))
+        tmm_geom::root::brent(g, 1e-9, 100.0, 1e-15)
+            .ok_or_else(|| ForceError::load("strength", "no section size between 1 nm and 100 m holds the stress"))
     };
     let round = |d: f64| (std::f64::consts::PI * d * d / 4.0, std::f64::consts::PI * d.powi(3) / 32.0);
     let rect = |b: f64| (k * b * b, k * k * b.powi(3) / 6.0);
@@ -93,5 +147,12 @@ pub fn size_sections(samples: &[BeamSample], allowed: f64, k: f64) -> Result<Sec
         let (i, s) = worst(ib.area, ib.w);
         (s <= allowed).then_some((*ib, i, s))
     });
-    Ok(SectionSizes { round_d: d, round_at: worst(ra, rw).0, rect_b: b, rect_h: k * b, rect_at: worst(qa, qw).0, ibeam })
+    Ok(SectionSizes {
+        round_d: d,
+        round_at: worst(ra, rw).0,
+        rect_b: b,
+        rect_h: k * b,
+        rect_at: worst(qa, qw).0,
+        ibeam,
+    })
 }

@@ -81,7 +81,14 @@ impl Stroke {
             .pairs
             .iter()
             .find_map(|p| match *p {
-                Pair::P { slider, guide: 0, ps, q, d, .. } if slider == output => Some(Coord::Slider { ps, q, d }),
+                Pair::P {
+                    slider,
+                    guide: 0,
+                    ps,
+                    q,
+                    d,
+                    ..
+                } if slider == output => Some(Coord::Slider { ps, q, d }),
                 _ => None,
             })
             .unwrap_or(Coord::Rotation);
@@ -111,7 +118,10 @@ impl Stroke {
         if dead.len() != 2 {
             return Err(ForceError::load(
                 "resistance",
-                format!("the output link `{name}` has {} dead positions over a turn of the crank, not 2: its working stroke is not defined; give the resistance as a constant", dead.len()),
+                format!(
+                    "the output link `{name}` has {} dead positions over a turn of the crank, not 2: its working stroke is not defined; give the resistance as a constant",
+                    dead.len()
+                ),
             ));
         }
         let mut states = [LinkState::default(); 2];
@@ -129,7 +139,11 @@ impl Stroke {
             Working::Increasing => grow01 > 0.0,
             Working::Decreasing => grow01 < 0.0,
         };
-        let (s, e, span, st) = if first { (dead[0], dead[1], span01, states[0]) } else { (dead[1], dead[0], span10, states[1]) };
+        let (s, e, span, st) = if first {
+            (dead[0], dead[1], span01, states[0])
+        } else {
+            (dead[1], dead[0], span10, states[1])
+        };
         Ok(Stroke {
             output,
             angular: coord == Coord::Rotation,
@@ -154,7 +168,12 @@ impl Stroke {
     pub fn phase(&self, sol: &Solution) -> Phase {
         let angle = wrap_2pi((sol.phi - self.phi_start) * self.dir);
         let angle = if angle >= 2.0 * PI - 1e-12 { 0.0 } else { angle };
-        Phase { working: angle <= self.work_span + 1e-12, travel: self.travel_at(&sol.links[self.output]), travel_max: self.travel, angle }
+        Phase {
+            working: angle <= self.work_span + 1e-12,
+            travel: self.travel_at(&sol.links[self.output]),
+            travel_max: self.travel,
+            angle,
+        }
     }
 }
 

@@ -73,10 +73,18 @@ pub fn lever_forces(m: &Mechanism, loads: &Loads, sol: &Solution, fs: &super::Fo
         let vs = st.kin_at(lf.s).0;
         let g = lf.inertia_force + lf.weight;
         if g.hypot() > 0.0 {
-            out.push(LeverForce { label: format!("Fu{name}+G{name}"), image: perp(vs), force: g });
+            out.push(LeverForce {
+                label: format!("Fu{name}+G{name}"),
+                image: perp(vs),
+                force: g,
+            });
         }
         for (k, pf) in ld.forces.iter().enumerate() {
-            out.push(LeverForce { label: format!("F{name}.{k}"), image: perp(st.point(pf.local).v), force: pf.force });
+            out.push(LeverForce {
+                label: format!("F{name}.{k}"),
+                image: perp(st.point(pf.local).v),
+                force: pf.force,
+            });
         }
         let couple = lf.inertia_moment + ld.moment;
         let mut couple = couple;
@@ -84,7 +92,11 @@ pub fn lever_forces(m: &Mechanism, loads: &Loads, sol: &Solution, fs: &super::Fo
             if r.link == l {
                 let (f, p, c) = r.apply(st, val);
                 if f.hypot() > 0.0 {
-                    out.push(LeverForce { label: format!("Fr{name}"), image: perp(st.kin_at(p).0), force: f });
+                    out.push(LeverForce {
+                        label: format!("Fr{name}"),
+                        image: perp(st.kin_at(p).0),
+                        force: f,
+                    });
                 }
                 couple += c;
             }
@@ -96,13 +108,25 @@ pub fn lever_forces(m: &Mechanism, loads: &Loads, sol: &Solution, fs: &super::Fo
                 let (pa, pb) = (st.pos(a), st.pos(b));
                 let d = pb - pa;
                 let f = perp(d) * (couple / d.hypot2());
-                out.push(LeverForce { label: format!("M{name}'"), image: perp(st.kin_at(pb).0), force: f });
-                out.push(LeverForce { label: format!("M{name}''"), image: perp(st.kin_at(pa).0), force: -f });
+                out.push(LeverForce {
+                    label: format!("M{name}'"),
+                    image: perp(st.kin_at(pb).0),
+                    force: f,
+                });
+                out.push(LeverForce {
+                    label: format!("M{name}''"),
+                    image: perp(st.kin_at(pa).0),
+                    force: -f,
+                });
             }
         }
     }
     let pin = &sol.points[m.crank.pin];
-    out.push(LeverForce { label: "Pb".into(), image: perp(pin.v), force: fs.balancing_force_vec });
+    out.push(LeverForce {
+        label: "Pb".into(),
+        image: perp(pin.v),
+        force: fs.balancing_force_vec,
+    });
     out
 }
 

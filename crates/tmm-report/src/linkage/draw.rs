@@ -25,15 +25,98 @@ pub fn write_all(l: &Loaded, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>)
     let s = series(1, 1.0);
     let ds = series(2, 1.0);
     let dds = series(3, 1.0);
-    write_file(&dir.join("diagram-s.svg"), &plot("Output displacement s(φ)", "crank rotation from the start φ, °", su, &[Series { name: "s", points: &s, color: "#1f4e9c" }], 200.0, 120.0), files)?;
-    write_file(&dir.join("diagram-ds.svg"), &plot("Velocity analog ds/dφ", "φ, °", &format!("ds/dφ, {vu}"), &[Series { name: "ds/dφ", points: &ds, color: "#c0392b" }], 200.0, 120.0), files)?;
-    write_file(&dir.join("diagram-dds.svg"), &plot("Acceleration analog d²s/dφ²", "φ, °", &format!("d²s/dφ², {vu}"), &[Series { name: "d²s/dφ²", points: &dds, color: "#27ae60" }], 200.0, 120.0), files)?;
+    write_file(
+        &dir.join("diagram-s.svg"),
+        &plot(
+            "Output displacement s(φ)",
+            "crank rotation from the start φ, °",
+            su,
+            &[Series {
+                name: "s",
+                points: &s,
+                color: "#1f4e9c",
+            }],
+            200.0,
+            120.0,
+        ),
+        files,
+    )?;
+    write_file(
+        &dir.join("diagram-ds.svg"),
+        &plot(
+            "Velocity analog ds/dφ",
+            "φ, °",
+            &format!("ds/dφ, {vu}"),
+            &[Series {
+                name: "ds/dφ",
+                points: &ds,
+                color: "#c0392b",
+            }],
+            200.0,
+            120.0,
+        ),
+        files,
+    )?;
+    write_file(
+        &dir.join("diagram-dds.svg"),
+        &plot(
+            "Acceleration analog d²s/dφ²",
+            "φ, °",
+            &format!("d²s/dφ², {vu}"),
+            &[Series {
+                name: "d²s/dφ²",
+                points: &dds,
+                color: "#27ae60",
+            }],
+            200.0,
+            120.0,
+        ),
+        files,
+    )?;
     let t: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[2] * w)).collect();
     let ta: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[3] * w * w)).collect();
-    write_file(&dir.join("diagram-v.svg"), &plot("Output velocity v(t)", "t, s", if lin { "v, m/s" } else { "ω, rad/s" }, &[Series { name: "v", points: &t, color: "#c0392b" }], 200.0, 120.0), files)?;
-    write_file(&dir.join("diagram-a.svg"), &plot("Output acceleration a(t)", "t, s", if lin { "a, m/s²" } else { "ε, rad/s²" }, &[Series { name: "a", points: &ta, color: "#27ae60" }], 200.0, 120.0), files)?;
-    write_file(&dir.join("velocity-plan.svg"), &plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi), files)?;
-    write_file(&dir.join("acceleration-plan.svg"), &plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi), files)?;
+    write_file(
+        &dir.join("diagram-v.svg"),
+        &plot(
+            "Output velocity v(t)",
+            "t, s",
+            if lin { "v, m/s" } else { "ω, rad/s" },
+            &[Series {
+                name: "v",
+                points: &t,
+                color: "#c0392b",
+            }],
+            200.0,
+            120.0,
+        ),
+        files,
+    )?;
+    write_file(
+        &dir.join("diagram-a.svg"),
+        &plot(
+            "Output acceleration a(t)",
+            "t, s",
+            if lin { "a, m/s²" } else { "ε, rad/s²" },
+            &[Series {
+                name: "a",
+                points: &ta,
+                color: "#27ae60",
+            }],
+            200.0,
+            120.0,
+        ),
+        files,
+    )?;
+    write_file(
+        &dir.join("velocity-plan.svg"),
+        &plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi),
+        files,
+    )?;
+    write_file(
+        &dir.join("acceleration-plan.svg"),
+        &plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi),
+        files,
+    )?;
     Ok(())
 }
 
@@ -69,11 +152,26 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
     for r in &a.rows {
         pts.extend(r.sol.points.iter().map(|p| p.p));
     }
-    let (xmin, xmax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
-    let (ymin, ymax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
+    let (xmin, xmax) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
+    let (ymin, ymax) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
     let mut c = Canvas::new(297.0, 210.0);
     let scale = c.fit((xmin, xmax, ymin, ymax), (15.0, 20.0, 267.0, 165.0));
-    c.text_paper((148.5, 10.0), &format!("Mechanism in {} positions (μl = {:.5} m/mm); bold: φ = {:.2}°", a.rows.len(), 1.0 / scale, a.plan_row.pos.phi.to_degrees()), 4.0, Anchor::Middle, "#000");
+    c.text_paper(
+        (148.5, 10.0),
+        &format!(
+            "Mechanism in {} positions (μl = {:.5} m/mm); bold: φ = {:.2}°",
+            a.rows.len(),
+            1.0 / scale,
+            a.plan_row.pos.phi.to_degrees()
+        ),
+        4.0,
+        Anchor::Middle,
+        "#000",
+    );
     let xy = |v: Vec2| (v.x, v.y);
     // trajectories of the joints
     for (k, p) in m.points.iter().enumerate() {
@@ -108,7 +206,12 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
             c.line(xy(qq + dd * (t - span)), xy(qq + dd * (t + span)), Style::AXIS);
             let half = 3.0 / scale;
             let n = Vec2::new(-dd.y, dd.x);
-            let corners = [sp + dd * half + n * half * 0.6, sp - dd * half + n * half * 0.6, sp - dd * half - n * half * 0.6, sp + dd * half - n * half * 0.6];
+            let corners = [
+                sp + dd * half + n * half * 0.6,
+                sp - dd * half + n * half * 0.6,
+                sp - dd * half - n * half * 0.6,
+                sp + dd * half - n * half * 0.6,
+            ];
             c.polygon(&corners.map(xy), Style::THICK.widened(0.5).filled("#ffffff"));
         }
     }
@@ -134,8 +237,12 @@ fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> Stri
         pts.push(p.from);
         pts.push(p.to);
     }
-    let (xmin, xmax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
-    let (ymin, ymax) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
+    let (xmin, xmax) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
+    let (ymin, ymax) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
     let span = (xmax - xmin).max(ymax - ymin).max(1e-12);
     // a round scale factor μ (units per mm) so that the plan fits 170 mm
     let (_, _, step) = nice_ticks(0.0, span / 170.0, 1);
@@ -144,7 +251,13 @@ fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> Stri
     let cx = 105.0 - s * 0.5 * (xmin + xmax);
     let cy = 100.0 - s * 0.5 * (ymin + ymax);
     c.set_transform(s, (cx, cy));
-    c.text_paper((105.0, 10.0), &format!("{title} at φ = {:.2}°,  μ = {mu} {unit}/mm", phi.to_degrees()), 4.0, Anchor::Middle, "#000");
+    c.text_paper(
+        (105.0, 10.0),
+        &format!("{title} at φ = {:.2}°,  μ = {mu} {unit}/mm", phi.to_degrees()),
+        4.0,
+        Anchor::Middle,
+        "#000",
+    );
     let color = |k: VectorKind| match k {
         VectorKind::Absolute => "#1f4e9c",
         VectorKind::Relative => "#c0392b",
@@ -157,7 +270,12 @@ fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> Stri
         if (p.to - p.from).hypot() * s < 0.05 {
             continue;
         }
-        c.arrow((p.from.x, p.from.y), (p.to.x, p.to.y), Style::THIN.widened(0.35).colored(color(p.kind)), 3.0);
+        c.arrow(
+            (p.from.x, p.from.y),
+            (p.to.x, p.to.y),
+            Style::THIN.widened(0.35).colored(color(p.kind)),
+            3.0,
+        );
         let mid = (p.from + p.to) * 0.5;
         c.text_colored((mid.x, mid.y), &p.label, 2.4, Anchor::Start, color(p.kind));
     }

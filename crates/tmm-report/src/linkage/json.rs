@@ -10,12 +10,18 @@ fn row_json(l: &Loaded, r: &Row) -> Value {
     let mut points = Map::new();
     for (i, p) in m.points.iter().enumerate() {
         let s = &r.sol.points[i];
-        points.insert(p.name.clone(), json!({"x": num(s.p.x), "y": num(s.p.y), "vx": num(s.v.x), "vy": num(s.v.y), "ax": num(s.a.x), "ay": num(s.a.y)}));
+        points.insert(
+            p.name.clone(),
+            json!({"x": num(s.p.x), "y": num(s.p.y), "vx": num(s.v.x), "vy": num(s.v.y), "ax": num(s.a.x), "ay": num(s.a.y)}),
+        );
     }
     let mut links = Map::new();
     for (i, n) in m.link_names.iter().enumerate().skip(1) {
         let s = &r.sol.links[i];
-        links.insert(n.clone(), json!({"angle": num(s.angle()), "omega": num(s.omega), "epsilon": num(s.eps)}));
+        links.insert(
+            n.clone(),
+            json!({"angle": num(s.angle()), "omega": num(s.omega), "epsilon": num(s.eps)}),
+        );
     }
     let mut pa = Map::new();
     for &(p, v) in &r.pressure {
@@ -37,12 +43,22 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let m = &l.mech;
     let s = &m.structure;
     let c = &a.cycle;
-    let groups: Vec<Value> = s.groups.iter().map(|g| json!({"class": g.class, "order": g.order, "kind": g.kind, "links": g.links})).collect();
+    let groups: Vec<Value> = s
+        .groups
+        .iter()
+        .map(|g| json!({"class": g.class, "order": g.order, "kind": g.kind, "links": g.links}))
+        .collect();
     let w = m.crank.omega.abs();
     let vec = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
-        v.iter().map(|p| json!({"label": p.label, "kind": p.kind, "from": [num(p.from.x), num(p.from.y)], "to": [num(p.to.x), num(p.to.y)]})).collect()
+        v.iter()
+            .map(|p| json!({"label": p.label, "kind": p.kind, "from": [num(p.from.x), num(p.from.y)], "to": [num(p.to.x), num(p.to.y)]}))
+            .collect()
     };
-    let pmax: Vec<Value> = a.pressure_max.iter().map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)})).collect();
+    let pmax: Vec<Value> = a
+        .pressure_max
+        .iter()
+        .map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)}))
+        .collect();
     json!({
         "units": "SI",
         "structure": {

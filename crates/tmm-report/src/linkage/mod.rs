@@ -34,7 +34,12 @@ pub fn locate(src: &TaskSource, t: &LinkageTask, e: &LinkageError) -> Error {
     let (field, span) = match e {
         LinkageError::Description { field, .. } => {
             let key = field.trim_end_matches(".length");
-            let span = t.spans.get(field.as_str()).or_else(|| t.spans.get(key)).or_else(|| t.spans.get(field.split('.').take(2).collect::<Vec<_>>().join(".").as_str())).cloned();
+            let span = t
+                .spans
+                .get(field.as_str())
+                .or_else(|| t.spans.get(key))
+                .or_else(|| t.spans.get(field.split('.').take(2).collect::<Vec<_>>().join(".").as_str()))
+                .cloned();
             (format!("linkage.{field}"), span)
         }
         _ => ("linkage".to_string(), None),
@@ -45,8 +50,13 @@ pub fn locate(src: &TaskSource, t: &LinkageTask, e: &LinkageError) -> Error {
     };
     let err = Error::at(src, span.unwrap_or(t.section.clone()), &field, msg);
     match e {
-        LinkageError::AssemblyRanges { .. } | LinkageError::Assembly { .. } => err.with_help(grashof_help(&t.def).unwrap_or_else(|| "check the link lengths and the fixed points; a crank must be able to turn a full revolution".into())),
-        LinkageError::Mobility { .. } => err.with_help("check that every joint is shared by the right links and every slider has one guide"),
+        LinkageError::AssemblyRanges { .. } | LinkageError::Assembly { .. } => err.with_help(
+            grashof_help(&t.def)
+                .unwrap_or_else(|| "check the link lengths and the fixed points; a crank must be able to turn a full revolution".into()),
+        ),
+        LinkageError::Mobility { .. } => {
+            err.with_help("check that every joint is shared by the right links and every slider has one guide")
+        }
         _ => err,
     }
 }
@@ -56,7 +66,11 @@ fn grashof_help(def: &MechanismDef) -> Option<String> {
     if def.links.len() != 3 || !def.sliders.is_empty() || def.fixed.len() != 2 {
         return None;
     }
-    let mut l: Vec<f64> = def.links.iter().map(|l| (l.points.get(1)?.1 - l.points[0].1).hypot().into()).collect::<Option<Vec<f64>>>()?;
+    let mut l: Vec<f64> = def
+        .links
+        .iter()
+        .map(|l| (l.points.get(1)?.1 - l.points[0].1).hypot().into())
+        .collect::<Option<Vec<f64>>>()?;
     l.push((def.fixed[1].1 - def.fixed[0].1).hypot());
     l.sort_by(f64::total_cmp);
     let (s, p, q, g) = (l[0], l[1], l[2], l[3]);
@@ -65,7 +79,11 @@ fn grashof_help(def: &MechanismDef) -> Option<String> {
         s + g,
         if s + g <= p + q { "≤" } else { ">" },
         p + q,
-        if s + g <= p + q { "the shortest link turns fully only if it is the crank next to the frame" } else { "no link can turn fully: the crank cannot make a full revolution" }
+        if s + g <= p + q {
+            "the shortest link turns fully only if it is the crank next to the frame"
+        } else {
+            "no link can turn fully: the crank cannot make a full revolution"
+        }
     ))
 }
 
@@ -73,7 +91,11 @@ fn grashof_help(def: &MechanismDef) -> Option<String> {
 pub fn load(src: &TaskSource) -> Result<Option<Loaded>, Error> {
     let Some(t) = task::read(src)? else { return Ok(None) };
     let mech = Mechanism::new(&t.def).map_err(|e| locate(src, &t, &e))?;
-    Ok(Some(Loaded { def: t.def.clone(), task: t, mech }))
+    Ok(Some(Loaded {
+        def: t.def.clone(),
+        task: t,
+        mech,
+    }))
 }
 
 /// One solved position of the table.
@@ -113,7 +135,12 @@ pub fn row(m: &Mechanism, c: &Cycle, pos: Position) -> Result<Row, LinkageError>
     let analogs = c.analogs(m, &sol);
     let mut pressure = Vec::new();
     cycle::pressure_angles(m, &sol, &mut pressure);
-    Ok(Row { pos, sol, analogs, pressure })
+    Ok(Row {
+        pos,
+        sol,
+        analogs,
+        pressure,
+    })
 }
 
 /// Analyse: the cycle, `n` positions (or the one at `at`), diagrams, plans.
@@ -124,12 +151,29 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
     let sg = m.crank.omega.signum();
     let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
     let positions: Vec<Position> = match at {
-        Some(phi) => vec![Position { label: "at".into(), phi, psi: psi_of(phi) }],
+        Some(phi) => vec![Position {
+            label: "at".into(),
+            phi,
+            psi: psi_of(phi),
+        }],
         None => c.positions(m, n),
     };
-    let rows = positions.into_iter().map(|p| row(m, &c, p)).collect::<Result<Vec<_>, _>>().map_err(loc)?;
+    let rows = positions
+        .into_iter()
+        .map(|p| row(m, &c, p))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(loc)?;
     let plan_phi = at.or(l.task.at).unwrap_or_else(|| rows.get(1).map_or(c.start, |r| r.pos.phi));
-    let plan_row = row(m, &c, Position { label: "plan".into(), phi: plan_phi, psi: psi_of(plan_phi) }).map_err(loc)?;
+    let plan_row = row(
+        m,
+        &c,
+        Position {
+            label: "plan".into(),
+            phi: plan_phi,
+            psi: psi_of(plan_phi),
+        },
+    )
+    .map_err(loc)?;
     let plans = plans::plans(m, &plan_row.sol);
     let mut sol = m.solution();
     let samples = 360;
@@ -155,7 +199,14 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
             }
         }
     }
-    Ok(Analysis { cycle: c, rows, diagram, plan_row, plans, pressure_max })
+    Ok(Analysis {
+        cycle: c,
+        rows,
+        diagram,
+        plan_row,
+        plans,
+        pressure_max,
+    })
 }
 
 /// Run the `[linkage]` section of a task into `out/linkage/`.
@@ -166,8 +217,17 @@ pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput
     let mut files = Vec::new();
     draw::write_all(&l, &a, &dir, &mut files)?;
     let json = json::document(&l, &a);
-    write_file(&dir.join("linkage.json"), &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?, &mut files)?;
-    Ok(Some(SectionOutput { section: "linkage", text: text::report(&l, &a), json, files }))
+    write_file(
+        &dir.join("linkage.json"),
+        &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?,
+        &mut files,
+    )?;
+    Ok(Some(SectionOutput {
+        section: "linkage",
+        text: text::report(&l, &a),
+        json,
+        files,
+    }))
 }
 
 /// The human report.

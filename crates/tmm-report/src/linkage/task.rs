@@ -140,15 +140,24 @@ pub struct LinkageTask {
 
 /// Values read inside an untagged form carry no span of their own: give them the form's.
 fn respan(span: Range<usize>, v: &[RawQty]) -> S<Vec<Qty>> {
-    toml::Spanned::new(span.clone(), v.iter().map(|q| toml::Spanned::new(span.clone(), q.clone())).collect())
+    toml::Spanned::new(
+        span.clone(),
+        v.iter().map(|q| toml::Spanned::new(span.clone(), q.clone())).collect(),
+    )
 }
 
 fn pair(task: &TaskSource, field: &str, v: &S<Vec<Qty>>, dim: Dim) -> Result<Vec2, Error> {
     let r = v.get_ref();
     if r.len() != 2 {
-        return Err(Error::at(task, v.span(), field, format!("expected two coordinates [x, y], found {}", r.len())).with_help("e.g. [\"510 mm\", \"0 mm\"]"));
+        return Err(
+            Error::at(task, v.span(), field, format!("expected two coordinates [x, y], found {}", r.len()))
+                .with_help("e.g. [\"510 mm\", \"0 mm\"]"),
+        );
     }
-    Ok(Vec2::new(qty(task, &format!("{field}[0]"), &r[0], dim)?, qty(task, &format!("{field}[1]"), &r[1], dim)?))
+    Ok(Vec2::new(
+        qty(task, &format!("{field}[0]"), &r[0], dim)?,
+        qty(task, &format!("{field}[1]"), &r[1], dim)?,
+    ))
 }
 
 /// Read the `[linkage]` section; `None` when the file has none.
@@ -166,7 +175,13 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         def.fixed.push((name.clone(), p));
     }
     if def.fixed.is_empty() {
-        return Err(Error::at(task, sec.fixed.span(), "linkage.fixed", "at least one fixed point (the crank pivot) is needed").with_help("fixed = { A = [0, 0] }"));
+        return Err(Error::at(
+            task,
+            sec.fixed.span(),
+            "linkage.fixed",
+            "at least one fixed point (the crank pivot) is needed",
+        )
+        .with_help("fixed = { A = [0, 0] }"));
     }
     // links
     for (i, ls) in sec.links.get_ref().iter().enumerate() {
@@ -177,13 +192,22 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         spans.insert(format!("links.{name}"), l.name.span());
         let joints = l.joints.get_ref();
         if joints.is_empty() {
-            return Err(Error::at(task, l.joints.span(), &format!("{field}.joints"), "a link needs at least one joint").with_help("joints = [\"B\", \"C\"]"));
+            return Err(
+                Error::at(task, l.joints.span(), &format!("{field}.joints"), "a link needs at least one joint")
+                    .with_help("joints = [\"B\", \"C\"]"),
+            );
         }
         let mut pts: Vec<(String, Vec2)> = vec![(joints[0].get_ref().clone(), Vec2::ZERO)];
         let mut length = 0.0;
         if joints.len() >= 2 {
             let lq = l.length.as_ref().ok_or_else(|| {
-                Error::at(task, ls.span(), &format!("{field}.length"), format!("missing length of link `{name}` (|{}{}|)", joints[0].get_ref(), joints[1].get_ref())).with_help("length = \"120 mm\"")
+                Error::at(
+                    task,
+                    ls.span(),
+                    &format!("{field}.length"),
+                    format!("missing length of link `{name}` (|{}{}|)", joints[0].get_ref(), joints[1].get_ref()),
+                )
+                .with_help("length = \"120 mm\"")
             })?;
             length = qty(task, &format!("{field}.length"), lq, Dim::Length)?;
             spans.insert(format!("links.{name}.length"), lq.span());
@@ -210,26 +234,55 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
             }
             if rest.len() == before {
                 let (pn, ps) = rest[0];
-                return Err(Error::at(task, ps.span(), &format!("{field}.points.{pn}"), "refers to a point that is not on this link").with_help(format!("points of `{name}`: {}", defined.keys().cloned().collect::<Vec<_>>().join(", "))));
+                return Err(Error::at(
+                    task,
+                    ps.span(),
+                    &format!("{field}.points.{pn}"),
+                    "refers to a point that is not on this link",
+                )
+                .with_help(format!(
+                    "points of `{name}`: {}",
+                    defined.keys().cloned().collect::<Vec<_>>().join(", ")
+                )));
             }
             pending = rest;
         }
         for (k, j) in joints.iter().enumerate().skip(2) {
             if !defined.contains_key(j.get_ref()) {
-                return Err(Error::at(task, j.span(), &format!("{field}.joints[{k}]"), format!("joint `{}` needs its place on the link", j.get_ref()))
-                    .with_help(format!("add e.g. points.{} = {{ from = \"{}\", toward = \"{}\", angle = \"180 deg\", length = \"0.6 m\" }}", j.get_ref(), first_two[0], first_two.get(1).cloned().unwrap_or_default())));
+                return Err(Error::at(
+                    task,
+                    j.span(),
+                    &format!("{field}.joints[{k}]"),
+                    format!("joint `{}` needs its place on the link", j.get_ref()),
+                )
+                .with_help(format!(
+                    "add e.g. points.{} = {{ from = \"{}\", toward = \"{}\", angle = \"180 deg\", length = \"0.6 m\" }}",
+                    j.get_ref(),
+                    first_two[0],
+                    first_two.get(1).cloned().unwrap_or_default()
+                )));
             }
         }
         let mc = match &l.mass_center {
-            Some(ps) => local_point(task, &format!("{field}.mass_center"), ps, &first_two, length, &defined)?
-                .ok_or_else(|| Error::at(task, ps.span(), &format!("{field}.mass_center"), "refers to a point that is not on this link"))?,
+            Some(ps) => local_point(task, &format!("{field}.mass_center"), ps, &first_two, length, &defined)?.ok_or_else(|| {
+                Error::at(
+                    task,
+                    ps.span(),
+                    &format!("{field}.mass_center"),
+                    "refers to a point that is not on this link",
+                )
+            })?,
             None => Vec2::new(0.5 * length, 0.0),
         };
         let sname = format!("S{name}");
         if !defined.contains_key(&sname) {
             pts.push((sname, mc));
         }
-        def.links.push(LinkDef { name, points: pts, mass_center: mc });
+        def.links.push(LinkDef {
+            name,
+            points: pts,
+            mass_center: mc,
+        });
     }
     // sliders
     for (i, ss) in sec.sliders.iter().enumerate() {
@@ -257,14 +310,29 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
                 } else {
                     def.links.iter().find(|l| l.name == gl).and_then(|l| l.point(pn))
                 };
-                found.ok_or_else(|| Error::at(task, g.through.span(), &format!("{field}.guide.through"), format!("`{pn}` is not a point of `{gl}`")).with_help("give a point of the guide's link, or coordinates [x, y]"))?
+                found.ok_or_else(|| {
+                    Error::at(
+                        task,
+                        g.through.span(),
+                        &format!("{field}.guide.through"),
+                        format!("`{pn}` is not a point of `{gl}`"),
+                    )
+                    .with_help("give a point of the guide's link, or coordinates [x, y]")
+                })?
             }
         };
         if let Some(o) = &g.offset {
             let off = qty(task, &format!("{field}.guide.offset"), o, Dim::Length)?;
             through += Vec2::new(-angle.sin(), angle.cos()) * off;
         }
-        def.sliders.push(SliderDef { slider: sl, point: s.point.get_ref().clone(), guide_link: gl, through, angle, angle_on_slider: 0.0 });
+        def.sliders.push(SliderDef {
+            slider: sl,
+            point: s.point.get_ref().clone(),
+            guide_link: gl,
+            through,
+            angle,
+            angle_on_slider: 0.0,
+        });
     }
     // input
     let inp = sec.input.get_ref();
@@ -272,23 +340,43 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
     spans.insert("input.link".into(), inp.link.span());
     let cl = inp.link.get_ref().clone();
     let cdef = def.links.iter().find(|l| l.name == cl).ok_or_else(|| {
-        Error::at(task, inp.link.span(), "linkage.input.link", format!("unknown link `{cl}`")).with_help(format!("links: {}", def.links.iter().map(|l| l.name.as_str()).collect::<Vec<_>>().join(", ")))
+        Error::at(task, inp.link.span(), "linkage.input.link", format!("unknown link `{cl}`")).with_help(format!(
+            "links: {}",
+            def.links.iter().map(|l| l.name.as_str()).collect::<Vec<_>>().join(", ")
+        ))
     })?;
     let pivot = match &inp.pivot {
         Some(p) => {
             spans.insert("input.pivot".into(), p.span());
             p.get_ref().clone()
         }
-        None => cdef.points.iter().find(|(n, _)| def.fixed.iter().any(|(f, _)| f == n)).map(|(n, _)| n.clone()).ok_or_else(|| {
-            Error::at(task, inp.link.span(), "linkage.input.pivot", format!("the crank `{cl}` has no fixed joint")).with_help("one of the crank's joints must be a fixed point; or give input.pivot")
-        })?,
+        None => cdef
+            .points
+            .iter()
+            .find(|(n, _)| def.fixed.iter().any(|(f, _)| f == n))
+            .map(|(n, _)| n.clone())
+            .ok_or_else(|| {
+                Error::at(
+                    task,
+                    inp.link.span(),
+                    "linkage.input.pivot",
+                    format!("the crank `{cl}` has no fixed joint"),
+                )
+                .with_help("one of the crank's joints must be a fixed point; or give input.pivot")
+            })?,
     };
     let pin = match &inp.pin {
         Some(p) => {
             spans.insert("input.pin".into(), p.span());
             p.get_ref().clone()
         }
-        None => cdef.points.iter().take(2).find(|(n, _)| *n != pivot).map(|(n, _)| n.clone()).unwrap_or_default(),
+        None => cdef
+            .points
+            .iter()
+            .take(2)
+            .find(|(n, _)| *n != pivot)
+            .map(|(n, _)| n.clone())
+            .unwrap_or_default(),
     };
     let speed = qty(task, "linkage.input.speed", &inp.speed, Dim::AngularVelocity)?;
     spans.insert("input.speed".into(), inp.speed.span());
@@ -297,14 +385,23 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         Some((d, span)) => match d.as_str() {
             "ccw" | "counter-clockwise" | "counterclockwise" | "против часовой" | "проти годинникової" => 1.0,
             "cw" | "clockwise" | "по часовой" | "за годинниковою" => -1.0,
-            _ => return Err(Error::at(task, span, "linkage.input.direction", format!("unknown direction `{d}`")).with_help("\"ccw\" (counter-clockwise) or \"cw\" (clockwise)")),
+            _ => {
+                return Err(Error::at(task, span, "linkage.input.direction", format!("unknown direction `{d}`"))
+                    .with_help("\"ccw\" (counter-clockwise) or \"cw\" (clockwise)"));
+            }
         },
     };
     let epsilon = match &inp.epsilon {
         Some(e) => qty(task, "linkage.input.epsilon", e, Dim::AngularAcceleration)?,
         None => 0.0,
     };
-    def.input = Some(InputDef { link: cl, pivot, pin, omega: sign * speed, epsilon });
+    def.input = Some(InputDef {
+        link: cl,
+        pivot,
+        pin,
+        omega: sign * speed,
+        epsilon,
+    });
     def.output = sec.output.as_ref().map(|o| {
         spans.insert("output".into(), o.span());
         o.get_ref().clone()
@@ -337,7 +434,8 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         Some(p) => {
             let n = *p.get_ref();
             if !(1..=100_000).contains(&n) {
-                return Err(Error::at(task, p.span(), "linkage.positions", format!("{n} positions")).with_help("a number from 1 to 100000; the course uses 12"));
+                return Err(Error::at(task, p.span(), "linkage.positions", format!("{n} positions"))
+                    .with_help("a number from 1 to 100000; the course uses 12"));
             }
             n as usize
         }
@@ -346,12 +444,26 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         Some(a) => Some(qty(task, "linkage.at", a, Dim::Angle)?),
         None => None,
     };
-    Ok(Some(LinkageTask { def, working, positions, at, spans, section }))
+    Ok(Some(LinkageTask {
+        def,
+        working,
+        positions,
+        at,
+        spans,
+        section,
+    }))
 }
 
 /// A point on a link from one of its forms; `None` while a referenced point
 /// is not yet placed.
-fn local_point(task: &TaskSource, field: &str, ps: &S<PointSec>, first_two: &[String], length: f64, defined: &BTreeMap<String, Vec2>) -> Result<Option<Vec2>, Error> {
+fn local_point(
+    task: &TaskSource,
+    field: &str,
+    ps: &S<PointSec>,
+    first_two: &[String],
+    length: f64,
+    defined: &BTreeMap<String, Vec2>,
+) -> Result<Option<Vec2>, Error> {
     let p = ps.get_ref();
     let off = match &p.offset {
         Some(o) => qty(task, &format!("{field}.offset"), o, Dim::Length)?,
@@ -359,7 +471,12 @@ fn local_point(task: &TaskSource, field: &str, ps: &S<PointSec>, first_two: &[St
     };
     if let Some(a) = &p.along {
         if first_two.len() < 2 {
-            return Err(Error::at(task, a.span(), &format!("{field}.along"), "`along` needs a link with two joints"));
+            return Err(Error::at(
+                task,
+                a.span(),
+                &format!("{field}.along"),
+                "`along` needs a link with two joints",
+            ));
         }
         let r = qty(task, &format!("{field}.along"), a, Dim::Ratio)?;
         return Ok(Some(Vec2::new(r * length, off)));
@@ -383,7 +500,9 @@ fn local_point(task: &TaskSource, field: &str, ps: &S<PointSec>, first_two: &[St
             Some(a) => qty(task, &format!("{field}.angle"), a, Dim::Angle)?,
             None => 0.0,
         };
-        let lq = p.length.as_ref().ok_or_else(|| Error::at(task, ps.span(), &format!("{field}.length"), "missing the distance from `from`").with_help("length = \"0.6 m\""))?;
+        let lq = p.length.as_ref().ok_or_else(|| {
+            Error::at(task, ps.span(), &format!("{field}.length"), "missing the distance from `from`").with_help("length = \"0.6 m\"")
+        })?;
         let len = qty(task, &format!("{field}.length"), lq, Dim::Length)?;
         if len <= 0.0 {
             return Err(Error::at(task, lq.span(), &format!("{field}.length"), "a length must be > 0"));
@@ -391,7 +510,11 @@ fn local_point(task: &TaskSource, field: &str, ps: &S<PointSec>, first_two: &[St
         let a = base + ang;
         return Ok(Some(o + Vec2::new(a.cos(), a.sin()) * len));
     }
-    Err(Error::at(task, ps.span(), field, "a point needs `along`, `at`, or `from` with `length`").with_help("{ along = 0.5 } | { at = [\"100 mm\", \"0 mm\"] } | { from = \"E\", toward = \"B\", angle = \"180 deg\", length = \"0.6 m\" }"))
+    Err(
+        Error::at(task, ps.span(), field, "a point needs `along`, `at`, or `from` with `length`").with_help(
+            "{ along = 0.5 } | { at = [\"100 mm\", \"0 mm\"] } | { from = \"E\", toward = \"B\", angle = \"180 deg\", length = \"0.6 m\" }",
+        ),
+    )
 }
 
 /// Parse "C above AD", "C below A-D", "C left of AD", "C right of line AD".
@@ -422,5 +545,8 @@ fn parse_hint(t: &str, def: &MechanismDef) -> Result<AssemblyHint, String> {
         "right" => HintKind::RightOf(a, b),
         w => return Err(format!("unknown side `{w}` in `{t}`")),
     };
-    Ok(AssemblyHint { point: words[0].to_string(), kind })
+    Ok(AssemblyHint {
+        point: words[0].to_string(),
+        kind,
+    })
 }

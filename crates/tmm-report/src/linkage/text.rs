@@ -14,36 +14,94 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
     let c = &a.cycle;
     let mut o = String::new();
     let _ = writeln!(o, "LEVER MECHANISM — structure (структурный анализ)");
-    let _ = writeln!(o, "  n = {}, p5 = {}, p4 = {}; W = 3·{} − 2·{} − {} = {}", s.n, s.p5, s.p4, s.n, s.p5, s.p4, s.dof);
+    let _ = writeln!(
+        o,
+        "  n = {}, p5 = {}, p4 = {}; W = 3·{} − 2·{} − {} = {}",
+        s.n, s.p5, s.p4, s.n, s.p5, s.p4, s.dof
+    );
     if s.redundant != 0 || s.passive != 0 || s.dof_rank != s.dof {
-        let _ = writeln!(o, "  by rank: DOF = {}, redundant constraints q = {}, passive freedoms = {}", s.dof_rank, s.redundant, s.passive);
+        let _ = writeln!(
+            o,
+            "  by rank: DOF = {}, redundant constraints q = {}, passive freedoms = {}",
+            s.dof_rank, s.redundant, s.passive
+        );
     }
     let _ = writeln!(o, "  structure formula: {}", s.formula);
     for g in &s.groups {
-        let _ = writeln!(o, "  group ({}): class {}, order {}, kind {}", g.links.join(","), tmm_linkage::structure::roman(g.class), g.order, g.kind);
+        let _ = writeln!(
+            o,
+            "  group ({}): class {}, order {}, kind {}",
+            g.links.join(","),
+            tmm_linkage::structure::roman(g.class),
+            g.order,
+            g.kind
+        );
     }
     let _ = writeln!(o, "  class of the mechanism: {}", tmm_linkage::structure::roman(s.class));
     let unit = if c.output.kind == OutputKind::Linear { "m" } else { "rad" };
-    let _ = writeln!(o, "\nCYCLE — output link `{}` ({})", m.link_names[c.output.link], if c.output.kind == OutputKind::Linear { "travel along its guide" } else { "angle" });
+    let _ = writeln!(
+        o,
+        "\nCYCLE — output link `{}` ({})",
+        m.link_names[c.output.link],
+        if c.output.kind == OutputKind::Linear {
+            "travel along its guide"
+        } else {
+            "angle"
+        }
+    );
     if c.dead.is_empty() {
         let _ = writeln!(o, "  the output turns fully: no dead positions");
     } else {
-        let _ = writeln!(o, "  dead positions: φ = {:.6}° (start of the working stroke), {:.6}°", c.dead[0].to_degrees(), c.dead[1].to_degrees());
-        let _ = writeln!(o, "  working stroke {:.4}°, return {:.4}°, θ = {:.4}°, Kv = {:.5}", c.working_angle.to_degrees(), c.return_angle.to_degrees(), c.theta.to_degrees(), c.kv);
-        let stroke = if c.output.kind == OutputKind::Linear { format!("{:.6} m", c.stroke) } else { format!("{:.6} rad = {:.4}°", c.stroke, c.stroke.to_degrees()) };
+        let _ = writeln!(
+            o,
+            "  dead positions: φ = {:.6}° (start of the working stroke), {:.6}°",
+            c.dead[0].to_degrees(),
+            c.dead[1].to_degrees()
+        );
+        let _ = writeln!(
+            o,
+            "  working stroke {:.4}°, return {:.4}°, θ = {:.4}°, Kv = {:.5}",
+            c.working_angle.to_degrees(),
+            c.return_angle.to_degrees(),
+            c.theta.to_degrees(),
+            c.kv
+        );
+        let stroke = if c.output.kind == OutputKind::Linear {
+            format!("{:.6} m", c.stroke)
+        } else {
+            format!("{:.6} rad = {:.4}°", c.stroke, c.stroke.to_degrees())
+        };
         let _ = writeln!(o, "  stroke of the output: {stroke}");
     }
     for &(p, v, phi) in &a.pressure_max {
-        let _ = writeln!(o, "  max pressure angle at {}: ϑ = {:.3}° (γ = {:.3}°) at φ = {:.2}°", m.points[p].name, v.to_degrees(), 90.0 - v.to_degrees(), phi.to_degrees());
+        let _ = writeln!(
+            o,
+            "  max pressure angle at {}: ϑ = {:.3}° (γ = {:.3}°) at φ = {:.2}°",
+            m.points[p].name,
+            v.to_degrees(),
+            90.0 - v.to_degrees(),
+            phi.to_degrees()
+        );
     }
     let _ = writeln!(o, "\nPOSITIONS (φ absolute, ψ from the start; s in {unit})");
-    let mut head = format!("  {:>4} {:>9} {:>9} {:>11} {:>11} {:>12}", "pos", "φ,°", "ψ,°", "s", "ds/dφ", "d²s/dφ²");
+    let mut head = format!(
+        "  {:>4} {:>9} {:>9} {:>11} {:>11} {:>12}",
+        "pos", "φ,°", "ψ,°", "s", "ds/dφ", "d²s/dφ²"
+    );
     for n in m.link_names.iter().skip(1) {
         let _ = write!(head, " {:>10} {:>11}", format!("ω{n}"), format!("ε{n}"));
     }
     let _ = writeln!(o, "{head}");
     for r in &a.rows {
-        let mut line = format!("  {:>4} {:>9.3} {:>9.3} {:>11.6} {:>11.6} {:>12.6}", r.pos.label, r.pos.phi.to_degrees(), r.pos.psi.to_degrees(), r.analogs.0, r.analogs.1, r.analogs.2);
+        let mut line = format!(
+            "  {:>4} {:>9.3} {:>9.3} {:>11.6} {:>11.6} {:>12.6}",
+            r.pos.label,
+            r.pos.phi.to_degrees(),
+            r.pos.psi.to_degrees(),
+            r.analogs.0,
+            r.analogs.1,
+            r.analogs.2
+        );
         for i in 1..m.link_names.len() {
             let _ = write!(line, " {:>10.4} {:>11.3}", r.sol.links[i].omega, r.sol.links[i].eps);
         }
@@ -51,11 +109,29 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
     }
     let r = &a.plan_row;
     let _ = writeln!(o, "\nPOINTS at φ = {:.4}° (m, m/s, m/s²)", r.pos.phi.to_degrees());
-    let _ = writeln!(o, "  {:>6} {:>10} {:>10} {:>10} {:>11} {:>11}", "point", "x", "y", "|v|", "|a|", "ϑ,°");
+    let _ = writeln!(
+        o,
+        "  {:>6} {:>10} {:>10} {:>10} {:>11} {:>11}",
+        "point", "x", "y", "|v|", "|a|", "ϑ,°"
+    );
     for (i, p) in m.points.iter().enumerate() {
         let s = &r.sol.points[i];
-        let pa = r.pressure.iter().find(|x| x.0 == i).map(|x| format!("{:.3}", x.1.to_degrees())).unwrap_or_default();
-        let _ = writeln!(o, "  {:>6} {:>10.5} {:>10.5} {:>10.5} {:>11.4} {:>11}", p.name, s.p.x, s.p.y, s.v.hypot(), s.a.hypot(), pa);
+        let pa = r
+            .pressure
+            .iter()
+            .find(|x| x.0 == i)
+            .map(|x| format!("{:.3}", x.1.to_degrees()))
+            .unwrap_or_default();
+        let _ = writeln!(
+            o,
+            "  {:>6} {:>10.5} {:>10.5} {:>10.5} {:>11.4} {:>11}",
+            p.name,
+            s.p.x,
+            s.p.y,
+            s.v.hypot(),
+            s.a.hypot(),
+            pa
+        );
     }
     o
 }

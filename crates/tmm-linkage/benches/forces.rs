@@ -1,0 +1,81 @@
+//! Kinetostatics of the seed-003 six-bar over one revolution of 3600
+//! positions: the reactions of all groups, the balancing torque and the
+//! Zhukovsky check at each, from precomputed kinematics; and the same with
+//! the kinematics solved in the loop.
+
+use std::f64::consts::TAU;
+
+use divan::black_box;
+use tmm_geom::Vec2;
+use tmm_linkage::forces::{Action, Kinetostatics, Law, Loads, Resistance};
+use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, SliderDef, Solution};
+
+fn main() {
+    divan::main();
+}
+
+fn sixbar() -> Mechanism {
+    let rocker = LinkDef { name: "3".into(), points: vec![("E".into(), Vec2::ZERO), ("B".into(), Vec2::new(0.6, 0.0)), ("C".into(), Vec2::new(-0.6, 0.0))], mass_center: Vec2::ZERO };
+    Mechanism::new(&MechanismDef {
+        fixed: vec![("O".into(), Vec2::new(-1.25, 0.0)), ("E".into(), Vec2::ZERO)],
+        links: vec![LinkDef::bar("1", "O", "A", 0.27), LinkDef::bar("2", "A", "B", 1.25), rocker, LinkDef::bar("4", "C", "D", 0.65), LinkDef::block("5", "D")],
+        sliders: vec![SliderDef { slider: "5".into(), point: "D".into(), guide_link: "frame".into(), through: Vec2::new(0.0, -0.2), angle: 0.0, angle_on_slider: 0.0 }],
+        input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 12.0, epsilon: 0.0 }),
+        hints: vec![AssemblyHint { point: "B".into(), kind: HintKind::Above("O".into(), "E".into()) }, AssemblyHint { point: "D".into(), kind: HintKind::Near(Vec2::new(0.5, -0.2)) }],
+        assembly_angle: 80f64.to_radians(),
+        ..Default::default()
+    })
+    .unwrap()
+}
+
+/// The seed-003 loads: 30 kg/m, J = m·l²/12, gravity, 3000 N·sin(π·s/H).
+fn loads(m: &Mechanism) -> Loads {
+    let mut l = Loads::new(m);
+    l.gravity = Vec2::new(0.0, -9.81);
+    for (i, mass, len) in [(2, 37.5, 1.25), (3, 18.0, 0.6), (4, 19.5, 0.65), (5, 19.5, 0.0)] {
+        l.links[i].mass = mass;
+        l.links[i].inertia = mass * len * len / 12.0;
+    }
+    l.resistance.push(Resistance { link: 5, action: Action::Force { local: Vec2::ZERO, dir: None }, law: Law::SineOfTravel(3000.0) });
+    l
+}
+
+const N: usize = 3600;
+
+#[divan::bench]
+fn reactions_3600_positions(bencher: divan::Bencher) {
+    let m = sixbar();
+    let mut k = Kinetostatics::new(&m, loads(&m)).unwrap();
+    let mut sol = m.solution();
+    let sols: Vec<Solution> = (0..N)
+        .map(|i| {
+            m.solve(TAU * i as f64 / N as f64, &mut sol).unwrap();
+            sol.clone()
+        })
+        .collect();
+    let mut f = k.result();
+    bencher.bench_local(|| {
+        let mut acc = 0.0;
+        for s in &sols {
+            k.solve(s, &mut f).unwrap();
+            acc += f.balancing_moment;
+        }
+        black_box(acc)
+    });
+}
+
+#[divan::bench]
+fn kinematics_and_reactions_3600_positions(bencher: divan::Bencher) {
+    let m = sixbar();
+    let mut k = Kinetostatics::new(&m, loads(&m)).unwrap();
+    let mut sol = m.solution();
+    let mut f = k.result();
+    bencher.bench_local(|| {
+        let mut acc = 0.0;
+        for i in 0..N {
+            k.solve_at(TAU * i as f64 / N as f64, &mut sol, &mut f).unwrap();
+            acc += f.balancing_moment;
+        }
+        black_box(acc)
+    });
+}
