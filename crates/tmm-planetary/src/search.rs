@@ -355,7 +355,7 @@ fn visit_set(req: &Request, t: Teeth, q: ModuleRatio, (ulo, uhi): (f64, f64), co
     } else {
         counts.unequal += 1;
     }
-    let error = (u - req.ratio) / req.ratio;
+    let error = (u - req.ratio) / req.ratio + 0.0; // + 0.0: no "-0" in outputs
     out.push(Candidate {
         teeth: t,
         modules: q,
