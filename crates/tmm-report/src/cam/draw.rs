@@ -245,8 +245,12 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
             )
         }
     };
-    // world box: the curve, the centre and B₀, with a margin
+    // world box: the curve, the centre, B₀ (and the pivot at the origin of an
+    // oscillating follower's construction), with a margin
     let (mut x0, mut x1, mut y0, mut y1) = (centre.0.min(b0.0), centre.0.max(b0.0), centre.1.min(b0.1), centre.1.max(b0.1));
+    if let Mechanism::OscillatingRoller { .. } = d.mechanism {
+        (x0, x1, y0, y1) = (x0.min(0.0), x1.max(0.0), y0.min(0.0), y1.max(0.0));
+    }
     for &(x, y) in &curve {
         x0 = x0.min(x);
         x1 = x1.max(x);
@@ -260,19 +264,22 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
     let world = (x0 - pad, x1 + pad, y0 - pad - extra, y1 + pad);
     c.fit(world, (10.0, 10.0, 180.0, 170.0));
     if let Some(mut r) = region {
-        // the boundary rays of the region, across the view (skipping the outer square)
-        let m = r.vertices.len();
-        let big = r.vertices.iter().fold(0.0f64, |a, v| a.max(v.x.abs()).max(v.y.abs()));
-        for i in 0..m {
-            let (a, b) = (r.vertices[i], r.vertices[(i + 1) % m]);
-            let on_square = |v: Vec2| v.x.abs() >= 0.98 * big || v.y.abs() >= 0.98 * big;
-            if (on_square(a) && on_square(b)) || (b - a).hypot() < 1e-12 {
-                continue;
-            }
-            let dir = (b - a) * (1.0 / (b - a).hypot());
-            let l = 3.0 * span;
-            if let Some((p, q)) = clip_line(world, a - dir * l, a + dir * l) {
-                c.line((p.x, p.y), (q.x, q.y), Style::DASHED.colored("#2e7d32"));
+        // the boundary rays of the region, across the view (translating follower:
+        // at most four lines, each tangent to the diagram at the allowed angle)
+        if matches!(d.mechanism, Mechanism::TranslatingRoller { .. }) {
+            let m = r.vertices.len();
+            let big = r.vertices.iter().fold(0.0f64, |a, v| a.max(v.x.abs()).max(v.y.abs()));
+            for i in 0..m {
+                let (a, b) = (r.vertices[i], r.vertices[(i + 1) % m]);
+                let on_square = |v: Vec2| v.x.abs() >= 0.98 * big || v.y.abs() >= 0.98 * big;
+                if (on_square(a) && on_square(b)) || (b - a).hypot() < 1e-12 {
+                    continue;
+                }
+                let dir = (b - a) * (1.0 / (b - a).hypot());
+                let l = 3.0 * span;
+                if let Some((p, q)) = clip_line(world, a - dir * l, a + dir * l) {
+                    c.line((p.x, p.y), (q.x, q.y), Style::DASHED.colored("#2e7d32"));
+                }
             }
         }
         // clip the region to the view
@@ -290,8 +297,19 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
         let pts: Vec<(f64, f64)> = r.vertices.iter().map(|v| (v.x, v.y)).collect();
         c.polygon(&pts, region_style);
     }
-    c.line((world.0, 0.0), (world.1, 0.0), Style::AXIS);
-    c.line((b0.0, world.2), (b0.0, world.3), Style::AXIS);
+    if let Mechanism::OscillatingRoller { arm, kappa, .. } = d.mechanism {
+        // the pivot A, the arm at the start and the arc of the roller centres
+        let l = arm * 1e3;
+        let h = kappa * prog.stroke();
+        let (a0, a1) = if h > 0.0 { (0.0, h) } else { (h, 0.0) };
+        c.arc((0.0, 0.0), l, a0 - 0.1, a1 + 0.1, Style::AXIS);
+        c.line((0.0, 0.0), b0, Style::THIN);
+        c.fixed_pivot((0.0, 0.0), 1.0);
+        c.text((0.0, 0.0), "  A", 3.5, Anchor::Start);
+    } else {
+        c.line((world.0, 0.0), (world.1, 0.0), Style::AXIS);
+        c.line((b0.0, world.2), (b0.0, world.3), Style::AXIS);
+    }
     c.polyline(&curve, Style::THICK.widened(0.5).colored("#1f4e9c"));
     c.line(b0, centre, Style::THIN.colored("#c62828"));
     c.dot(centre, 1.0, "#c62828");
