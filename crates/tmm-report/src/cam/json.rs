@@ -3,7 +3,6 @@
 use serde_json::{Map, Value, json};
 use tmm_cams::design::{CamDesign, CamTask};
 use tmm_cams::mechanism::Mechanism;
-use tmm_cams::program::PhaseKind;
 
 use crate::output::num;
 
@@ -42,7 +41,6 @@ pub fn phases(task: &CamTask) -> Value {
                 m.insert("d2s_dphi2_max".into(), num(a));
                 m.insert("d3s_dphi3_max".into(), num(j));
             }
-            let _ = PhaseKind::Dwell;
             Value::Object(m)
         })
         .collect();
@@ -66,13 +64,14 @@ pub fn document(task: &CamTask, d: &CamDesign) -> Value {
         "roller_radius_rule": opt(d.roller_rule),
         "pressure_angle_max_rise": num(d.pressure_max_rise),
         "pressure_angle_max_return": num(d.pressure_max_return),
-        "pressure_angle_limit_rise": num(task.limits.rise),
-        "pressure_angle_limit_return": num(task.limits.ret),
+        "pressure_angle_limit_rise": if d.mechanism.is_flat() { Value::Null } else { num(task.limits.rise) },
+        "pressure_angle_limit_return": if d.mechanism.is_flat() { Value::Null } else { num(task.limits.ret) },
         "rho_min": num(d.rho_min),
         "rho_min_convex": num(d.rho_min_convex),
         "rho_min_concave": opt(d.rho_min_concave),
         "rho_min_pitch": opt(d.rho_min_pitch.filter(|r| r.is_finite())),
-        "undercut": false,
+        // a roller at least as large as the pitch curve's smallest convex radius loops the profile
+        "undercut": d.rho_min_pitch.is_some_and(|r| d.roller > 0.0 && d.roller >= r),
         "phases": phases(task),
     });
     let m = doc.as_object_mut().expect("object");
