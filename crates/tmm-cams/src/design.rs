@@ -86,7 +86,7 @@ pub const DEFAULT_MIN_CURVATURE: f64 = 0.010;
 /// Positions per moving phase whose cones cut the admissible region of an
 /// oscillating roller follower's centre (the envelope error falls as the
 /// square of the step: about 10⁻⁵ of r₀ here).
-pub const OSC_SAMPLES: usize = 360;
+pub const OSC_SAMPLES: usize = 1440;
 
 /// The extent of a flat face.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -173,7 +173,9 @@ impl Region {
             }
             for t in [(-qb - disc.sqrt()) / (2.0 * qa), (-qb + disc.sqrt()) / (2.0 * qa)] {
                 if (0.0..=1.0).contains(&t) {
-                    out.push(a + d * t);
+                    // back onto the circle exactly (the quadratic loses digits on long edges)
+                    let p = a + d * t - c;
+                    out.push(c + p * (r / p.hypot()));
                 }
             }
         }

@@ -145,23 +145,10 @@ pub fn oscillating_roller(
         });
     }
     let mut best: Option<(f64, Mechanism)> = None;
+    let b0 = Vec2::new(arm, 0.0);
     for kappa in [1.0, -1.0] {
-        let region = oscillating_region(prog, sigma, limits, arm, kappa, samples);
-        if region.is_empty() {
-            continue;
-        }
-        let b0 = Vec2::new(arm, 0.0);
-        let o = match pivot {
-            None => region.nearest(b0),
-            Some(a) => {
-                let mut cands = region.circle_crossings(Vec2::ZERO, a);
-                let toward = b0 * (a / arm);
-                if region.contains(toward, 1e-12 * a) {
-                    cands.push(toward);
-                }
-                cands.into_iter().min_by(|p, q| (*p - b0).hypot().total_cmp(&(*q - b0).hypot()))
-            }
-        };
+        let hs = oscillating_cones(prog, sigma, limits, arm, kappa, samples);
+        let o = nearest_by_cuts(&hs, b0, arm, pivot);
         let Some(o) = o else { continue };
         let r0 = (o - b0).hypot();
         if r0 > 1e-9 * arm && best.as_ref().is_none_or(|(r, _)| r0 < *r) {
@@ -222,6 +209,17 @@ pub fn translating_region(prog: &Program, sigma: f64, limits: Limits, size: f64)
 /// `K = B − σκ·l·ψ′·u`, axis `−d`, half-angle ϑ (derived here, docs/cams.md §3).
 pub fn oscillating_region(prog: &Program, sigma: f64, limits: Limits, arm: f64, kappa: f64, samples: usize) -> Region {
     let mut region = Region::square(Vec2::new(arm, 0.0), 1e3 * arm);
+    for h in oscillating_cones(prog, sigma, limits, arm, kappa, samples) {
+        region.clip(h);
+    }
+    region
+}
+
+/// The half-planes of the cones of an oscillating roller follower's centre
+/// (two per position, `samples + 1` positions per moving phase), in the frame
+/// of [`oscillating_region`].
+pub fn oscillating_cones(prog: &Program, sigma: f64, limits: Limits, arm: f64, kappa: f64, samples: usize) -> Vec<HalfPlane> {
+    let mut hs = Vec::new();
     for (k, ph) in prog.phases().iter().enumerate() {
         let lim = match ph.kind {
             PhaseKind::Rise => limits.rise,
@@ -234,16 +232,51 @@ pub fn oscillating_region(prog: &Program, sigma: f64, limits: Limits, arm: f64, 
             let m = prog.eval_in(k, ph.angle * i as f64 / n as f64);
             let psi = kappa * m.s;
             let u = Vec2::new(psi.cos(), psi.sin());
-            let b = u * arm;
             let d = quarter(u) * kappa;
-            let kp = b - u * (sigma * kappa * arm * m.v);
+            let kp = u * arm - u * (sigma * kappa * arm * m.v);
             for sg in [1.0, -1.0] {
                 let nrm = -d * t + u * sg;
-                region.clip(HalfPlane { n: nrm, c: nrm.dot(kp) });
+                hs.push(HalfPlane { n: nrm, c: nrm.dot(kp) });
             }
         }
     }
-    region
+    hs
+}
+
+/// The point of `∩ hs` nearest to `q` (or, with `radius = Some(a)`, the
+/// nearest such point on the circle |p| = a), by cutting planes: start from a
+/// polygon cut by every 32nd half-plane, take its nearest point, and add the
+/// most violated half-plane until none is violated. The answer is exact for
+/// the whole set: a nearest point of a larger region that satisfies every
+/// constraint is the nearest point of the smaller one.
+fn nearest_by_cuts(hs: &[HalfPlane], q: Vec2, scale: f64, radius: Option<f64>) -> Option<Vec2> {
+    let mut region = Region::square(q, 1e3 * scale);
+    for h in hs.iter().step_by(32) {
+        region.clip(*h);
+    }
+    let tol = 1e-12 * scale;
+    for _ in 0..hs.len() {
+        if region.is_empty() {
+            return None;
+        }
+        let o = match radius {
+            None => region.nearest(q)?,
+            Some(a) => {
+                let mut cands = region.circle_crossings(Vec2::ZERO, a);
+                let toward = q * (a / q.hypot());
+                if region.contains(toward, 1e-12 * a) {
+                    cands.push(toward);
+                }
+                cands.into_iter().min_by(|p, r| (*p - q).hypot().total_cmp(&(*r - q).hypot()))?
+            }
+        };
+        let worst = hs.iter().map(|h| (h.slack(o), h)).min_by(|a, b| a.0.total_cmp(&b.0));
+        match worst {
+            Some((sl, h)) if sl < -tol => region.clip(*h),
+            _ => return Some(o),
+        }
+    }
+    None
 }
 
 /// The minimum of `s + d²s/dφ²` over the cycle (the left-hand side of
