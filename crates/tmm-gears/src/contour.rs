@@ -123,17 +123,31 @@ pub fn value_at(base: &PairSpec, b: Boundary, x1: f64, x2: f64) -> f64 {
     Pair::compute(&with_shifts(base, x1, x2)).map_or(f64::NAN, |p| b.value(&p))
 }
 
-/// The x range of the plot for one wheel: from below the undercut limit to
-/// just past a lone tooth's pointing (clamped to a readable window).
+/// The x range of the plot (and of the search for x1, x2) for one wheel: from
+/// below the undercut limit to just past a lone tooth's pointing, clamped to
+/// [−2, 3].
 pub fn default_range(z: u32, base: &PairSpec, ring: bool) -> (f64, f64) {
     if ring {
         return (-0.5, 1.5);
     }
     let r = &base.rack;
     let xm = xmin(z, r);
-    let point = brent(|x| lone_tip_thickness(z, x, r).unwrap_or(-1.0), xm - 2.0, 4.0, 1e-9).unwrap_or(2.0);
+    // Bracket the pointing shift from max(xmin, 0): there the tooth of any
+    // cuttable z has sa > 0 and its tip circle lies outside the base circle.
+    let lo_b = xm.max(0.0);
+    let sa = |x: f64| lone_tip_thickness(z, x, r).unwrap_or(-1.0);
+    let mut hi_b = lo_b + 4.0;
+    while sa(hi_b) > 0.0 && hi_b < lo_b + 1e4 {
+        hi_b = lo_b + 2.0 * (hi_b - lo_b);
+    }
+    let point = if sa(lo_b) > 0.0 {
+        brent(sa, lo_b, hi_b, 1e-9).unwrap_or(2.0)
+    } else {
+        2.0
+    };
     let lo = (xm.min(0.0) - 0.5).max(-2.0);
-    let hi = (point + 0.1).clamp(lo + 0.5, 3.0);
+    // tip shortening in a pair delays pointing: leave room past the lone tooth's value
+    let hi = (point + 0.6).clamp(lo + 0.5, 3.0);
     (lo, hi)
 }
 

@@ -17,8 +17,13 @@ pub enum GearError {
     #[error("the module must be a positive length, got {} mm", .0 * 1e3)]
     Module(f64),
     /// A basic-rack parameter is out of range.
-    #[error("basic rack: {0}")]
-    Rack(&'static str),
+    #[error("basic rack: {msg}")]
+    Rack {
+        /// Which parameter: `alpha`, `ha`, `c` or `hl`.
+        param: &'static str,
+        /// What is wrong.
+        msg: &'static str,
+    },
     /// A profile shift is not a finite number.
     #[error("the shift x{wheel} must be a finite number")]
     Shift {

@@ -131,7 +131,10 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
     let eta_c = tip + rho;
     let xi_c = PI * m / 4.0 + eta_c * ta - rho / ca;
     if xi_c < 0.0 || rho < 0.0 {
-        return Err(GearError::Rack("the cutter's tip fillet does not fit on its tip (check hl*, c*)"));
+        return Err(GearError::Rack {
+            param: "hl",
+            msg: "the cutter's tip fillet does not fit on its tip (check hl*, c*)",
+        });
     }
     let rf = r + x * m + tip;
     if ra <= rf {

@@ -35,16 +35,28 @@ impl BasicRack {
     /// that the cutter's tip fillet has a non-negative radius.
     pub fn validate(&self) -> Result<(), GearError> {
         if !(self.alpha.is_finite() && self.alpha > 5f64.to_radians() && self.alpha < 45f64.to_radians()) {
-            return Err(GearError::Rack("the profile angle α must lie between 5° and 45°"));
+            return Err(GearError::Rack {
+                param: "alpha",
+                msg: "the profile angle α must lie between 5° and 45°",
+            });
         }
         if !(self.ha.is_finite() && self.ha > 0.0 && self.ha <= 3.0) {
-            return Err(GearError::Rack("ha* must lie in (0, 3]"));
+            return Err(GearError::Rack {
+                param: "ha",
+                msg: "ha* must lie in (0, 3]",
+            });
         }
         if !(self.c.is_finite() && self.c >= 0.0 && self.c <= 1.0) {
-            return Err(GearError::Rack("c* must lie in [0, 1]"));
+            return Err(GearError::Rack {
+                param: "c",
+                msg: "c* must lie in [0, 1]",
+            });
         }
         if !(self.hl.is_finite() && self.hl > self.ha && self.hl <= 2.0 * self.ha + self.c) {
-            return Err(GearError::Rack("hl* must lie in (ha*, 2·ha* + c*]"));
+            return Err(GearError::Rack {
+                param: "hl",
+                msg: "hl* must lie in (ha*, 2·ha* + c*] so that the cutter's straight flank ends above its tip fillet",
+            });
         }
         Ok(())
     }

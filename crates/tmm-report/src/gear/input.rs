@@ -377,7 +377,15 @@ pub fn gear_error(o: &Origin<'_>, e: &GearError) -> Error {
             format!("use at least {min} teeth (fewer cannot be cut by the rack without undercut or a pointed tip)"),
         ),
         GearError::Module(_) => (Field::Module, "give a positive module, e.g. \"5 mm\"".into()),
-        GearError::Rack(_) => (Field::Alpha, "the default rack is α = 20°, ha* = 1, c* = 0.25, hl* = 2".into()),
+        GearError::Rack { param, .. } => (
+            match *param {
+                "ha" => Field::Ha,
+                "c" => Field::C,
+                "hl" => Field::Hl,
+                _ => Field::Alpha,
+            },
+            "the default rack is α = 20°, ha* = 1, c* = 0.25, hl* = 2 (GOST 13755-81)".into(),
+        ),
         GearError::Shift { wheel } => (
             if *wheel == 1 { Field::X1 } else { Field::X2 },
             "a shift is a plain number such as 0.3".into(),
