@@ -97,24 +97,123 @@ pub fn solve_group(
         return false;
     }
     for (k, p) in pairs.iter().enumerate() {
-        let (l1, l2) = (b[2 * k], b[2 * k + 1]);
-        out[k] = match **p {
-            Pair::R { a, la, .. } => PairForce {
-                force: Vec2::new(l1, l2),
-                at: states[a].pos(la),
-                couple: 0.0,
-            },
-            Pair::P { slider, guide, ps, d, .. } => {
-                let nrm = rot(states[guide].u, perp(d));
-                PairForce {
-                    force: nrm * l1,
-                    at: states[slider].pos(ps),
-                    couple: l2,
-                }
-            }
-        };
+        out[k] = pair_force(p, states, b[2 * k], b[2 * k + 1]);
     }
     true
+}
+
+/// The reactions of a dyad (class II group) by eliminating its outer pairs:
+/// the course's method in matrix form, derived in docs/forces.md.
+///
+/// Links `l1`, `l2`; pairs ordered outer `e1` (on `l1` only), inner `m`,
+/// outer `e2` (on `l2` only). Each link's three equilibrium equations read
+/// `A·λ_e + M·λ_m = b`; the combination `nᵀ` with `n = a₁ × a₂` (the cross
+/// product of the two columns of A) removes the outer pair's two unknowns —
+/// for a revolute outer pair it is the moment equation about that joint, as
+/// in seed 001 ("ΣM(C) = 0 ⇒ R^τ"). The two links give a 2×2 system for the
+/// inner pair's λ_m; then each outer pair's λ_e follows from its link's
+/// equations (least squares of a consistent 3×2 system, exact).
+///
+/// Same contract as [`solve_group`] for a dyad, without the 6×6 elimination.
+pub fn solve_dyad(pairs: &[&Pair], links: &[usize], states: &[LinkState], q: &[(Vec2, f64)], _work: &mut GroupWork, out: &mut [PairForce]) -> bool {
+    let (x, y) = (links[0], links[1]);
+    let [a10, a11] = columns(pairs[0], x, states);
+    let [m10, m11] = columns(pairs[1], x, states);
+    let [m20, m21] = columns(pairs[1], y, states);
+    let [a20, a21] = columns(pairs[2], y, states);
+    let b1 = [-q[0].0.x, -q[0].0.y, -q[0].1];
+    let b2 = [-q[1].0.x, -q[1].0.y, -q[1].1];
+    let n1 = cross3(a10, a11);
+    let n2 = cross3(a20, a21);
+    let (p, qq, r, s) = (dot3(n1, m10), dot3(n1, m11), dot3(n2, m20), dot3(n2, m21));
+    let (u, v) = (dot3(n1, b1), dot3(n2, b2));
+    let det = p * s - qq * r;
+    let size = (p.abs() + qq.abs()) * (r.abs() + s.abs());
+    if det.abs() <= 1e-12 * size || !det.is_finite() {
+        return false;
+    }
+    let lm = [(u * s - qq * v) / det, (p * v - u * r) / det];
+    let le1 = outer(a10, a11, m10, m11, b1, lm);
+    let le2 = outer(a20, a21, m20, m21, b2, lm);
+    for (k, l) in [le1, lm, le2].into_iter().enumerate() {
+        out[k] = pair_force(pairs[k], states, l[0], l[1]);
+    }
+    out[..3].iter().all(|f| f.force.x.is_finite() && f.force.y.is_finite() && f.couple.is_finite())
+}
+
+/// The generalised force on link `l` (force x, y and moment about its
+/// origin) per unit of each of the pair's two multipliers: the pair's two
+/// rows of the constraint Jacobian restricted to the link's columns
+/// (crates/tmm-linkage/src/constraints.rs, derived there), written out so
+/// that a dyad needs no assembly.
+#[inline(always)]
+fn columns(p: &Pair, l: usize, st: &[LinkState]) -> [[f64; 3]; 2] {
+    match *p {
+        Pair::R { a, b, la, lb, .. } => {
+            if a == l {
+                let r = rot(st[a].u, la);
+                [[1.0, 0.0, -r.y], [0.0, 1.0, r.x]]
+            } else {
+                let r = rot(st[b].u, lb);
+                [[-1.0, 0.0, r.y], [0.0, -1.0, -r.x]]
+            }
+        }
+        Pair::P { slider, guide, ps, q, d, .. } => {
+            let (ss, sg) = (&st[slider], &st[guide]);
+            let n = rot(sg.u, perp(d));
+            let rs = rot(ss.u, ps);
+            if slider == l {
+                [[n.x, n.y, n.dot(perp(rs))], [0.0, 0.0, 1.0]]
+            } else {
+                let rg = rot(sg.u, q);
+                let e = ss.o + rs - sg.o - rg;
+                [[-n.x, -n.y, perp(n).dot(e) - n.dot(perp(rg))], [0.0, 0.0, -1.0]]
+            }
+        }
+    }
+}
+
+#[inline(always)]
+fn cross3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+#[inline(always)]
+fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` by its 2×2 normal equations.
+#[inline(always)]
+fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
+    let rr = [b[0] - m0[0] * lm[0] - m1[0] * lm[1], b[1] - m0[1] * lm[0] - m1[1] * lm[1], b[2] - m0[2] * lm[0] - m1[2] * lm[1]];
+    let (g00, g01, g11) = (dot3(a0, a0), dot3(a0, a1), dot3(a1, a1));
+    let (h0, h1) = (dot3(a0, rr), dot3(a1, rr));
+    let d = g00 * g11 - g01 * g01;
+    [(h0 * g11 - g01 * h1) / d, (g00 * h1 - g01 * h0) / d]
+}
+
+#[inline(always)]
+fn pair_force(p: &Pair, states: &[LinkState], l1: f64, l2: f64) -> PairForce {
+    match *p {
+        Pair::R { a, la, .. } => PairForce { force: Vec2::new(l1, l2), at: states[a].pos(la), couple: 0.0 },
+        Pair::P { slider, guide, ps, d, .. } => PairForce { force: rot(states[guide].u, perp(d)) * l1, at: states[slider].pos(ps), couple: l2 },
+    }
+}
+
+/// `true` when a group's pairs are ordered as [`solve_dyad`] needs: two links,
+/// three pairs, the first only on `links[0]`, the second on both, the third
+/// only on `links[1]`.
+pub fn is_ordered_dyad(pairs: &[&Pair], links: &[usize]) -> bool {
+    if links.len() != 2 || pairs.len() != 3 {
+        return false;
+    }
+    let on = |p: &Pair, l: usize| {
+        let (a, b) = p.links();
+        a == l || b == l
+    };
+    let (x, y) = (links[0], links[1]);
+    on(pairs[0], x) && !on(pairs[0], y) && on(pairs[1], x) && on(pairs[1], y) && on(pairs[2], y) && !on(pairs[2], x)
 }
 
 /// The generalised load of a force `f` at global point `p` and a couple `c`

@@ -15,11 +15,10 @@
 use tmm_geom::{Vec2, cross, perp};
 
 use super::error::ForceError;
-use super::group::{GroupWork, PairForce, about_origin, solve_group};
+use super::group::{GroupWork, PairForce, about_origin, is_ordered_dyad, solve_dyad, solve_group};
 use super::inertia::inertia_load;
 use super::loads::Loads;
 use super::stroke::{Phase, Stroke, Working};
-use super::zhukovsky;
 use crate::mechanism::Pair;
 use crate::{Mechanism, Solution};
 
@@ -120,8 +119,12 @@ pub struct Kinetostatics<'m> {
     /// The output's stroke, when a resistance law needs it.
     pub stroke: Option<Stroke>,
     gpairs: Vec<Vec<&'m Pair>>,
+    /// Per group: solved by the dyad elimination (else the general solve).
+    dyad: Vec<bool>,
     pivot_pair: usize,
     work: GroupWork,
+    /// Solve every group by the general Jᵀ·λ system (for cross-checks).
+    pub general: bool,
 }
 
 impl<'m> Kinetostatics<'m> {
@@ -148,11 +151,8 @@ impl<'m> Kinetostatics<'m> {
                 }
             })?;
         }
-        let gpairs = m
-            .groups
-            .iter()
-            .map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect())
-            .collect();
+        let gpairs: Vec<Vec<&Pair>> = m.groups.iter().map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect()).collect();
+        let dyad = m.groups.iter().zip(&gpairs).map(|(g, p)| is_ordered_dyad(p, &g.info.link_ids)).collect();
         let c = m.crank.link;
         let pivot_pair = m
             .pairs
@@ -165,8 +165,10 @@ impl<'m> Kinetostatics<'m> {
             loads,
             stroke,
             gpairs,
+            dyad,
             pivot_pair,
             work: GroupWork::new(max_links),
+            general: false,
         })
     }
 
@@ -209,22 +211,28 @@ impl<'m> Kinetostatics<'m> {
         }
         // --- loads on every link, reduced to S and to the link's origin
         out.acc[0] = (Vec2::ZERO, 0.0);
+        // virtual power of the same raw loads, summed alongside (Zhukovsky's
+        // lever, zhukovsky::balancing_moment written inline): no reaction enters it
+        let mut power = 0.0;
         for l in 1..m.link_names.len() {
             let ld = &self.loads.links[l];
             let st = &sol.links[l];
             let (fi, s, mi) = inertia_load(st, m.mass_centers[l], ld.mass, ld.inertia);
             let w = self.loads.gravity * ld.mass;
+            power += (fi + w).dot(st.kin_at(s).0) + (mi + ld.moment) * st.omega;
             let (mut fe, mut me) = (Vec2::ZERO, ld.moment);
             for pf in &ld.forces {
                 let p = st.pos(pf.local);
                 fe += pf.force;
                 me += cross(p - s, pf.force);
+                power += pf.force.dot(st.kin_at(p).0);
             }
             for (k, r) in self.loads.resistance.iter().enumerate() {
                 if r.link == l {
                     let (f, p, c) = r.apply(st, out.resistance[k]);
                     fe += f;
                     me += cross(p - s, f) + c;
+                    power += f.dot(st.kin_at(p).0) + c * st.omega;
                 }
             }
             let f = fi + w + fe;
@@ -248,7 +256,8 @@ impl<'m> Kinetostatics<'m> {
                 out.q[i] = out.acc[l];
             }
             let prs = &self.gpairs[g];
-            if !solve_group(
+            let solver = if self.dyad[g] && !self.general { solve_dyad } else { solve_group };
+            if !solver(
                 prs,
                 links,
                 &sol.links,
@@ -290,7 +299,7 @@ impl<'m> Kinetostatics<'m> {
         let rl = r.hypot();
         out.balancing_force = out.balancing_moment / rl;
         out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
-        out.zhukovsky_moment = zhukovsky::balancing_moment(m, &self.loads, sol, &out.resistance);
+        out.zhukovsky_moment = -power / sol.links[c].omega;
         // --- nothing non-finite leaves
         let bad = |what: &str| ForceError::NonFinite {
             phi_deg: phi.to_degrees(),

@@ -243,6 +243,9 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
     for (k, rs) in sec.resistance.iter().flatten().enumerate() {
         let field = format!("forces.resistance[{k}]");
         spans.insert(format!("resistance[{k}]"), rs.span());
+        if let Some(t) = &rs.get_ref().table {
+            spans.insert(format!("resistance[{k}].table"), t.span());
+        }
         loads.resistance.push(resistance(task, def, m, &field, rs)?);
     }
     let strength = match &sec.strength {
