@@ -2,6 +2,10 @@
 //! shift — geometry, checks, specific sliding, the meshing drawing, generated
 //! profiles — and the blocking contour with the chosen x1, x2.
 
+// The shared `Error` carries the task text for located diagnostics, and the
+// command is parsed once: size lints do not apply here.
+#![allow(clippy::result_large_err, clippy::large_enum_variant)]
+
 use std::path::PathBuf;
 
 use tmm_gears::contour::{ContourOptions, blocking_contour};
