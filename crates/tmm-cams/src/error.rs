@@ -12,6 +12,14 @@ pub enum CamError {
         /// What is wrong with it.
         reason: String,
     },
+    /// Pressure or transmission limits that could not be read (`rise 15, return 30`).
+    #[error("cannot read the limits `{text}`: {reason}")]
+    Limits {
+        /// The text as written.
+        text: String,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A motion law name that tmm does not know.
     #[error("unknown motion law `{name}`")]
     UnknownLaw {

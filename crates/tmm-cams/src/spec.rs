@@ -172,7 +172,7 @@ impl Limits {
 /// ```
 pub fn parse_limits(text: &str, transmission: bool) -> Result<Limits, CamError> {
     let conv = |v: f64| if transmission { std::f64::consts::FRAC_PI_2 - v } else { v };
-    let bad = |reason: String| CamError::Phase {
+    let bad = |reason: String| CamError::Limits {
         text: text.to_string(),
         reason,
     };

@@ -263,7 +263,8 @@ fn limits_of(raw: &RawQty, transmission: bool, f: Field, loc: &Locate<'_>) -> Re
             }
             e => e.to_string(),
         };
-        loc(f, msg).with_help(format!(
+        let example = if transmission { "rise 75, return 60" } else { "rise 15, return 30" };
+        loc(f, msg).with_help(format!("write the allowed {what} angles as \"{example}\" or one value for both, in degrees below 90"))
             "write the allowed {what} angles as \"rise 15, return 30\" or one value for both, in degrees below 90"
         ))
     })
@@ -425,7 +426,7 @@ pub fn cam_error(e: CamError, loc: &Locate<'_>) -> Error {
         }
         CamError::Stroke(_) => loc(Field::Stroke, msg)
             .with_help("a positive length such as \"13 mm\" (an angle such as \"20 deg\" for an oscillating follower)"),
-        CamError::PressureLimit { .. } => loc(Field::MaxPressure, msg).with_help("e.g. \"rise 30, return 45\""),
+        CamError::PressureLimit { .. } | CamError::Limits { .. } => loc(Field::MaxPressure, msg).with_help("e.g. \"rise 30, return 45\""),
         CamError::Dimension { field, .. } => {
             let f = match *field {
                 "roller" => Field::Roller,
