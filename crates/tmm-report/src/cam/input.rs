@@ -264,8 +264,8 @@ fn limits_of(raw: &RawQty, transmission: bool, f: Field, loc: &Locate<'_>) -> Re
             e => e.to_string(),
         };
         let example = if transmission { "rise 75, return 60" } else { "rise 15, return 30" };
-        loc(f, msg).with_help(format!("write the allowed {what} angles as \"{example}\" or one value for both, in degrees below 90"))
-            "write the allowed {what} angles as \"rise 15, return 30\" or one value for both, in degrees below 90"
+        loc(f, msg).with_help(format!(
+            "write the allowed {what} angles as \"{example}\" or one value for both, in degrees below 90"
         ))
     })
 }
