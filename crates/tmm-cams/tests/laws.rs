@@ -219,6 +219,9 @@ fn program_is_continuous_at_the_phase_joints() {
         };
         let law = Law::new(k.clone()).unwrap();
         let p = Program::new(0.02, spec::parse_phases(&text.replace("LAW", &name)).unwrap()).unwrap();
+        // s(end of the rise) = h, s(end of the return) = 0
+        assert!((p.eval_in(0, p.phases()[0].angle).s - 0.02).abs() < 1e-14, "{k}");
+        assert!(p.eval_in(2, p.phases()[2].angle).s.abs() < 1e-14, "{k}");
         for j in 0..p.phases().len() {
             let next = (j + 1) % p.phases().len();
             let end = p.eval_in(j, p.phases()[j].angle);
