@@ -5,7 +5,7 @@
 //! Source: the region is convex; its nearest point to `q` is either `q`, the
 //! projection of `q` on one boundary line, or a vertex (Karush–Kuhn–Tucker
 //! conditions of a convex quadratic program with linear constraints;
-//! Boyd & Vandenberghe, *Convex Optimization*, §5.5.3).
+//! Boyd & Vandenberghe, *Convex Optimization*, ch. 5).
 
 use tmm_geom::Vec2;
 

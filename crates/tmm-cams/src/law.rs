@@ -91,7 +91,7 @@ impl Law {
                 Some(vec![Piece::linear(0.0, 1.0 / u, 0.0), Piece::linear(u, -1.0 / (1.0 - u), 0.0)])
             }
             LawKind::LinearDecreasing => Some(vec![Piece::linear(0.0, 1.0, -2.0)]),
-            // Norton, Design of Machinery, 5th ed., §8.3, fig. 8-8: ramps over 1/8
+            // Norton, Design of Machinery, ch. 8 (double-dwell functions): ramps over 1/8
             LawKind::Trapezoid => Some(vec![
                 Piece::linear(0.0, 0.0, 8.0),
                 Piece::linear(0.125, 1.0, 0.0),
@@ -99,7 +99,7 @@ impl Law {
                 Piece::linear(0.625, -1.0, 0.0),
                 Piece::linear(0.875, -1.0, 8.0),
             ]),
-            // Norton §8.3, eq. 8.15: sine ramps of period 1/2 over 1/8
+            // Norton, ch. 8, modified trapezoid: sine ramps of period 1/2 over 1/8
             LawKind::ModTrapezoid => Some(vec![
                 Piece::new(0.0, 0.0, 0.0, 1.0, 0.0, 4.0 * PI),
                 Piece::linear(0.125, 1.0, 0.0),
@@ -107,7 +107,7 @@ impl Law {
                 Piece::linear(0.625, -1.0, 0.0),
                 Piece::new(0.875, 0.0, 0.0, 0.0, -1.0, 4.0 * PI),
             ]),
-            // Norton §8.3, eq. 8.17: 1/8 of a fast sine, a slow cosine, 1/8 of a fast cosine
+            // Norton, ch. 8, modified sine: 1/8 of a fast sine, a slow cosine, 1/8 of a fast cosine
             LawKind::ModSine => Some(vec![
                 Piece::new(0.0, 0.0, 0.0, 1.0, 0.0, 4.0 * PI),
                 Piece::new(0.125, 0.0, 0.0, 0.0, 1.0, 4.0 * PI / 3.0),
@@ -148,9 +148,9 @@ impl Law {
     /// `[y, y′, y″, y‴]` at the phase fraction `x ∈ [0, 1]` (derivatives with
     /// respect to `x`).
     ///
-    /// Sources: cosine and sine — Artobolevsky, ТММ (1988), §26.3, table 26.1;
-    /// polynomials — Norton, Design of Machinery, §8.4, eqs. 8.23 (3-4-5) and 8.24
-    /// (4-5-6-7); the piecewise laws — [`crate::segments`].
+    /// Sources: cosine and sine — Artobolevsky, ТММ (1988), the chapter on cam mechanisms;
+    /// polynomials — Norton, Design of Machinery, ch. 8, polynomial functions (3-4-5 and
+    /// 4-5-6-7); the piecewise laws — [`crate::segments`].
     ///
     /// ```
     /// use tmm_cams::law::{Law, LawKind};

@@ -214,7 +214,7 @@ impl Mechanism {
     /// translating axis) at `K = B − σ·(ds/dφ)·m`, and O–K is parallel to the
     /// contact normal, so `tan ϑ = |(O − K)·m| / ((O − K)·(−d))`, d the
     /// direction of the rise. For a translating follower this is
-    /// `tan ϑ = (σ·ds/dφ − e)/(s₀ + s)` (Norton, Design of Machinery, eq. 8.31;
+    /// `tan ϑ = (σ·ds/dφ − e)/(s₀ + s)` (Norton, Design of Machinery, ch. 8, cam sizing;
     /// the oscillating case derived here, docs/cams.md §3).
     ///
     /// For a flat face it is the angle between the face normal and the

@@ -5,7 +5,7 @@
 //! extremes of both.
 //!
 //! Curvature of a parametric curve: `κ = (x′y″ − y′x″)/|X′|³` (any calculus
-//! text; e.g. Korn & Korn, *Mathematical Handbook*, 17.2-3). The working
+//! text, e.g. Korn & Korn, *Mathematical Handbook*, ch. 17). The working
 //! profile of a roller is the inner offset of the pitch curve, so its radius is
 //! `ρ_w = ρ_p − r_roller` (signed, positive where convex); a convex pitch arc
 //! with `ρ_p < r_roller` gives a looped, undercut profile (подрезание). A flat

@@ -14,7 +14,7 @@
 //! set of positions.
 //!
 //! Flat faces: the radius of curvature of the working profile is
-//! `ρ = r₀ + s + d²s/dφ²` (Geronimus; Artobolevsky, ТММ, §26.6), so the
+//! `ρ = r₀ + s + d²s/dφ²` (Geronimus; Artobolevsky, ТММ, the chapter on cam mechanisms), so the
 //! smallest base circle is `r₀ = ρ_min − min(s + d²s/dφ²)`.
 
 use crate::extreme::{maximize, minimize};
@@ -52,7 +52,7 @@ fn phase_max(prog: &Program, limits: Limits, mut f: impl FnMut(usize, f64, f64) 
 ///
 /// With `x = e`, `y = s₀`, a phase with `t = tan ϑ_allowed` requires
 /// `t·y + x ≥ max(σ·s′ − t·s)` and `t·y − x ≥ max(−σ·s′ − t·s)`
-/// (from `|σs′ − e| ≤ t·(s₀ + s)`, Norton eq. 8.31).
+/// (from `|σs′ − e| ≤ t·(s₀ + s)`, Norton, ch. 8).
 ///
 /// ```
 /// use tmm_cams::{sizing, spec};

@@ -1,5 +1,5 @@
 //! Motion laws against their closed forms, boundary conditions, peak
-//! coefficients (Norton, Design of Machinery, table 8-2, and closed forms
+//! coefficients (Norton, Design of Machinery, ch. 8, table of peak factors, and closed forms
 //! derived here) and finite differences.
 
 use std::f64::consts::PI;
@@ -116,7 +116,7 @@ fn cycloidal_peaks_are_2_and_2pi() {
 
 #[test]
 fn peak_coefficients_match_closed_forms_and_nortons_table() {
-    // closed forms derived here (docs/cams.md §2) and Norton's table 8-2 (3 decimals)
+    // closed forms derived here (docs/cams.md §2) and Norton's table of peak factors (3 decimals)
     let cases: Vec<(LawKind, f64, f64)> = vec![
         // constant acceleration u: y′max = 2 (at x = u), y″ = 2/u then −2/(1−u)
         (LawKind::ConstAccel { u: 0.5 }, 2.0, 4.0),
@@ -131,7 +131,7 @@ fn peak_coefficients_match_closed_forms_and_nortons_table() {
         // 4-5-6-7: y′(1/2) = 35/16
         (LawKind::Poly4567, 35.0 / 16.0, f64::NAN),
         // trapezoid with 1/8 ramps: y(1/2) = 3/32 per unit amplitude, so Ca = 16/3
-        // (derived here, docs/cams.md §2; Chen, Mechanics and Design of Cam Mechanisms: 5.33)
+        // (derived here, docs/cams.md §2)
         (LawKind::Trapezoid, 2.0, 16.0 / 3.0),
     ];
     for (k, cv, ca) in cases {
@@ -142,7 +142,7 @@ fn peak_coefficients_match_closed_forms_and_nortons_table() {
             assert!((a - ca).abs() < 5e-5 * ca, "{k}: Ca {a} vs {ca}");
         }
     }
-    // Norton table 8-2, to the three decimals printed there
+    // Norton's table of peak factors, to three decimals
     for (k, cv, ca) in [
         (LawKind::ModTrapezoid, 2.000, 4.888),
         (LawKind::ModSine, 1.760, 5.528),
