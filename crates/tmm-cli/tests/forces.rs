@@ -7,7 +7,11 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm")).args(args).current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).output().expect("run tmm")
+    Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("run tmm")
 }
 
 fn tmp(name: &str) -> PathBuf {
@@ -51,7 +55,10 @@ fn check_equilibrium(p: &serde_json::Value) {
         }
     }
     m += f(&p["balancing_moment"]);
-    assert!(fx.abs() < 1e-9 * scale && fy.abs() < 1e-9 * scale && m.abs() < 1e-9 * scale, "Σ = ({fx}, {fy}, {m}) vs {scale}");
+    assert!(
+        fx.abs() < 1e-9 * scale && fy.abs() < 1e-9 * scale && m.abs() < 1e-9 * scale,
+        "Σ = ({fx}, {fy}, {m}) vs {scale}"
+    );
     let (mb, mz) = (f(&p["balancing_moment"]), f(&p["zhukovsky_moment"]));
     assert!((mb - mz).abs() <= 1e-9 * mb.abs().max(1e-9));
 }
@@ -82,11 +89,26 @@ fn seed001_json_is_one_document_in_equilibrium() {
 #[test]
 fn at_option_and_svg_files() {
     let dir = tmp("svg");
-    let o = tmm(&["forces", "examples/seed-004-two-sliders.toml", "--at", "40 deg", "--svg", dir.to_str().unwrap(), "--json"]);
+    let o = tmm(&[
+        "forces",
+        "examples/seed-004-two-sliders.toml",
+        "--at",
+        "40 deg",
+        "--svg",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
     let d = json(&o);
     assert!((f(&d["detail"]["phi"]) - 40f64.to_radians()).abs() < 1e-12);
     check_equilibrium(&d["detail"]);
-    for name in ["group-1.svg", "group-2.svg", "input-link.svg", "zhukovsky-lever.svg", "balancing-torque.svg", "strength-M.svg"] {
+    for name in [
+        "group-1.svg",
+        "group-2.svg",
+        "input-link.svg",
+        "zhukovsky-lever.svg",
+        "balancing-torque.svg",
+        "strength-M.svg",
+    ] {
         let s = std::fs::read_to_string(dir.join(name)).unwrap_or_else(|_| panic!("{name} missing"));
         assert!(s.contains("<svg") && !s.contains("NaN"));
     }
@@ -133,11 +155,20 @@ fn bad_loads_exit_2_naming_the_field() {
     assert!(e.contains("forces.links.2.mass") && e.contains("≥ 0"), "{e}");
     let e = bad("unknown-link", "[forces]\n[forces.links.9]\nmass = \"4 kg\"\n");
     assert!(e.contains("unknown link `9`"), "{e}");
-    let e = bad("unknown-point", "[forces]\n[forces.links.2]\nforces = [{ point = \"Z\", force = [\"1 N\", \"0 N\"] }]\n");
+    let e = bad(
+        "unknown-point",
+        "[forces]\n[forces.links.2]\nforces = [{ point = \"Z\", force = [\"1 N\", \"0 N\"] }]\n",
+    );
     assert!(e.contains("unknown point `Z`"), "{e}");
-    let e = bad("malformed", "[forces]\n[[forces.resistance]]\nlink = \"5\"\nforce = \"3 kN\"\nlaw = \"table\"\ntable = [[\"0 mm\"], [\"10 mm\", \"1 kN\"]]\n");
+    let e = bad(
+        "malformed",
+        "[forces]\n[[forces.resistance]]\nlink = \"5\"\nforce = \"3 kN\"\nlaw = \"table\"\ntable = [[\"0 mm\"], [\"10 mm\", \"1 kN\"]]\n",
+    );
     assert!(e.contains("table[0]"), "{e}");
-    let e = bad("short", "[forces]\n[[forces.resistance]]\nlink = \"5\"\nforce = \"3 kN\"\nlaw = \"table\"\ntable = [[\"0 mm\", \"3 kN\"], [\"10 mm\", \"3 kN\"]]\n");
+    let e = bad(
+        "short",
+        "[forces]\n[[forces.resistance]]\nlink = \"5\"\nforce = \"3 kN\"\nlaw = \"table\"\ntable = [[\"0 mm\", \"3 kN\"], [\"10 mm\", \"3 kN\"]]\n",
+    );
     assert!(e.contains("covers travel") && e.contains("forces.resistance[0].table"), "{e}");
     let e = bad("unknown-key", "[forces]\nmas = 3\n");
     assert!(e.contains("mas"), "{e}");

@@ -15,13 +15,49 @@ fn main() {
 }
 
 fn sixbar() -> Mechanism {
-    let rocker = LinkDef { name: "3".into(), points: vec![("E".into(), Vec2::ZERO), ("B".into(), Vec2::new(0.6, 0.0)), ("C".into(), Vec2::new(-0.6, 0.0))], mass_center: Vec2::ZERO };
+    let rocker = LinkDef {
+        name: "3".into(),
+        points: vec![
+            ("E".into(), Vec2::ZERO),
+            ("B".into(), Vec2::new(0.6, 0.0)),
+            ("C".into(), Vec2::new(-0.6, 0.0)),
+        ],
+        mass_center: Vec2::ZERO,
+    };
     Mechanism::new(&MechanismDef {
         fixed: vec![("O".into(), Vec2::new(-1.25, 0.0)), ("E".into(), Vec2::ZERO)],
-        links: vec![LinkDef::bar("1", "O", "A", 0.27), LinkDef::bar("2", "A", "B", 1.25), rocker, LinkDef::bar("4", "C", "D", 0.65), LinkDef::block("5", "D")],
-        sliders: vec![SliderDef { slider: "5".into(), point: "D".into(), guide_link: "frame".into(), through: Vec2::new(0.0, -0.2), angle: 0.0, angle_on_slider: 0.0 }],
-        input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 12.0, epsilon: 0.0 }),
-        hints: vec![AssemblyHint { point: "B".into(), kind: HintKind::Above("O".into(), "E".into()) }, AssemblyHint { point: "D".into(), kind: HintKind::Near(Vec2::new(0.5, -0.2)) }],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.27),
+            LinkDef::bar("2", "A", "B", 1.25),
+            rocker,
+            LinkDef::bar("4", "C", "D", 0.65),
+            LinkDef::block("5", "D"),
+        ],
+        sliders: vec![SliderDef {
+            slider: "5".into(),
+            point: "D".into(),
+            guide_link: "frame".into(),
+            through: Vec2::new(0.0, -0.2),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "O".into(),
+            pin: "A".into(),
+            omega: 12.0,
+            epsilon: 0.0,
+        }),
+        hints: vec![
+            AssemblyHint {
+                point: "B".into(),
+                kind: HintKind::Above("O".into(), "E".into()),
+            },
+            AssemblyHint {
+                point: "D".into(),
+                kind: HintKind::Near(Vec2::new(0.5, -0.2)),
+            },
+        ],
         assembly_angle: 80f64.to_radians(),
         ..Default::default()
     })
@@ -36,7 +72,14 @@ fn loads(m: &Mechanism) -> Loads {
         l.links[i].mass = mass;
         l.links[i].inertia = mass * len * len / 12.0;
     }
-    l.resistance.push(Resistance { link: 5, action: Action::Force { local: Vec2::ZERO, dir: None }, law: Law::SineOfTravel(3000.0) });
+    l.resistance.push(Resistance {
+        link: 5,
+        action: Action::Force {
+            local: Vec2::ZERO,
+            dir: None,
+        },
+        law: Law::SineOfTravel(3000.0),
+    });
     l
 }
 

@@ -18,8 +18,8 @@ fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
     l.gravity = v(rng.sym(3.0), -9.81 + rng.sym(3.0));
     for i in 1..m.link_names.len() {
         l.links[i] = LinkLoad {
-            mass: 0.1 + 5.0 * rng.next(),
-            inertia: 0.01 + 0.2 * rng.next(),
+            mass: 0.1 + 5.0 * rng.uniform(),
+            inertia: 0.01 + 0.2 * rng.uniform(),
             forces: vec![PointForce {
                 local: v(rng.sym(0.2), rng.sym(0.2)),
                 force: v(rng.sym(300.0), rng.sym(300.0)),
@@ -290,9 +290,9 @@ fn seed001_sheet3_balancing_force_by_independent_virtual_power() {
     let vel = |i: usize| (xp[i] - xm[i]) * (w1 / (2.0 * hh));
     let acc = |i: usize| (xp[i] - x0[i] * 2.0 + xm[i]) * (w1 * w1 / (hh * hh));
     let mut pw = 0.0;
-    for i in 0..3 {
-        let mass = 10.0 * lens[i];
-        let j = 0.1 * mass * lens[i] * lens[i];
+    for (i, &len) in lens.iter().enumerate() {
+        let mass = 10.0 * len;
+        let j = 0.1 * mass * len * len;
         let omega = if i == 0 { w1 } else { vel(i + 2).x };
         let eps = if i == 0 { 0.0 } else { acc(i + 2).x };
         pw += (-acc(i) * mass).dot(vel(i)) + (-j * eps) * omega;
@@ -376,7 +376,7 @@ fn beam_diagrams_close_and_moment_derivative_is_shear() {
         let mut loads = random_loads(&m, &mut rng);
         let li = m.link(link).unwrap();
         // S mid-way so the rod model is uniform except seed003's rocker (S at E, the middle)
-        loads.links[li].forces[0].local = v(0.3 * rng.next(), 0.0);
+        loads.links[li].forces[0].local = v(0.3 * rng.uniform(), 0.0);
         let mut k = Kinetostatics::new(&m, loads.clone()).unwrap();
         let mut sol = m.solution();
         let mut f = k.result();
@@ -558,7 +558,10 @@ fn dyad_elimination_agrees_with_the_general_group_solve() {
             slow.solve(&s1, &mut f2).unwrap();
             let scale = f2.reactions.iter().map(|r| r.force.hypot()).fold(1.0, f64::max);
             for (a, b) in f1.reactions.iter().zip(&f2.reactions) {
-                assert!((a.force - b.force).hypot() < 1e-9 * scale && (a.offset - b.offset).abs() < 1e-9 * (1.0 + a.offset.abs()), "{name} φ={phi}");
+                assert!(
+                    (a.force - b.force).hypot() < 1e-9 * scale && (a.offset - b.offset).abs() < 1e-9 * (1.0 + a.offset.abs()),
+                    "{name} φ={phi}"
+                );
             }
             assert!((f1.balancing_moment - f2.balancing_moment).abs() < 1e-9 * f2.balancing_moment.abs().max(1.0));
         }

@@ -165,13 +165,13 @@ pub fn slotted() -> Mechanism {
 /// A tiny deterministic random generator for test loads.
 pub struct Rng(pub u64);
 impl Rng {
-    pub fn next(&mut self) -> f64 {
+    pub fn uniform(&mut self) -> f64 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     pub fn sym(&mut self, a: f64) -> f64 {
-        a * (2.0 * self.next() - 1.0)
+        a * (2.0 * self.uniform() - 1.0)
     }
 }

@@ -3,6 +3,8 @@
 //! group, the balancing torque and force, Zhukovsky's lever, the strength of
 //! a link.
 
+#![allow(clippy::result_large_err)]
+
 use std::path::PathBuf;
 
 use tmm_geom::units::Dim;
@@ -31,9 +33,13 @@ pub struct Args {
 
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
-    let file = a.file.as_ref().ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm forces examples/seed-001-fourbar.toml"))?;
+    let file = a
+        .file
+        .as_ref()
+        .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm forces examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
-    let (l, t) = load(&task)?.ok_or_else(|| Error::input(&task.name, "the file has no [forces] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let (l, t) = load(&task)?
+        .ok_or_else(|| Error::input(&task.name, "the file has no [forces] section").with_help("see examples/seed-001-fourbar.toml"))?;
     let at = match &a.at {
         Some(s) => Some(arg_qty("--at", s, Dim::Angle)?),
         None => None,

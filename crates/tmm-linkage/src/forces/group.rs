@@ -115,7 +115,14 @@ pub fn solve_group(
 /// equations (least squares of a consistent 3×2 system, exact).
 ///
 /// Same contract as [`solve_group`] for a dyad, without the 6×6 elimination.
-pub fn solve_dyad(pairs: &[&Pair], links: &[usize], states: &[LinkState], q: &[(Vec2, f64)], _work: &mut GroupWork, out: &mut [PairForce]) -> bool {
+pub fn solve_dyad(
+    pairs: &[&Pair],
+    links: &[usize],
+    states: &[LinkState],
+    q: &[(Vec2, f64)],
+    _work: &mut GroupWork,
+    out: &mut [PairForce],
+) -> bool {
     let (x, y) = (links[0], links[1]);
     let [a10, a11] = columns(pairs[0], x, states);
     let [m10, m11] = columns(pairs[1], x, states);
@@ -138,7 +145,9 @@ pub fn solve_dyad(pairs: &[&Pair], links: &[usize], states: &[LinkState], q: &[(
     for (k, l) in [le1, lm, le2].into_iter().enumerate() {
         out[k] = pair_force(pairs[k], states, l[0], l[1]);
     }
-    out[..3].iter().all(|f| f.force.x.is_finite() && f.force.y.is_finite() && f.couple.is_finite())
+    out[..3]
+        .iter()
+        .all(|f| f.force.x.is_finite() && f.force.y.is_finite() && f.couple.is_finite())
 }
 
 /// The generalised force on link `l` (force x, y and moment about its
@@ -158,7 +167,9 @@ fn columns(p: &Pair, l: usize, st: &[LinkState]) -> [[f64; 3]; 2] {
                 [[-1.0, 0.0, r.y], [0.0, -1.0, -r.x]]
             }
         }
-        Pair::P { slider, guide, ps, q, d, .. } => {
+        Pair::P {
+            slider, guide, ps, q, d, ..
+        } => {
             let (ss, sg) = (&st[slider], &st[guide]);
             let n = rot(sg.u, perp(d));
             let rs = rot(ss.u, ps);
@@ -186,7 +197,11 @@ fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` by its 2×2 normal equations.
 #[inline(always)]
 fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
-    let rr = [b[0] - m0[0] * lm[0] - m1[0] * lm[1], b[1] - m0[1] * lm[0] - m1[1] * lm[1], b[2] - m0[2] * lm[0] - m1[2] * lm[1]];
+    let rr = [
+        b[0] - m0[0] * lm[0] - m1[0] * lm[1],
+        b[1] - m0[1] * lm[0] - m1[1] * lm[1],
+        b[2] - m0[2] * lm[0] - m1[2] * lm[1],
+    ];
     let (g00, g01, g11) = (dot3(a0, a0), dot3(a0, a1), dot3(a1, a1));
     let (h0, h1) = (dot3(a0, rr), dot3(a1, rr));
     let d = g00 * g11 - g01 * g01;
@@ -196,8 +211,16 @@ fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm
 #[inline(always)]
 fn pair_force(p: &Pair, states: &[LinkState], l1: f64, l2: f64) -> PairForce {
     match *p {
-        Pair::R { a, la, .. } => PairForce { force: Vec2::new(l1, l2), at: states[a].pos(la), couple: 0.0 },
-        Pair::P { slider, guide, ps, d, .. } => PairForce { force: rot(states[guide].u, perp(d)) * l1, at: states[slider].pos(ps), couple: l2 },
+        Pair::R { a, la, .. } => PairForce {
+            force: Vec2::new(l1, l2),
+            at: states[a].pos(la),
+            couple: 0.0,
+        },
+        Pair::P { slider, guide, ps, d, .. } => PairForce {
+            force: rot(states[guide].u, perp(d)) * l1,
+            at: states[slider].pos(ps),
+            couple: l2,
+        },
     }
 }
 

@@ -151,8 +151,17 @@ impl<'m> Kinetostatics<'m> {
                 }
             })?;
         }
-        let gpairs: Vec<Vec<&Pair>> = m.groups.iter().map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect()).collect();
-        let dyad = m.groups.iter().zip(&gpairs).map(|(g, p)| is_ordered_dyad(p, &g.info.link_ids)).collect();
+        let gpairs: Vec<Vec<&Pair>> = m
+            .groups
+            .iter()
+            .map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect())
+            .collect();
+        let dyad = m
+            .groups
+            .iter()
+            .zip(&gpairs)
+            .map(|(g, p)| is_ordered_dyad(p, &g.info.link_ids))
+            .collect();
         let c = m.crank.link;
         let pivot_pair = m
             .pairs

@@ -10,10 +10,10 @@ use tmm_geom::Vec2;
 
 use super::task::ForcesTask;
 use super::{Analysis, Row, json::pair_name};
+use crate::Error;
 use crate::linkage::Loaded;
 use crate::output::write_file;
 use crate::svg::{Anchor, Canvas, Series, Style, plot};
-use crate::Error;
 
 const COLORS: [&str; 6] = ["#c00000", "#0050c0", "#008000", "#a05000", "#7000a0", "#007070"];
 
@@ -38,7 +38,11 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool)
     for &li in links {
         let lf = &f.links[li];
         if lf.force.hypot() > 0.0 {
-            arrows.push(Arrow { label: format!("F{}", m.link_names[li]), at: lf.s, f: lf.force });
+            arrows.push(Arrow {
+                label: format!("F{}", m.link_names[li]),
+                at: lf.s,
+                f: lf.force,
+            });
         }
         if lf.moment != 0.0 {
             couples.push((lf.s, lf.moment, format!("M{} = {:.2} N·m", m.link_names[li], lf.moment)));
@@ -48,20 +52,37 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool)
         let on_in = links.contains(&x.on);
         let from_in = links.contains(&x.from);
         if on_in && !from_in {
-            arrows.push(Arrow { label: format!("R{}{}", m.link_names[x.from], m.link_names[x.on]), at: x.at, f: x.force });
+            arrows.push(Arrow {
+                label: format!("R{}{}", m.link_names[x.from], m.link_names[x.on]),
+                at: x.at,
+                f: x.force,
+            });
         } else if from_in && !on_in {
-            arrows.push(Arrow { label: format!("R{}{}", m.link_names[x.on], m.link_names[x.from]), at: x.at, f: -x.force });
+            arrows.push(Arrow {
+                label: format!("R{}{}", m.link_names[x.on], m.link_names[x.from]),
+                at: x.at,
+                f: -x.force,
+            });
         }
     }
     if balancing {
         let pin = sol.points[m.crank.pin].p;
-        arrows.push(Arrow { label: "Pb".into(), at: pin, f: f.balancing_force_vec });
+        arrows.push(Arrow {
+            label: "Pb".into(),
+            at: pin,
+            f: f.balancing_force_vec,
+        });
     }
     // the links: segments between every pair of their joints
     let mut segs: Vec<(Vec2, Vec2)> = Vec::new();
     let mut pts: Vec<Vec2> = Vec::new();
     for &li in links {
-        let mut jp: Vec<Vec2> = m.pairs.iter().filter(|p| p.links().0 == li || p.links().1 == li).map(|p| sol.points[p.point()].p).collect();
+        let mut jp: Vec<Vec2> = m
+            .pairs
+            .iter()
+            .filter(|p| p.links().0 == li || p.links().1 == li)
+            .map(|p| sol.points[p.point()].p)
+            .collect();
         jp.push(f.links[li].s);
         for i in 0..jp.len() {
             for j in i + 1..jp.len() {
@@ -107,7 +128,18 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool)
     let pad = 0.08 * (pxmax - pxmin).max(pymax - pymin);
     c.fit((pxmin - pad, pxmax + pad, pymin - pad, pymax + pad), (10.0, 10.0, 277.0, 175.0));
     c.text_paper((10.0, 10.0), title, 4.0, Anchor::Start, "#000000");
-    c.text_paper((10.0, 16.0), &format!("φ = {:.2}°; forces: μ_F = {:.4e} N/mm on the body, {:.4e} N/mm in the polygon (план сил)", r.phi.to_degrees(), 1.0 / (mu * c.scale()), 1.0 / (mup * c.scale())), 3.0, Anchor::Start, "#404040");
+    c.text_paper(
+        (10.0, 16.0),
+        &format!(
+            "φ = {:.2}°; forces: μ_F = {:.4e} N/mm on the body, {:.4e} N/mm in the polygon (план сил)",
+            r.phi.to_degrees(),
+            1.0 / (mu * c.scale()),
+            1.0 / (mup * c.scale())
+        ),
+        3.0,
+        Anchor::Start,
+        "#404040",
+    );
     c.begin_group("links");
     for (a, b) in &segs {
         c.line(t(*a), t(*b), Style::THICK);
@@ -120,7 +152,13 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool)
     for (i, a) in arrows.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.arrow(t(a.at), t(a.at + a.f * mu), Style::THIN.colored(col).widened(0.5), 3.0);
-        c.text_colored(t(a.at + a.f * mu), &format!("{} {:.1} N", a.label, a.f.hypot()), 2.8, Anchor::Start, col);
+        c.text_colored(
+            t(a.at + a.f * mu),
+            &format!("{} {:.1} N", a.label, a.f.hypot()),
+            2.8,
+            Anchor::Start,
+            col,
+        );
     }
     for (p, mo, label) in &couples {
         let r0 = 0.08 * size;
@@ -140,7 +178,13 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool)
         c.text_colored(t(mid), &a.label, 2.6, Anchor::Start, col);
     }
     let gap = (*poly.last().unwrap_or(&origin) - origin).hypot();
-    c.text_colored(t(origin + Vec2::new(0.0, -0.1 * size)), &format!("closure {:.2e} N", gap / mup), 2.6, Anchor::Start, "#404040");
+    c.text_colored(
+        t(origin + Vec2::new(0.0, -0.1 * size)),
+        &format!("closure {:.2e} N", gap / mup),
+        2.6,
+        Anchor::Start,
+        "#404040",
+    );
     c.end_group();
     c.finish()
 }
@@ -154,7 +198,11 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
     let fmax = a.lever.iter().map(|x| x.force.hypot()).fold(0.0, f64::max).max(1e-12);
     let mu = 0.3 * vmax / fmax;
     let (mut xmin, mut xmax, mut ymin, mut ymax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for p in imgs.iter().copied().chain(a.lever.iter().flat_map(|x| [x.image, x.image + x.force * mu])) {
+    for p in imgs
+        .iter()
+        .copied()
+        .chain(a.lever.iter().flat_map(|x| [x.image, x.image + x.force * mu]))
+    {
         xmin = xmin.min(p.x);
         xmax = xmax.max(p.x);
         ymin = ymin.min(p.y);
@@ -163,10 +211,24 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
     let mut c = Canvas::new(297.0, 210.0);
     let pad = 0.08 * (xmax - xmin).max(ymax - ymin).max(1e-9);
     c.fit((xmin - pad, xmax + pad, ymin - pad, ymax + pad), (10.0, 10.0, 277.0, 170.0));
-    c.text_paper((10.0, 10.0), &format!("Zhukovsky's lever at φ = {:.2}°: the velocity plan turned by +90°, forces at the images of their points", r.phi.to_degrees()), 4.0, Anchor::Start, "#000000");
+    c.text_paper(
+        (10.0, 10.0),
+        &format!(
+            "Zhukovsky's lever at φ = {:.2}°: the velocity plan turned by +90°, forces at the images of their points",
+            r.phi.to_degrees()
+        ),
+        4.0,
+        Anchor::Start,
+        "#000000",
+    );
     c.text_paper(
         (10.0, 16.0),
-        &format!("Σ moments about the pole = 0 ⇒ M_Zh = {:.4} N·m, P_b = {:.4} N (kinetostatics: M_b = {:.4} N·m)", r.fs.zhukovsky_moment, r.fs.zhukovsky_moment / m.crank.radius, r.fs.balancing_moment),
+        &format!(
+            "Σ moments about the pole = 0 ⇒ M_Zh = {:.4} N·m, P_b = {:.4} N (kinetostatics: M_b = {:.4} N·m)",
+            r.fs.zhukovsky_moment,
+            r.fs.zhukovsky_moment / m.crank.radius,
+            r.fs.balancing_moment
+        ),
         3.0,
         Anchor::Start,
         "#404040",
@@ -175,11 +237,16 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
     for (i, p) in imgs.iter().enumerate() {
         c.line((0.0, 0.0), t(*p), Style::THIN.colored("#a0a0a0"));
         c.dot(t(*p), 0.6, "#000000");
-        c.text(t(*p), &format!("{}", m.points[i].name.to_lowercase()), 3.0, Anchor::Start);
+        c.text(t(*p), &m.points[i].name.to_lowercase(), 3.0, Anchor::Start);
     }
     // images of the same link joined
     for li in 1..m.link_names.len() {
-        let js: Vec<usize> = m.pairs.iter().filter(|p| p.links().0 == li || p.links().1 == li).map(|p| p.point()).collect();
+        let js: Vec<usize> = m
+            .pairs
+            .iter()
+            .filter(|p| p.links().0 == li || p.links().1 == li)
+            .map(|p| p.point())
+            .collect();
         for i in 0..js.len() {
             for j in i + 1..js.len() {
                 c.line(t(imgs[js[i]]), t(imgs[js[j]]), Style::THICK);
@@ -193,7 +260,13 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.arrow(t(x.image), t(x.image + x.force * mu), Style::THIN.colored(col).widened(0.5), 3.0);
-        c.text_colored(t(x.image + x.force * mu), &format!("{} {:.1} N", x.label, x.force.hypot()), 2.6, Anchor::Start, col);
+        c.text_colored(
+            t(x.image + x.force * mu),
+            &format!("{} {:.1} N", x.label, x.force.hypot()),
+            2.6,
+            Anchor::Start,
+            col,
+        );
     }
     c.end_group();
     c.finish()
@@ -204,11 +277,27 @@ pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &
     let m = &l.mech;
     for (g, grp) in m.groups.iter().enumerate().rev() {
         let names: Vec<String> = grp.info.pair_ids.iter().map(|&p| pair_name(l, p)).collect();
-        let title = format!("Group {} — {} (pairs {}): free body and force polygon", g + 1, grp.label(), names.join(", "));
-        write_file(&dir.join(format!("group-{}.svg", g + 1)), &free_body(l, &a.detail, &grp.info.link_ids, &title, false), files)?;
+        let title = format!(
+            "Group {} — {} (pairs {}): free body and force polygon",
+            g + 1,
+            grp.label(),
+            names.join(", ")
+        );
+        write_file(
+            &dir.join(format!("group-{}.svg", g + 1)),
+            &free_body(l, &a.detail, &grp.info.link_ids, &title, false),
+            files,
+        )?;
     }
-    let title = format!("Input link {} with the balancing force P_b = {:.3} N at the crank pin", m.link_names[m.crank.link], a.detail.fs.balancing_force);
-    write_file(&dir.join("input-link.svg"), &free_body(l, &a.detail, &[m.crank.link], &title, true), files)?;
+    let title = format!(
+        "Input link {} with the balancing force P_b = {:.3} N at the crank pin",
+        m.link_names[m.crank.link], a.detail.fs.balancing_force
+    );
+    write_file(
+        &dir.join("input-link.svg"),
+        &free_body(l, &a.detail, &[m.crank.link], &title, true),
+        files,
+    )?;
     write_file(&dir.join("zhukovsky-lever.svg"), &lever(l, a), files)?;
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
     let mz: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[3])).collect();
@@ -216,16 +305,42 @@ pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &
         "Balancing torque on the input link over the cycle",
         "crank travel from the start of the working stroke ψ, °",
         "M_b, N·m",
-        &[Series { name: "kinetostatics", points: &mb, color: "#c00000" }, Series { name: "Zhukovsky's lever", points: &mz, color: "#0050c0" }],
+        &[
+            Series {
+                name: "kinetostatics",
+                points: &mb,
+                color: "#c00000",
+            },
+            Series {
+                name: "Zhukovsky's lever",
+                points: &mz,
+                color: "#0050c0",
+            },
+        ],
         240.0,
         150.0,
     );
     write_file(&dir.join("balancing-torque.svg"), &svg, files)?;
     if let Some(b) = &a.beam {
         let link = &m.link_names[b.beam.link];
-        for (key, name, unit, idx) in [("N", "axial force N(z)", "N, N", 0), ("Q", "shear force Q(z)", "Q, N", 1), ("M", "bending moment M(z)", "M, N·m", 2)] {
+        for (key, name, unit, idx) in [
+            ("N", "axial force N(z)", "N, N", 0),
+            ("Q", "shear force Q(z)", "Q, N", 1),
+            ("M", "bending moment M(z)", "M, N·m", 2),
+        ] {
             let pts: Vec<(f64, f64)> = b.samples.iter().map(|s| (s.z * 1e3, [s.n, s.q, s.m][idx])).collect();
-            let svg = plot(&format!("Link {link} ({}–{}): {name}", b.names.0, b.names.1), "z, mm", unit, &[Series { name: key, points: &pts, color: "#c00000" }], 200.0, 110.0);
+            let svg = plot(
+                &format!("Link {link} ({}–{}): {name}", b.names.0, b.names.1),
+                "z, mm",
+                unit,
+                &[Series {
+                    name: key,
+                    points: &pts,
+                    color: "#c00000",
+                }],
+                200.0,
+                110.0,
+            );
             write_file(&dir.join(format!("strength-{key}.svg")), &svg, files)?;
         }
     }

@@ -4,6 +4,9 @@
 //! torque over the cycle and the strength of a chosen link — as tables, one
 //! JSON document and SVG drawings.
 
+// the shared `Error` carries the task file for located messages
+#![allow(clippy::result_large_err)]
+
 mod draw;
 mod json;
 pub mod task;
@@ -12,11 +15,11 @@ mod text;
 use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
 
+use tmm_linkage::Solution;
 use tmm_linkage::cycle::{self, Cycle, Position};
 use tmm_linkage::forces::stroke::Working;
 use tmm_linkage::forces::zhukovsky::{LeverForce, lever_forces};
 use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, SectionSizes, size_sections};
-use tmm_linkage::Solution;
 
 use crate::linkage::{self, Loaded};
 use crate::output::{SectionOutput, write_file};
@@ -80,7 +83,12 @@ pub fn locate(src: &TaskSource, l: &Loaded, t: &ForcesTask, e: &ForceError) -> E
         ForceError::Load { field, message } => {
             let key = field.split('.').take(2).collect::<Vec<_>>().join(".");
             let key0 = field.split('.').next().unwrap_or("");
-            let span = t.spans.get(&key).or_else(|| t.spans.get(key0)).cloned().unwrap_or(t.section.clone());
+            let span = t
+                .spans
+                .get(&key)
+                .or_else(|| t.spans.get(key0))
+                .cloned()
+                .unwrap_or(t.section.clone());
             Error::at(src, span, &format!("forces.{field}"), message)
         }
         other => Error::at(src, t.section.clone(), "forces", other.to_string()),
@@ -93,7 +101,10 @@ pub fn load(src: &TaskSource) -> Result<Option<(Loaded, ForcesTask)>, Error> {
     if !has_forces {
         return Ok(None);
     }
-    let l = linkage::load(src)?.ok_or_else(|| Error::input(&src.name, "the [forces] section needs a [linkage] section describing the mechanism").with_help("see examples/seed-001-fourbar.toml"))?;
+    let l = linkage::load(src)?.ok_or_else(|| {
+        Error::input(&src.name, "the [forces] section needs a [linkage] section describing the mechanism")
+            .with_help("see examples/seed-001-fourbar.toml")
+    })?;
     let t = task::read(src, &l.def, &l.mech)?.ok_or_else(|| Error::input(&src.name, "no [forces] section"))?;
     Ok(Some((l, t)))
 }
@@ -129,7 +140,13 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
     let mut fs = k.result();
     let mut solve = |label: String, phi: f64, k: &mut Kinetostatics| -> Result<Row, Error> {
         k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?;
-        Ok(Row { label, phi, psi: psi_of(phi), sol: sol.clone(), fs: fs.clone() })
+        Ok(Row {
+            label,
+            phi,
+            psi: psi_of(phi),
+            sol: sol.clone(),
+            fs: fs.clone(),
+        })
     };
     let positions: Vec<Position> = c.positions(m, l.task.positions);
     let mut rows = Vec::with_capacity(positions.len());
@@ -151,11 +168,25 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
             let beam = Beam::new(m, &k.loads, &detail.sol, &detail.fs, s.link, s.axis.0, s.axis.1).map_err(loc)?;
             let samples = beam.diagrams(200);
             let sizes = size_sections(&samples, s.allowed, s.k).map_err(loc)?;
-            Some(BeamResult { beam, samples, sizes, names: s.names.clone(), allowed: s.allowed, k: s.k })
+            Some(BeamResult {
+                beam,
+                samples,
+                sizes,
+                names: s.names.clone(),
+                allowed: s.allowed,
+                k: s.k,
+            })
         }
         None => None,
     };
-    Ok(Analysis { cycle: c, rows, detail, lever, curve, beam })
+    Ok(Analysis {
+        cycle: c,
+        rows,
+        detail,
+        lever,
+        curve,
+        beam,
+    })
 }
 
 /// Run the `[forces]` section of a task into `out/forces/`.
@@ -166,8 +197,17 @@ pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput
     let mut files = Vec::new();
     draw::write_all(&l, &t, &a, &dir, &mut files)?;
     let json = json::document(&l, &t, &a);
-    write_file(&dir.join("forces.json"), &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?, &mut files)?;
-    Ok(Some(SectionOutput { section: "forces", text: text::report(&l, &t, &a), json, files }))
+    write_file(
+        &dir.join("forces.json"),
+        &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?,
+        &mut files,
+    )?;
+    Ok(Some(SectionOutput {
+        section: "forces",
+        text: text::report(&l, &t, &a),
+        json,
+        files,
+    }))
 }
 
 /// The human report.

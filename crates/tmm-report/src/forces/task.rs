@@ -130,9 +130,15 @@ pub struct ForcesTask {
 
 fn link_index(task: &TaskSource, m: &Mechanism, field: &str, name: &S<String>) -> Result<usize, Error> {
     match m.link(name.get_ref()) {
-        Some(0) => Err(Error::at(task, name.span(), field, "the frame carries no loads here; name a moving link")),
+        Some(0) => Err(Error::at(
+            task,
+            name.span(),
+            field,
+            "the frame carries no loads here; name a moving link",
+        )),
         Some(i) => Ok(i),
-        None => Err(Error::at(task, name.span(), field, format!("unknown link `{}`", name.get_ref())).with_help(format!("the links are {}", m.link_names[1..].join(", ")))),
+        None => Err(Error::at(task, name.span(), field, format!("unknown link `{}`", name.get_ref()))
+            .with_help(format!("the links are {}", m.link_names[1..].join(", ")))),
     }
 }
 
@@ -146,7 +152,11 @@ fn point_on(task: &TaskSource, def: &MechanismDef, m: &Mechanism, link: usize, f
     let ld = &def.links[link - 1];
     ld.point(n).ok_or_else(|| {
         let names: Vec<&str> = ld.points.iter().map(|p| p.0.as_str()).collect();
-        Error::at(task, name.span(), field, format!("unknown point `{n}` on link `{}`", ld.name)).with_help(format!("the points of link `{}` are {} and S (its centre of mass)", ld.name, names.join(", ")))
+        Error::at(task, name.span(), field, format!("unknown point `{n}` on link `{}`", ld.name)).with_help(format!(
+            "the points of link `{}` are {} and S (its centre of mass)",
+            ld.name,
+            names.join(", ")
+        ))
     })
 }
 
@@ -182,7 +192,9 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         };
         loads.gravity = direction(ang) * gv;
     } else if let Some(a) = &sec.gravity_angle {
-        return Err(Error::at(task, a.span(), "forces.gravity_angle", "gravity_angle without gravity").with_help("add gravity = \"9.81 m/s^2\""));
+        return Err(
+            Error::at(task, a.span(), "forces.gravity_angle", "gravity_angle without gravity").with_help("add gravity = \"9.81 m/s^2\"")
+        );
     }
     let at = match &sec.at {
         Some(a) => Some(qty(task, "forces.at", a, Dim::Angle)?),
@@ -203,13 +215,27 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
             let ls = ls.get_ref();
             let len = link_length(m, li);
             let mass = match (&ls.mass, &ls.mass_per_length) {
-                (Some(a), Some(_)) => return Err(Error::at(task, a.span(), &format!("{field}.mass"), "give mass or mass_per_length, not both")),
+                (Some(a), Some(_)) => {
+                    return Err(Error::at(
+                        task,
+                        a.span(),
+                        &format!("{field}.mass"),
+                        "give mass or mass_per_length, not both",
+                    ));
+                }
                 (Some(a), None) => nonneg(task, &format!("{field}.mass"), a, Dim::Mass)?,
                 (None, Some(q)) => mass_per_length(nonneg(task, &format!("{field}.mass_per_length"), q, Dim::LinearDensity)?, len),
                 (None, None) => loads.links[li].mass,
             };
             let inertia = match (&ls.inertia, &ls.k) {
-                (Some(a), Some(_)) => return Err(Error::at(task, a.span(), &format!("{field}.inertia"), "give inertia or k, not both")),
+                (Some(a), Some(_)) => {
+                    return Err(Error::at(
+                        task,
+                        a.span(),
+                        &format!("{field}.inertia"),
+                        "give inertia or k, not both",
+                    ));
+                }
                 (Some(a), None) => nonneg(task, &format!("{field}.inertia"), a, Dim::Inertia)?,
                 (None, Some(k)) => inertia_k(nonneg(task, &format!("{field}.k"), k, Dim::Ratio)?, mass, len),
                 (None, None) => inertia_k(k_all, mass, len),
@@ -227,13 +253,25 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
                     (Some(v), None, None) => {
                         let r = v.get_ref();
                         if r.len() != 2 {
-                            return Err(Error::at(task, v.span(), &format!("{ff}.force"), format!("expected two components [Fx, Fy], found {}", r.len())).with_help("force = [\"100 N\", \"-50 N\"]"));
+                            return Err(Error::at(
+                                task,
+                                v.span(),
+                                &format!("{ff}.force"),
+                                format!("expected two components [Fx, Fy], found {}", r.len()),
+                            )
+                            .with_help("force = [\"100 N\", \"-50 N\"]"));
                         }
-                        Vec2::new(qty(task, &format!("{ff}.force[0]"), &r[0], Dim::Force)?, qty(task, &format!("{ff}.force[1]"), &r[1], Dim::Force)?)
+                        Vec2::new(
+                            qty(task, &format!("{ff}.force[0]"), &r[0], Dim::Force)?,
+                            qty(task, &format!("{ff}.force[1]"), &r[1], Dim::Force)?,
+                        )
                     }
-                    (None, Some(v), Some(a)) => direction(qty(task, &format!("{ff}.angle"), a, Dim::Angle)?) * qty(task, &format!("{ff}.value"), v, Dim::Force)?,
+                    (None, Some(v), Some(a)) => {
+                        direction(qty(task, &format!("{ff}.angle"), a, Dim::Angle)?) * qty(task, &format!("{ff}.value"), v, Dim::Force)?
+                    }
                     _ => {
-                        return Err(Error::at(task, fs.span(), &ff, "give either force = [Fx, Fy] or value with angle").with_help("{ point = \"C\", value = \"100 N\", angle = \"-90 deg\" }"));
+                        return Err(Error::at(task, fs.span(), &ff, "give either force = [Fx, Fy] or value with angle")
+                            .with_help("{ point = \"C\", value = \"100 N\", angle = \"-90 deg\" }"));
                     }
                 };
                 loads.links[li].forces.push(PointForce { local, force });
@@ -252,7 +290,13 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         Some(s) => Some(strength(task, def, m, s)?),
         None => None,
     };
-    Ok(Some(ForcesTask { loads, at, strength, spans, section }))
+    Ok(Some(ForcesTask {
+        loads,
+        at,
+        strength,
+        spans,
+        section,
+    }))
 }
 
 fn resistance(task: &TaskSource, def: &MechanismDef, m: &Mechanism, field: &str, rs: &S<ResistSec>) -> Result<Resistance, Error> {
@@ -268,23 +312,53 @@ fn resistance(task: &TaskSource, def: &MechanismDef, m: &Mechanism, field: &str,
                 (Some(a), None) => Some(direction(qty(task, &format!("{field}.angle"), a, Dim::Angle)?)),
                 (None, None) => None,
                 (None, Some(d)) if d.get_ref() == "opposes" => None,
-                (_, Some(d)) => return Err(Error::at(task, d.span(), &format!("{field}.direction"), "for a force, give angle = \"…deg\" for a fixed direction, or direction = \"opposes\" (against the point's velocity, the default)")),
+                (_, Some(d)) => {
+                    return Err(Error::at(
+                        task,
+                        d.span(),
+                        &format!("{field}.direction"),
+                        "for a force, give angle = \"…deg\" for a fixed direction, or direction = \"opposes\" (against the point's velocity, the default)",
+                    ));
+                }
             };
-            (qty(task, &format!("{field}.force"), f, Dim::Force)?, Dim::Force, Action::Force { local, dir })
+            (
+                qty(task, &format!("{field}.force"), f, Dim::Force)?,
+                Dim::Force,
+                Action::Force { local, dir },
+            )
         }
         (None, Some(mo)) => {
             let sign = match r.direction.as_ref().map(|d| (d.get_ref().as_str(), d.span())) {
                 None | Some(("opposes", _)) => None,
                 Some(("ccw", _)) => Some(1.0),
                 Some(("cw", _)) => Some(-1.0),
-                Some((_, sp)) => return Err(Error::at(task, sp, &format!("{field}.direction"), "expected \"opposes\" (against the link's rotation, the default), \"ccw\" or \"cw\"")),
+                Some((_, sp)) => {
+                    return Err(Error::at(
+                        task,
+                        sp,
+                        &format!("{field}.direction"),
+                        "expected \"opposes\" (against the link's rotation, the default), \"ccw\" or \"cw\"",
+                    ));
+                }
             };
-            (qty(task, &format!("{field}.moment"), mo, Dim::Moment)?, Dim::Moment, Action::Moment { sign })
+            (
+                qty(task, &format!("{field}.moment"), mo, Dim::Moment)?,
+                Dim::Moment,
+                Action::Moment { sign },
+            )
         }
-        _ => return Err(Error::at(task, rs.span(), field, "give either force = \"…N\" or moment = \"…N·m\"").with_help("[[forces.resistance]]\nlink = \"3\"\nmoment = \"380 N m\"")),
+        _ => {
+            return Err(Error::at(task, rs.span(), field, "give either force = \"…N\" or moment = \"…N·m\"")
+                .with_help("[[forces.resistance]]\nlink = \"3\"\nmoment = \"380 N m\""));
+        }
     };
     if value < 0.0 {
-        return Err(Error::at(task, rs.span(), field, "the magnitude of the resistance must be ≥ 0; its sense is set by direction/angle"));
+        return Err(Error::at(
+            task,
+            rs.span(),
+            field,
+            "the magnitude of the resistance must be ≥ 0; its sense is set by direction/angle",
+        ));
     }
     let law_name = r.law.as_ref().map_or("constant", |l| l.get_ref().as_str());
     let law_span = r.law.as_ref().map_or(rs.span(), |l| l.span());
@@ -321,14 +395,21 @@ fn resistance(task: &TaskSource, def: &MechanismDef, m: &Mechanism, field: &str,
         other => return Err(Error::at(task, law_span, &format!("{field}.law"), format!("unknown law `{other}`")).with_help("law = \"constant\" | \"working\" (value on the working stroke, 0 on the return) | \"sine\" (value·sin(π·s/H) on the working stroke) | \"table\"")),
     };
     if !matches!(law, Law::TravelTable(_) | Law::AngleTable(_)) && r.table.is_some() {
-        return Err(Error::at(task, r.table.as_ref().map_or(rs.span(), |t| t.span()), &format!("{field}.table"), "a table needs law = \"table\""));
+        return Err(Error::at(
+            task,
+            r.table.as_ref().map_or(rs.span(), |t| t.span()),
+            &format!("{field}.table"),
+            "a table needs law = \"table\"",
+        ));
     }
     Ok(Resistance { link, action, law })
 }
 
 /// `true` when the travel of the output is an angle (no slider on the frame).
 fn resist_angular(m: &Mechanism) -> bool {
-    !m.pairs.iter().any(|p| matches!(*p, tmm_linkage::mechanism::Pair::P { slider, guide: 0, .. } if slider == m.output))
+    !m.pairs
+        .iter()
+        .any(|p| matches!(*p, tmm_linkage::mechanism::Pair::P { slider, guide: 0, .. } if slider == m.output))
 }
 
 fn strength(task: &TaskSource, def: &MechanismDef, m: &Mechanism, s: &S<StrengthSec>) -> Result<Strength, Error> {
@@ -339,7 +420,12 @@ fn strength(task: &TaskSource, def: &MechanismDef, m: &Mechanism, s: &S<Strength
         Some(bw) => {
             let v = bw.get_ref();
             if v.len() != 2 {
-                return Err(Error::at(task, bw.span(), "forces.strength.between", "expected two points of the link [\"B\", \"C\"]"));
+                return Err(Error::at(
+                    task,
+                    bw.span(),
+                    "forces.strength.between",
+                    "expected two points of the link [\"B\", \"C\"]",
+                ));
             }
             let pa = point_on(task, def, m, link, "forces.strength.between[0]", &S::new(bw.span(), v[0].clone()))?;
             let pb = point_on(task, def, m, link, "forces.strength.between[1]", &S::new(bw.span(), v[1].clone()))?;
@@ -347,7 +433,12 @@ fn strength(task: &TaskSource, def: &MechanismDef, m: &Mechanism, s: &S<Strength
         }
         None => {
             if ld.points.len() < 2 {
-                return Err(Error::at(task, r.link.span(), "forces.strength.link", format!("link `{}` has one point: it is a slider block, not a bar", ld.name)));
+                return Err(Error::at(
+                    task,
+                    r.link.span(),
+                    "forces.strength.link",
+                    format!("link `{}` has one point: it is a slider block, not a bar", ld.name),
+                ));
             }
             // the two points farthest apart
             let mut best = (0, 1, 0.0);
@@ -359,7 +450,11 @@ fn strength(task: &TaskSource, def: &MechanismDef, m: &Mechanism, s: &S<Strength
                     }
                 }
             }
-            (ld.points[best.0].1, ld.points[best.1].1, (ld.points[best.0].0.clone(), ld.points[best.1].0.clone()))
+            (
+                ld.points[best.0].1,
+                ld.points[best.1].1,
+                (ld.points[best.0].0.clone(), ld.points[best.1].0.clone()),
+            )
         }
     };
     if (a - b).hypot() <= 1e-12 {
@@ -367,14 +462,28 @@ fn strength(task: &TaskSource, def: &MechanismDef, m: &Mechanism, s: &S<Strength
     }
     let allowed = qty(task, "forces.strength.allowed_stress", &r.allowed_stress, Dim::Stress)?;
     if allowed <= 0.0 {
-        return Err(Error::at(task, r.allowed_stress.span(), "forces.strength.allowed_stress", "must be > 0").with_help("allowed_stress = \"120 MPa\" (steel St3)"));
+        return Err(
+            Error::at(task, r.allowed_stress.span(), "forces.strength.allowed_stress", "must be > 0")
+                .with_help("allowed_stress = \"120 MPa\" (steel St3)"),
+        );
     }
     let k = match &r.h_over_b {
         Some(q) => qty(task, "forces.strength.h_over_b", q, Dim::Ratio)?,
         None => 2.0,
     };
     if k <= 0.0 {
-        return Err(Error::at(task, r.h_over_b.as_ref().map_or(s.span(), |q| q.span()), "forces.strength.h_over_b", "must be > 0"));
+        return Err(Error::at(
+            task,
+            r.h_over_b.as_ref().map_or(s.span(), |q| q.span()),
+            "forces.strength.h_over_b",
+            "must be > 0",
+        ));
     }
-    Ok(Strength { link, axis: (a, b), names, allowed, k })
+    Ok(Strength {
+        link,
+        axis: (a, b),
+        names,
+        allowed,
+        k,
+    })
 }

@@ -10,12 +10,27 @@ use crate::linkage::Loaded;
 fn position(out: &mut String, l: &Loaded, r: &Row) {
     let m = &l.mech;
     let f = &r.fs;
-    let _ = writeln!(out, "\nPosition {} — φ = {:.3}° (crank travel from the start of the working stroke {:.3}°)", r.label, r.phi.to_degrees(), r.psi.to_degrees());
+    let _ = writeln!(
+        out,
+        "\nPosition {} — φ = {:.3}° (crank travel from the start of the working stroke {:.3}°)",
+        r.label,
+        r.phi.to_degrees(),
+        r.psi.to_degrees()
+    );
     if let Some(p) = f.phase {
-        let _ = writeln!(out, "  {} stroke; useful resistance {}", if p.working { "working" } else { "return" }, f.resistance.iter().map(|v| format!("{v:.3}")).collect::<Vec<_>>().join(", "));
+        let _ = writeln!(
+            out,
+            "  {} stroke; useful resistance {}",
+            if p.working { "working" } else { "return" },
+            f.resistance.iter().map(|v| format!("{v:.3}")).collect::<Vec<_>>().join(", ")
+        );
     }
     let _ = writeln!(out, "  Loads on the links (at the centre of mass S):");
-    let _ = writeln!(out, "  {:>6} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}", "link", "Fu, N", "Mu, N·m", "G, N", "ΣFx, N", "ΣFy, N", "ΣM_S, N·m");
+    let _ = writeln!(
+        out,
+        "  {:>6} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
+        "link", "Fu, N", "Mu, N·m", "G, N", "ΣFx, N", "ΣFy, N", "ΣM_S, N·m"
+    );
     for (i, lf) in f.links.iter().enumerate().skip(1) {
         let _ = writeln!(
             out,
@@ -29,8 +44,15 @@ fn position(out: &mut String, l: &Loaded, r: &Row) {
             lf.moment
         );
     }
-    let _ = writeln!(out, "  Reactions, group by group from the last (force of link `from` on link `on`; R^n along the axis of `on`, R^τ across it):");
-    let _ = writeln!(out, "  {:>6} {:>4} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>10}", "pair", "kind", "from→on", "Rx, N", "Ry, N", "|R|, N", "R^n, N", "R^τ, N", "shift, mm");
+    let _ = writeln!(
+        out,
+        "  Reactions, group by group from the last (force of link `from` on link `on`; R^n along the axis of `on`, R^τ across it):"
+    );
+    let _ = writeln!(
+        out,
+        "  {:>6} {:>4} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>10}",
+        "pair", "kind", "from→on", "Rx, N", "Ry, N", "|R|, N", "R^n, N", "R^τ, N", "shift, mm"
+    );
     let mut order: Vec<usize> = Vec::new();
     for g in m.groups.iter().rev() {
         order.extend(g.info.pair_ids.iter().copied());
@@ -50,12 +72,29 @@ fn position(out: &mut String, l: &Loaded, r: &Row) {
             x.force.hypot(),
             x.normal,
             x.tangential,
-            if x.prismatic { format!("{:.3}", x.offset * 1e3) } else { "—".into() }
+            if x.prismatic {
+                format!("{:.3}", x.offset * 1e3)
+            } else {
+                "—".into()
+            }
         );
     }
-    let _ = writeln!(out, "  Balancing torque on the input link (kinetostatics): M_b = {:.4} N·m", f.balancing_moment);
-    let _ = writeln!(out, "  Balancing force at the crank pin ⟂ crank:            P_b = {:.4} N", f.balancing_force);
-    let _ = writeln!(out, "  Balancing torque by Zhukovsky's lever:               M_Zh = {:.4} N·m  (relative difference {:.2e})", f.zhukovsky_moment, f.relative_difference());
+    let _ = writeln!(
+        out,
+        "  Balancing torque on the input link (kinetostatics): M_b = {:.4} N·m",
+        f.balancing_moment
+    );
+    let _ = writeln!(
+        out,
+        "  Balancing force at the crank pin ⟂ crank:            P_b = {:.4} N",
+        f.balancing_force
+    );
+    let _ = writeln!(
+        out,
+        "  Balancing torque by Zhukovsky's lever:               M_Zh = {:.4} N·m  (relative difference {:.2e})",
+        f.zhukovsky_moment,
+        f.relative_difference()
+    );
 }
 
 /// The report.
@@ -63,20 +102,39 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
     let m = &l.mech;
     let mut out = String::new();
     let _ = writeln!(out, "Kinetostatics (force analysis) — {}", m.structure.formula);
-    let _ = writeln!(out, "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.", m.crank.omega);
+    let _ = writeln!(
+        out,
+        "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.",
+        m.crank.omega
+    );
     if t.loads.gravity.hypot() > 0.0 {
         let _ = writeln!(out, "Gravity g = ({:.4}, {:.4}) m/s².", t.loads.gravity.x, t.loads.gravity.y);
     } else {
         let _ = writeln!(out, "Weights neglected (no gravity given).");
     }
-    let _ = writeln!(out, "\n  {:>6} {:>10} {:>12} {:>20}", "link", "m, kg", "J_S, kg·m²", "S (local), mm");
+    let _ = writeln!(
+        out,
+        "\n  {:>6} {:>10} {:>12} {:>20}",
+        "link", "m, kg", "J_S, kg·m²", "S (local), mm"
+    );
     for (i, ld) in t.loads.links.iter().enumerate().skip(1) {
         let s = m.mass_centers[i];
-        let _ = writeln!(out, "  {:>6} {:>10.4} {:>12.6} {:>20}", m.link_names[i], ld.mass, ld.inertia, format!("({:.1}, {:.1})", s.x * 1e3, s.y * 1e3));
+        let _ = writeln!(
+            out,
+            "  {:>6} {:>10.4} {:>12.6} {:>20}",
+            m.link_names[i],
+            ld.mass,
+            ld.inertia,
+            format!("({:.1}, {:.1})", s.x * 1e3, s.y * 1e3)
+        );
     }
     position(&mut out, l, &a.detail);
     let _ = writeln!(out, "\nBalancing torque at the {} positions:", a.rows.len());
-    let _ = writeln!(out, "  {:>5} {:>10} {:>14} {:>14} {:>14} {:>10} {:>14}", "pos", "φ, °", "M_b, N·m", "P_b, N", "M_Zh, N·m", "rel.diff", "max |R|, N");
+    let _ = writeln!(
+        out,
+        "  {:>5} {:>10} {:>14} {:>14} {:>14} {:>10} {:>14}",
+        "pos", "φ, °", "M_b, N·m", "P_b, N", "M_Zh, N·m", "rel.diff", "max |R|, N"
+    );
     for r in &a.rows {
         let f = &r.fs;
         let rmax = f.reactions.iter().map(|x| x.force.hypot()).fold(0.0, f64::max);
@@ -93,17 +151,47 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
         );
     }
     let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
-    let (mn, mx) = a.curve.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c[2]), b.max(c[2])));
+    let (mn, mx) = a
+        .curve
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c[2]), b.max(c[2])));
     let mean = a.curve[..a.curve.len() - 1].iter().map(|c| c[2]).sum::<f64>() / (a.curve.len() - 1) as f64;
-    let _ = writeln!(out, "Over the cycle (1° steps): M_b from {mn:.4} to {mx:.4} N·m, mean {mean:.4} N·m; kinetostatics and Zhukovsky's lever differ by at most {max_diff:.2e} (relative).");
+    let _ = writeln!(
+        out,
+        "Over the cycle (1° steps): M_b from {mn:.4} to {mx:.4} N·m, mean {mean:.4} N·m; kinetostatics and Zhukovsky's lever differ by at most {max_diff:.2e} (relative)."
+    );
     if let Some(b) = &a.beam {
         let s = &b.sizes;
-        let _ = writeln!(out, "\nStrength of link {} as a beam {}–{} (L = {:.2} mm) at φ = {:.3}°:", m.link_names[b.beam.link], b.names.0, b.names.1, b.beam.length * 1e3, a.detail.phi.to_degrees());
-        let _ = writeln!(out, "  Concentrated loads (axial along {}→{}, transverse across it):", b.names.0, b.names.1);
+        let _ = writeln!(
+            out,
+            "\nStrength of link {} as a beam {}–{} (L = {:.2} mm) at φ = {:.3}°:",
+            m.link_names[b.beam.link],
+            b.names.0,
+            b.names.1,
+            b.beam.length * 1e3,
+            a.detail.phi.to_degrees()
+        );
+        let _ = writeln!(
+            out,
+            "  Concentrated loads (axial along {}→{}, transverse across it):",
+            b.names.0, b.names.1
+        );
         for x in &b.beam.loads {
-            let _ = writeln!(out, "  {:>30} z = {:>9.3} mm  N-dir {:>11.4} N  Q-dir {:>11.4} N  couple {:>10.5} N·m", x.label, x.z * 1e3, x.fe, x.fn_, x.couple);
+            let _ = writeln!(
+                out,
+                "  {:>30} z = {:>9.3} mm  N-dir {:>11.4} N  Q-dir {:>11.4} N  couple {:>10.5} N·m",
+                x.label,
+                x.z * 1e3,
+                x.fe,
+                x.fn_,
+                x.couple
+            );
         }
-        let _ = writeln!(out, "  Distributed weight and inertia: q_axial = {:.4} + {:.4}·z + {:.4}·z² N/m, q_transverse = {:.4} + {:.4}·z + {:.4}·z² N/m", b.beam.qe[0], b.beam.qe[1], b.beam.qe[2], b.beam.qn[0], b.beam.qn[1], b.beam.qn[2]);
+        let _ = writeln!(
+            out,
+            "  Distributed weight and inertia: q_axial = {:.4} + {:.4}·z + {:.4}·z² N/m, q_transverse = {:.4} + {:.4}·z + {:.4}·z² N/m",
+            b.beam.qe[0], b.beam.qe[1], b.beam.qe[2], b.beam.qn[0], b.beam.qn[1], b.beam.qn[2]
+        );
         let _ = writeln!(out, "  {:>10} {:>12} {:>12} {:>12}", "z, mm", "N, N", "Q, N", "M, N·m");
         let step = (b.samples.len() / 20).max(1);
         for (i, x) in b.samples.iter().enumerate() {
@@ -113,11 +201,29 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
         }
         let z = |i: usize| b.samples.get(i).map_or(f64::NAN, |x| x.z * 1e3);
         let _ = writeln!(out, "  [σ] = {:.1} MPa, σ = |N|/A + |M|/W:", b.allowed / 1e6);
-        let _ = writeln!(out, "  round bar:           d = {:.3} mm (dangerous section z = {:.3} mm)", s.round_d * 1e3, z(s.round_at));
-        let _ = writeln!(out, "  rectangle h = {:.2}·b: b = {:.3} mm, h = {:.3} mm (dangerous section z = {:.3} mm)", b.k, s.rect_b * 1e3, s.rect_h * 1e3, z(s.rect_at));
+        let _ = writeln!(
+            out,
+            "  round bar:           d = {:.3} mm (dangerous section z = {:.3} mm)",
+            s.round_d * 1e3,
+            z(s.round_at)
+        );
+        let _ = writeln!(
+            out,
+            "  rectangle h = {:.2}·b: b = {:.3} mm, h = {:.3} mm (dangerous section z = {:.3} mm)",
+            b.k,
+            s.rect_b * 1e3,
+            s.rect_h * 1e3,
+            z(s.rect_at)
+        );
         match s.ibeam {
             Some((ib, i, sig)) => {
-                let _ = writeln!(out, "  I-section GOST 8239-89 No. {} (σ = {:.2} MPa at z = {:.3} mm)", ib.number, sig / 1e6, z(i));
+                let _ = writeln!(
+                    out,
+                    "  I-section GOST 8239-89 No. {} (σ = {:.2} MPa at z = {:.3} mm)",
+                    ib.number,
+                    sig / 1e6,
+                    z(i)
+                );
             }
             None => {
                 let _ = writeln!(out, "  no I-section of the table (No. 10…30) holds");
