@@ -29,8 +29,11 @@ impl Default for Limits {
 pub enum CheckKind {
     /// No undercut of wheel 1 or 2 by the rack: x ≥ xmin.
     Undercut(u8),
-    /// No interference: ρl ≤ ρp (for a ring: ρp ≤ ρl).
+    /// No interference: ρl ≤ ρp.
     Interference(u8),
+    /// No interference at a ring: its contact with the pinion tip stays inside
+    /// its generated involute, ρp2 ≤ ρl2.
+    RingInterference,
     /// No tip pointing: sa ≥ sa_min·m.
     Pointing(u8),
     /// Contact ratio εα ≥ εmin.
@@ -45,6 +48,7 @@ impl CheckKind {
         match self {
             CheckKind::Undercut(w) => format!("undercut{w}"),
             CheckKind::Interference(w) => format!("interference{w}"),
+            CheckKind::RingInterference => "interference2".into(),
             CheckKind::Pointing(w) => format!("pointing{w}"),
             CheckKind::ContactRatio => "contact_ratio".into(),
             CheckKind::TipInterference => "tip_interference".into(),
@@ -57,6 +61,7 @@ impl CheckKind {
             CheckKind::Undercut(w) => format!("no undercut of wheel {w}: x{w} ≥ xmin{w}"),
             CheckKind::Interference(1) => "no interference at wheel 1: ρl1 ≤ ρp1".into(),
             CheckKind::Interference(w) => format!("no interference at wheel {w}: ρl{w} ≤ ρp{w}"),
+            CheckKind::RingInterference => "no interference at the ring: ρp2 ≤ ρl2".into(),
             CheckKind::Pointing(w) => format!("no tip pointing of wheel {w}: sa{w} ≥ sa_min"),
             CheckKind::ContactRatio => "contact ratio εα ≥ εmin".into(),
             CheckKind::TipInterference => "no tip interference of the internal pair: margin ≥ 0".into(),
@@ -138,7 +143,7 @@ impl Pair {
         });
         if internal {
             out.push(Check {
-                kind: CheckKind::Interference(2),
+                kind: CheckKind::RingInterference,
                 value: self.w2.rho_p,
                 limit: self.w2.rho_l,
                 pass: self.w2.rho_p <= self.w2.rho_l,

@@ -90,7 +90,9 @@ pub fn pair_text(s: &Solved, lim: &Limits) -> String {
     let _ = writeln!(t, "\nQuality checks");
     for c in p.checks(lim).as_slice() {
         let (v, l) = match c.kind {
-            CheckKind::Interference(_) | CheckKind::Pointing(_) => (format!("{} mm", mm(c.value)), format!("{} mm", mm(c.limit))),
+            CheckKind::Interference(_) | CheckKind::RingInterference | CheckKind::Pointing(_) => {
+                (format!("{} mm", mm(c.value)), format!("{} mm", mm(c.limit)))
+            }
             _ => (format!("{:.5}", c.value), format!("{:.5}", c.limit)),
         };
         let _ = writeln!(
