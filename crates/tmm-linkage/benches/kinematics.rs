@@ -80,7 +80,18 @@ fn sixbar() -> Mechanism {
 
 const N: usize = 3600;
 
+/// One revolution as a sweep (the course's positions, the diagrams).
 fn revolution(m: &Mechanism, bencher: divan::Bencher) {
+    let mut sol = m.solution();
+    bencher.counter(divan::counter::ItemsCount::new(N)).bench_local(|| {
+        let mut acc = 0.0;
+        m.sweep(black_box(0.0), TAU / N as f64, N, &mut sol, |_, s| acc += s.points[s.points.len() - 1].a.x).unwrap();
+        black_box(acc)
+    });
+}
+
+/// One revolution by independent solves at each angle (random access).
+fn each_angle(m: &Mechanism, bencher: divan::Bencher) {
     let mut sol = m.solution();
     bencher.counter(divan::counter::ItemsCount::new(N)).bench_local(|| {
         let mut acc = 0.0;
@@ -93,14 +104,26 @@ fn revolution(m: &Mechanism, bencher: divan::Bencher) {
     });
 }
 
-/// Seed-001 four-bar, 3600 positions.
+/// Seed-001 four-bar, 3600 positions in one sweep.
 #[divan::bench]
 fn fourbar_revolution(bencher: divan::Bencher) {
     revolution(&fourbar(), bencher);
 }
 
-/// Seed-003 six-bar, 3600 positions.
+/// Seed-001 four-bar, 3600 independent solves.
+#[divan::bench]
+fn fourbar_each_angle(bencher: divan::Bencher) {
+    each_angle(&fourbar(), bencher);
+}
+
+/// Seed-003 six-bar, 3600 positions in one sweep.
 #[divan::bench]
 fn sixbar_revolution(bencher: divan::Bencher) {
     revolution(&sixbar(), bencher);
+}
+
+/// Seed-003 six-bar, 3600 independent solves.
+#[divan::bench]
+fn sixbar_each_angle(bencher: divan::Bencher) {
+    each_angle(&sixbar(), bencher);
 }

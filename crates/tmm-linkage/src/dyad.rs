@@ -131,6 +131,8 @@ pub enum DyadGeom {
         dir2: Vec2,
         /// |CB|.
         len2: f64,
+        /// `1/|AB|`, `1/|CB|`, `|AB|² − |CB|²` (constants of the solve).
+        inv: (f64, f64, f64),
     },
     /// RRP: `l1` (A, B) and the slider `l2` (B on it) on a guide of a known link.
     Rrp {
@@ -264,6 +266,7 @@ impl DyadGeom {
                 c2,
                 dir2,
                 len2,
+                inv,
             } => {
                 let pa = a.state(links);
                 let pc = c.state(links);
@@ -271,7 +274,7 @@ impl DyadGeom {
                 let dd = d.x * d.x + d.y * d.y;
                 let dist = dd.sqrt();
                 let inv_d = 1.0 / dist;
-                let x = 0.5 * (len1 * len1 - len2 * len2 + dd) * inv_d;
+                let x = 0.5 * (inv.2 + dd) * inv_d;
                 let h2 = len1 * len1 - x * x;
                 if !(dist > 0.0) || h2 < -1e-12 * len1 * len1 || !h2.is_finite() {
                     return Err(DyadFail::Circles {
@@ -291,8 +294,8 @@ impl DyadGeom {
                 let (w1, w2) = (r1.dot(rv), r2.dot(rv));
                 let ra = pc.a - pa.a + ab * (w1 * w1) - cb * (w2 * w2);
                 let (e1, e2) = (r1.dot(ra), r2.dot(ra));
-                let u1 = rot(ab * (1.0 / len1), conj(dir1));
-                let u2 = rot(cb * (1.0 / len2), conj(dir2));
+                let u1 = rot(ab * inv.0, conj(dir1));
+                let u2 = rot(cb * inv.1, conj(dir2));
                 links[l1] = LinkState::from_point(&pa, a1, u1, w1, e1);
                 links[l2] = LinkState::from_point(&pc, c2, u2, w2, e2);
                 Ok(())

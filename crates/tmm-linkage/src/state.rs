@@ -93,15 +93,19 @@ impl LinkState {
     /// Full state of a local point.
     #[inline(always)]
     pub fn point(&self, l: Vec2) -> PointState {
-        let p = self.pos(l);
-        let (v, a) = self.kin_at(p);
-        PointState { p, v, a }
+        let r = rot(self.u, l);
+        let pr = perp(r);
+        PointState { p: self.o + r, v: self.v + pr * self.omega, a: self.a + pr * self.eps - r * (self.omega * self.omega) }
     }
 
     /// The link state given the state of one of its points (local `l`) and its
     /// rotation.
     #[inline(always)]
     pub fn from_point(pt: &PointState, l: Vec2, u: Vec2, omega: f64, eps: f64) -> Self {
+        if l == Vec2::ZERO {
+            // the point is the link's origin
+            return LinkState { o: pt.p, v: pt.v, a: pt.a, u, omega, eps };
+        }
         let d = -rot(u, l);
         let pd = perp(d);
         LinkState {
