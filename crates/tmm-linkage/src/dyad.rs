@@ -276,7 +276,8 @@ impl DyadGeom {
                 let inv_d = 1.0 / dist;
                 let x = 0.5 * (inv.2 + dd) * inv_d;
                 let h2 = len1 * len1 - x * x;
-                if !(dist > 0.0) || h2 < -1e-12 * len1 * len1 || !h2.is_finite() {
+                // one comparison also catches dist = 0 (x infinite) and NaN
+                if !(h2 >= -1e-12 * len1 * len1) {
                     return Err(DyadFail::Circles {
                         d: dist,
                         r1: len1,

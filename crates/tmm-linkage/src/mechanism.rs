@@ -162,8 +162,11 @@ pub struct Mechanism {
     pub assembly_angle: f64,
     /// The assembled state at `assembly_angle` (warm start for Newton groups).
     init: Vec<LinkState>,
-    /// Points not on the frame (the frame's are set once per buffer).
-    moving_points: Vec<usize>,
+    /// Points not on the frame at a link's origin: (point, link). The frame's
+    /// points are set once per buffer.
+    origin_points: Vec<(usize, usize)>,
+    /// Other points not on the frame: (point, link, local).
+    offset_points: Vec<(usize, usize, Vec2)>,
     has_general: bool,
     scale: f64,
 }
@@ -472,7 +475,9 @@ impl Mechanism {
             passive: 0,
         };
         let has_general = groups.iter().any(|g| g.solver == Solver::General);
-        let moving_points: Vec<usize> = (0..points.len()).filter(|&i| points[i].link != 0).collect();
+        let origin_points: Vec<(usize, usize)> = (0..points.len()).filter(|&i| points[i].link != 0 && points[i].local == Vec2::ZERO).map(|i| (i, points[i].link)).collect();
+        let offset_points: Vec<(usize, usize, Vec2)> =
+            (0..points.len()).filter(|&i| points[i].link != 0 && points[i].local != Vec2::ZERO).map(|i| (i, points[i].link, points[i].local)).collect();
         let mut m = Mechanism {
             link_names,
             mass_centers,
@@ -484,7 +489,8 @@ impl Mechanism {
             output,
             assembly_angle: def.assembly_angle,
             init: Vec::new(),
-            moving_points,
+            origin_points,
+            offset_points,
             has_general,
             scale,
         };
@@ -631,14 +637,12 @@ impl Mechanism {
             }
         }
         let links = &sol.links;
-        for &i in &self.moving_points {
-            let p = &self.points[i];
-            let l = &links[p.link];
-            sol.points[i] = if p.local == Vec2::ZERO {
-                PointState { p: l.o, v: l.v, a: l.a }
-            } else {
-                l.point(p.local)
-            };
+        for &(i, l) in &self.origin_points {
+            let l = &links[l];
+            sol.points[i] = PointState { p: l.o, v: l.v, a: l.a };
+        }
+        for &(i, l, local) in &self.offset_points {
+            sol.points[i] = links[l].point(local);
         }
         if self.has_general {
             sol.warm = Some(phi);

@@ -125,7 +125,8 @@ impl LinkState {
 #[inline(always)]
 pub fn inverse2(c1: Vec2, c2: Vec2, tol: f64) -> Option<(Vec2, Vec2)> {
     let det = c1.x * c2.y - c1.y * c2.x;
-    if det.abs() <= tol || !det.is_finite() {
+    // false for NaN too
+    if !(det.abs() > tol) {
         return None;
     }
     let inv = 1.0 / det;
