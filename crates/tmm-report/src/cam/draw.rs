@@ -15,7 +15,11 @@ fn stack(docs: &[String], w: f64, h: f64) -> String {
     let mut body = String::new();
     for (i, d) in docs.iter().enumerate() {
         let inner = d.split_once("?>").map_or(d.as_str(), |x| x.1).trim();
-        let inner = inner.replacen("<svg ", &format!("<svg x=\"0\" y=\"{}\" ", i as f64 * h), 1);
+        // nested documents in user units (the parent's viewBox is in mm)
+        let inner = inner
+            .replacen("<svg ", &format!("<svg x=\"0\" y=\"{}\" ", i as f64 * h), 1)
+            .replacen(&format!("width=\"{w}mm\""), &format!("width=\"{w}\""), 1)
+            .replacen(&format!("height=\"{h}mm\""), &format!("height=\"{h}\""), 1);
         body.push_str(&inner);
         body.push('\n');
     }
