@@ -35,7 +35,13 @@ pub fn analogs(task: &CamTask, d: &CamDesign) -> String {
     let k = if osc { 180.0 / std::f64::consts::PI } else { 1e3 };
     let u = if osc { "deg" } else { "mm" };
     let p = &d.profile;
-    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> { (0..p.phi.len()).map(|i| (p.phi[i].to_degrees(), f(i))).collect() };
+    // one full turn: the first point again at 360°
+    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        (0..p.phi.len())
+            .map(|i| (p.phi[i].to_degrees(), f(i)))
+            .chain([(360.0, f(0))])
+            .collect()
+    };
     let s = pts(&|i| p.motion[i].s * k);
     let v = pts(&|i| p.motion[i].v * k);
     let a = pts(&|i| p.motion[i].a * k);
@@ -89,7 +95,10 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
     let osc = task.follower.oscillating();
     let w = task.omega;
     let p = &d.profile;
-    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> { (0..p.phi.len()).map(|i| (p.phi[i] / w * 1e3, f(i))).collect() };
+    let turn = std::f64::consts::TAU / w * 1e3;
+    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        (0..p.phi.len()).map(|i| (p.phi[i] / w * 1e3, f(i))).chain([(turn, f(0))]).collect()
+    };
     let s = pts(&|i| p.motion[i].s * if osc { 1.0 } else { 1e3 });
     let v = pts(&|i| p.motion[i].v * w);
     let a = pts(&|i| p.motion[i].a * w * w);
@@ -161,6 +170,7 @@ pub fn pressure(task: &CamTask, d: &CamDesign) -> String {
     let p = &d.profile;
     let th: Vec<(f64, f64)> = (0..p.phi.len())
         .map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees()))
+        .chain([(360.0, p.pressure[0].to_degrees())])
         .collect();
     let lr = [(0.0, task.limits.rise.to_degrees()), (360.0, task.limits.rise.to_degrees())];
     let lt = [(0.0, task.limits.ret.to_degrees()), (360.0, task.limits.ret.to_degrees())];
