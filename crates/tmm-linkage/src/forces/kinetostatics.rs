@@ -304,7 +304,8 @@ impl<'m> Kinetostatics<'m> {
         let m_pivot = mo + cross(o - pivot, f);
         out.balancing_moment = -m_pivot;
         out.reactions[self.pivot_pair] = reaction(self.pivot_pair, &m.pairs[self.pivot_pair], 0, c, -f, pivot, 0.0, sol);
-        let r = sol.points[m.crank.pin].p - pivot;
+        // the pin from the crank's own state (pivot + radius along the crank)
+        let r = crate::state::rot(sol.links[c].u, m.crank.dir_local) * m.crank.radius;
         let rl = r.hypot();
         out.balancing_force = out.balancing_moment / rl;
         out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
