@@ -242,7 +242,7 @@ pub fn newton(pairs: &[&Pair], unknown: &[usize], links: &mut [LinkState], jac: 
             let (sn, cs) = dt.sin_cos();
             s.u = rot(s.u, Vec2::new(cs, sn));
             let norm = s.u.hypot();
-            s.u = s.u * (1.0 / norm);
+            s.u *= 1.0 / norm;
         }
         if step * f < 1e-15 * scale.max(1.0) {
             return Some(it);

@@ -253,6 +253,8 @@ impl DyadGeom {
     /// from the known links, on branch `sign` (±1). Writes `links[l1]`,
     /// `links[l2]`.
     #[inline]
+    // `!(x >= tol)` is meant: it is also true for NaN
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     pub fn solve(&self, sign: f64, links: &mut [LinkState]) -> Result<(), DyadFail> {
         match *self {
             DyadGeom::Rrr {

@@ -475,9 +475,14 @@ impl Mechanism {
             passive: 0,
         };
         let has_general = groups.iter().any(|g| g.solver == Solver::General);
-        let origin_points: Vec<(usize, usize)> = (0..points.len()).filter(|&i| points[i].link != 0 && points[i].local == Vec2::ZERO).map(|i| (i, points[i].link)).collect();
-        let offset_points: Vec<(usize, usize, Vec2)> =
-            (0..points.len()).filter(|&i| points[i].link != 0 && points[i].local != Vec2::ZERO).map(|i| (i, points[i].link, points[i].local)).collect();
+        let origin_points: Vec<(usize, usize)> = (0..points.len())
+            .filter(|&i| points[i].link != 0 && points[i].local == Vec2::ZERO)
+            .map(|i| (i, points[i].link))
+            .collect();
+        let offset_points: Vec<(usize, usize, Vec2)> = (0..points.len())
+            .filter(|&i| points[i].link != 0 && points[i].local != Vec2::ZERO)
+            .map(|i| (i, points[i].link, points[i].local))
+            .collect();
         let mut m = Mechanism {
             link_names,
             mass_centers,
@@ -578,7 +583,14 @@ impl Mechanism {
     /// }).unwrap();
     /// assert!(worst < 1e-12);
     /// ```
-    pub fn sweep(&self, phi0: f64, dphi: f64, n: usize, sol: &mut Solution, mut f: impl FnMut(usize, &Solution)) -> Result<(), LinkageError> {
+    pub fn sweep(
+        &self,
+        phi0: f64,
+        dphi: f64,
+        n: usize,
+        sol: &mut Solution,
+        mut f: impl FnMut(usize, &Solution),
+    ) -> Result<(), LinkageError> {
         if self.has_general {
             for k in 0..n {
                 self.solve(phi0 + dphi * k as f64, sol)?;

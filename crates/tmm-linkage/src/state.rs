@@ -95,7 +95,11 @@ impl LinkState {
     pub fn point(&self, l: Vec2) -> PointState {
         let r = rot(self.u, l);
         let pr = perp(r);
-        PointState { p: self.o + r, v: self.v + pr * self.omega, a: self.a + pr * self.eps - r * (self.omega * self.omega) }
+        PointState {
+            p: self.o + r,
+            v: self.v + pr * self.omega,
+            a: self.a + pr * self.eps - r * (self.omega * self.omega),
+        }
     }
 
     /// The link state given the state of one of its points (local `l`) and its
@@ -104,7 +108,14 @@ impl LinkState {
     pub fn from_point(pt: &PointState, l: Vec2, u: Vec2, omega: f64, eps: f64) -> Self {
         if l == Vec2::ZERO {
             // the point is the link's origin
-            return LinkState { o: pt.p, v: pt.v, a: pt.a, u, omega, eps };
+            return LinkState {
+                o: pt.p,
+                v: pt.v,
+                a: pt.a,
+                u,
+                omega,
+                eps,
+            };
         }
         let d = -rot(u, l);
         let pd = perp(d);
@@ -123,6 +134,8 @@ impl LinkState {
 /// several right-hand sides (velocities, then accelerations): returns the rows
 /// of the inverse, or `None` when `|det| ≤ tol`.
 #[inline(always)]
+// `!(x > tol)` is meant: it is also true for NaN
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 pub fn inverse2(c1: Vec2, c2: Vec2, tol: f64) -> Option<(Vec2, Vec2)> {
     let det = c1.x * c2.y - c1.y * c2.x;
     // false for NaN too

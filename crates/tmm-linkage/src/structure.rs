@@ -99,6 +99,9 @@ pub fn roman(n: u32) -> &'static str {
     }
 }
 
+/// A group as found: its links and its pairs (indices).
+pub type GroupSets = (Vec<usize>, Vec<usize>);
+
 /// Decompose: `n_links` links (0 = frame), `pairs`, `input` the crank link.
 /// Returns groups as (links, pairs) in solving order, or the links left over.
 ///
@@ -111,7 +114,7 @@ pub fn roman(n: u32) -> &'static str {
 /// assert_eq!(g.len(), 1);
 /// assert_eq!(g[0].0, vec![2, 3]);
 /// ```
-pub fn decompose(n_links: usize, pairs: &[PairLink], input: usize) -> Result<Vec<(Vec<usize>, Vec<usize>)>, Vec<usize>> {
+pub fn decompose(n_links: usize, pairs: &[PairLink], input: usize) -> Result<Vec<GroupSets>, Vec<usize>> {
     let mut known = vec![false; n_links];
     known[0] = true;
     known[input] = true;

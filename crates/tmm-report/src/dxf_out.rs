@@ -26,14 +26,21 @@ impl DxfDoc {
         let mut drawing = Drawing::new();
         drawing.header.version = AcadVersion::R2000;
         drawing.header.default_drawing_units = Units::Millimeters;
-        DxfDoc { drawing, layer: "0".to_string() }
+        DxfDoc {
+            drawing,
+            layer: "0".to_string(),
+        }
     }
 
     /// Add a layer with an AutoCAD colour index (1 red, 2 yellow, 3 green,
     /// 4 cyan, 5 blue, 6 magenta, 7 white/black) and make it current.
     pub fn layer(&mut self, name: &str, aci: u8) {
         if !self.drawing.layers().any(|l| l.name == name) {
-            self.drawing.add_layer(Layer { name: name.to_string(), color: Color::from_index(aci), ..Default::default() });
+            self.drawing.add_layer(Layer {
+                name: name.to_string(),
+                color: Color::from_index(aci),
+                ..Default::default()
+            });
         }
         self.layer = name.to_string();
     }
@@ -53,8 +60,18 @@ impl DxfDoc {
 
     /// A polyline through points (mm); non-finite points are dropped.
     pub fn polyline(&mut self, pts: &[(f64, f64)], closed: bool) {
-        let mut p = LwPolyline::default();
-        p.vertices = pts.iter().filter(|q| q.0.is_finite() && q.1.is_finite()).map(|&(x, y)| LwPolylineVertex { x, y, ..Default::default() }).collect();
+        let mut p = LwPolyline {
+            vertices: pts
+                .iter()
+                .filter(|q| q.0.is_finite() && q.1.is_finite())
+                .map(|&(x, y)| LwPolylineVertex {
+                    x,
+                    y,
+                    ..Default::default()
+                })
+                .collect(),
+            ..Default::default()
+        };
         if p.vertices.len() < 2 {
             return;
         }
@@ -79,7 +96,12 @@ impl DxfDoc {
     /// Text (mm).
     pub fn text(&mut self, at: (f64, f64), height: f64, value: &str) {
         if at.0.is_finite() && at.1.is_finite() {
-            let t = Text { location: Point::new(at.0, at.1, 0.0), text_height: height, value: value.to_string(), ..Default::default() };
+            let t = Text {
+                location: Point::new(at.0, at.1, 0.0),
+                text_height: height,
+                value: value.to_string(),
+                ..Default::default()
+            };
             self.add(EntityType::Text(t));
         }
     }

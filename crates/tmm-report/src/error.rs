@@ -10,26 +10,33 @@ use miette::{Diagnostic, NamedSource, SourceSpan};
 
 use crate::task::TaskSource;
 
-/// What went wrong, for the user.
+/// A bad-input error: the message, the task file and the place in it.
+#[derive(Debug, thiserror::Error, Diagnostic)]
+#[error("{message}")]
+#[diagnostic(code(tmm::input))]
+pub struct InputError {
+    /// The full message, starting with the field and its place.
+    pub message: String,
+    /// The task file, when the error is in one.
+    #[source_code]
+    pub src: Option<NamedSource<String>>,
+    /// The offending value in the file.
+    #[label("here")]
+    pub span: Option<SourceSpan>,
+    /// What would be valid.
+    #[help]
+    pub help: Option<String>,
+}
+
+/// What went wrong, for the user. Boxed, so that `Result<T, Error>` stays
+/// small on every happy path.
 #[derive(Debug, thiserror::Error, Diagnostic)]
 pub enum Error {
     /// The input is wrong: a task-file field, a command-line value, or a
     /// mechanism that cannot work as described. Exit code 2.
-    #[error("{message}")]
-    #[diagnostic(code(tmm::input))]
-    Input {
-        /// The full message, starting with the field and its place.
-        message: String,
-        /// The task file, when the error is in one.
-        #[source_code]
-        src: Option<NamedSource<String>>,
-        /// The offending value in the file.
-        #[label("here")]
-        span: Option<SourceSpan>,
-        /// What would be valid.
-        #[help]
-        help: Option<String>,
-    },
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Input(Box<InputError>),
     /// Writing an output failed. Exit code 1.
     #[error("{0}")]
     #[diagnostic(code(tmm::io))]
@@ -46,25 +53,30 @@ impl Error {
     /// assert!(e.to_string().contains("--z1"));
     /// ```
     pub fn input(field: &str, message: impl std::fmt::Display) -> Self {
-        Error::Input { message: format!("{field}: {message}"), src: None, span: None, help: None }
+        Error::Input(Box::new(InputError {
+            message: format!("{field}: {message}"),
+            src: None,
+            span: None,
+            help: None,
+        }))
     }
 
     /// A bad-input error located in a task file: the message starts with
     /// `file:line:column: field:`.
     pub fn at(task: &TaskSource, span: Range<usize>, field: &str, message: impl std::fmt::Display) -> Self {
         let (line, col) = task.line_col(span.start);
-        Error::Input {
+        Error::Input(Box::new(InputError {
             message: format!("{}:{line}:{col}: {field}: {message}", task.name),
             src: Some(NamedSource::new(task.name.clone(), task.text.clone())),
             span: Some(SourceSpan::from(span.start..span.end.max(span.start))),
             help: None,
-        }
+        }))
     }
 
     /// Add what would be valid.
     pub fn with_help(mut self, text: impl Into<String>) -> Self {
-        if let Error::Input { help, .. } = &mut self {
-            *help = Some(text.into());
+        if let Error::Input(e) = &mut self {
+            e.help = Some(text.into());
         }
         self
     }
@@ -77,7 +89,7 @@ impl Error {
     /// The process exit code: 2 for bad input, 1 for a failed write.
     pub fn exit_code(&self) -> i32 {
         match self {
-            Error::Input { .. } => 2,
+            Error::Input(_) => 2,
             Error::Io(_) => 1,
         }
     }
