@@ -6,8 +6,8 @@
 //!
 //! Placement (derived here, docs/gears.md §Meshing drawing): O1 at the origin,
 //! the pole P = (0, rw1); the line of action rises to the right at αw; wheel 1
-//! has a tooth just right of P whose left flank passes through P, wheel 2 the
-//! mating tooth just left of P.
+//! has a tooth just left of P whose right flank passes through P, wheel 2 the
+//! mating tooth just right of P.
 
 use std::f64::consts::PI;
 
@@ -70,8 +70,8 @@ fn scene(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> Scene {
     } else {
         w2.s / w2.d + inv(al) - inv(pair.alpha_w)
     };
-    let rot1 = -psi1;
-    let rot2 = if internal { psi2 } else { -PI - psi2 };
+    let rot1 = psi1;
+    let rot2 = if internal { -psi2 } else { -PI + psi2 };
     let mut circles = Vec::new();
     for (c, w, n) in [(o1, w1, 1), (o2, w2, 2)] {
         let _ = n;
@@ -90,17 +90,17 @@ fn scene(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> Scene {
             .collect()
     };
     let r_of = |rb: f64, rho: f64| ((rb * k).powi(2) + (rho * k).powi(2)).sqrt();
-    let work1 = work(t1, 1.0, r_of(w1.db / 2.0, w1.rho_p), rot1, o1);
+    let work1 = work(t1, -1.0, r_of(w1.db / 2.0, w1.rho_p), rot1, o1);
     let work2 = if internal {
         // ring: its working part runs from the tip (inside) out to ρp2
         let rmax = r_of(w2.db / 2.0, w2.rho_p);
         t2.half
             .iter()
             .filter(|q| q.r * k <= rmax + 1e-9)
-            .map(|q| turn((q.r * k * q.psi.sin(), q.r * k * q.psi.cos()), rot2, o2))
+            .map(|q| turn((-q.r * k * q.psi.sin(), q.r * k * q.psi.cos()), rot2, o2))
             .collect()
     } else {
-        work(t2, 1.0, r_of(w2.db / 2.0, w2.rho_p), rot2, o2)
+        work(t2, -1.0, r_of(w2.db / 2.0, w2.rho_p), rot2, o2)
     };
     // arcs of action on the operating circles
     let sp = w1.db / 2.0 * pair.alpha_w.tan();
@@ -355,4 +355,94 @@ pub fn mesh_dxf(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> DxfDoc {
         y -= 1.8 * h;
     }
     d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tmm_gears::{PairSpec, generate::generate};
+
+    fn dist_to_polyline(p: Pt, pl: &[Pt]) -> f64 {
+        pl.windows(2)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+                let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy).max(1e-300)).clamp(0.0, 1.0);
+                ((a.0 + t * dx - p.0).powi(2) + (a.1 + t * dy - p.1).powi(2)).sqrt()
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Both working profiles pass through the pole, and their tangents there are
+    /// perpendicular to N1N2 (the placement derived in docs/gears.md).
+    #[test]
+    fn working_profiles_meet_at_the_pole() {
+        let cases = [
+            (15u32, 20u32, 0.2, 0.85, Kind::External),
+            (17, 40, 0.0, 0.0, Kind::External),
+            (12, 31, 0.5, -0.1, Kind::External),
+            (20, 60, 0.5, 0.8, Kind::Internal),
+        ];
+        for &(z1, z2, x1, x2, kind) in &cases {
+            let pair = Pair::new(&PairSpec {
+                kind,
+                ..PairSpec::external(z1, z2, 0.005, x1, x2)
+            })
+            .unwrap();
+            let (t1, t2) = crate::gear::profiles(&pair, &crate::gear::input::Origin::Cli).unwrap();
+            let sc = scene(&pair, &t1, &t2);
+            let line = (sc.n2.0 - sc.n1.0, sc.n2.1 - sc.n1.1);
+            for (w, work) in [(1, &sc.work1), (2, &sc.work2)] {
+                assert!(
+                    dist_to_polyline(sc.p, work) < 0.02,
+                    "{z1}/{z2}: wheel {w} misses P by {} first {:?} last {:?} P {:?}",
+                    dist_to_polyline(sc.p, work),
+                    work.first(),
+                    work.last(),
+                    sc.p
+                );
+                let near = work
+                    .windows(2)
+                    .min_by(|a, b| dist_to_polyline(sc.p, a).total_cmp(&dist_to_polyline(sc.p, b)))
+                    .unwrap();
+                let tang = (near[1].0 - near[0].0, near[1].1 - near[0].1);
+                let cos = (tang.0 * line.0 + tang.1 * line.1) / (tang.0.hypot(tang.1) * line.0.hypot(line.1));
+                assert!(cos.abs() < 0.03, "{z1}/{z2} wheel {w}: cos {cos}");
+            }
+            // A and B lie on the tip circles of wheel 2 and wheel 1
+            let d = |a: Pt, b: Pt| (a.0 - b.0).hypot(a.1 - b.1);
+            assert!((d(sc.a, sc.o2) - pair.w2.da / 2.0 * 1e3).abs() < 1e-9);
+            assert!((d(sc.b, sc.o1) - pair.w1.da / 2.0 * 1e3).abs() < 1e-9);
+        }
+    }
+
+    /// The DXF reads back with its layers and one closed outline per wheel.
+    #[test]
+    fn dxf_reads_back_with_layers() {
+        let pair = Pair::new(&PairSpec::external(15, 20, 0.005, 0.2, 0.85)).unwrap();
+        let r = pair.spec.rack;
+        let t1 = generate(15, 0.005, 0.2, &r, pair.w1.da / 2.0, 40).unwrap();
+        let t2 = generate(20, 0.005, 0.85, &r, pair.w2.da / 2.0, 40).unwrap();
+        let text = mesh_dxf(&pair, &t1, &t2).to_text().unwrap();
+        let back = dxf::Drawing::load(&mut text.as_bytes()).unwrap();
+        let layers: Vec<String> = back.layers().map(|l| l.name.clone()).collect();
+        for l in [
+            "WHEEL1",
+            "WHEEL2",
+            "LINE_OF_ACTION",
+            "ACTIVE_LINE",
+            "WORKING_PROFILES",
+            "ARCS_OF_ACTION",
+            "CIRCLE_BASE",
+            "SLIDING",
+            "TABLE",
+        ] {
+            assert!(layers.iter().any(|x| x == l), "{l}");
+        }
+        let outlines = back
+            .entities()
+            .filter(|e| matches!(e.specific, dxf::entities::EntityType::LwPolyline(_)) && e.common.layer.starts_with("WHEEL"))
+            .count();
+        assert_eq!(outlines, 2);
+    }
 }
