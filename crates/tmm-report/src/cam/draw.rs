@@ -324,6 +324,25 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
         c.line((world.0, 0.0), (world.1, 0.0), Style::AXIS);
         c.line((b0.0, world.2), (b0.0, world.3), Style::AXIS);
     }
+    if let Mechanism::TranslatingFlat { r0, .. } = d.mechanism {
+        // Geronimus: the 45° line s + s″ = min(s + s″) tangent to the diagram;
+        // it meets the s axis at that minimum, and O lies ρ_min below it
+        let m = (d.rho_min_convex - r0) * 1e3;
+        if let Some((p, q)) = clip_line(
+            world,
+            Vec2::new(-10.0 * span, m + 10.0 * span),
+            Vec2::new(10.0 * span, m - 10.0 * span),
+        ) {
+            c.line((p.x, p.y), (q.x, q.y), Style::DASHED.colored("#2e7d32"));
+        }
+        c.text_colored(
+            (0.0, m),
+            &format!("  ρmin = {:.1} mm", d.rho_min_convex * 1e3),
+            3.0,
+            Anchor::Start,
+            "#2e7d32",
+        );
+    }
     c.polyline(&curve, Style::THICK.widened(0.5).colored("#1f4e9c"));
     c.line(b0, centre, Style::THIN.colored("#c62828"));
     c.dot(centre, 1.0, "#c62828");
