@@ -106,11 +106,7 @@ fn virtual_power_balances_at_every_position_of_every_example() {
             let mut solved = 0;
             for i in 0..72 {
                 let phi = m.assembly_angle + (i as f64 + 0.37) * 5f64.to_radians();
-                // the triad's Newton continuation is the linkage core's business: skip where it does not assemble
-                match k.solve_at(phi, &mut sol, &mut f) {
-                    Err(ForceError::Kinematics(_)) if name == "triad" => continue,
-                    r => r.unwrap(),
-                }
+                k.solve_at(phi, &mut sol, &mut f).unwrap_or_else(|e| panic!("{name} φ={phi}: {e}"));
                 let w1 = sol.links[m.crank.link].omega;
                 let (p, scale) = power(&m, &loads, &sol, |_, _| (Vec2::ZERO, Vec2::ZERO, 0.0));
                 // M_b·ω1 + Σ F·v + Σ M·ω = 0
@@ -124,7 +120,7 @@ fn virtual_power_balances_at_every_position_of_every_example() {
                 assert!((zh - f.zhukovsky_moment).abs() <= 1e-9 * scale / w1.abs());
                 solved += 1;
             }
-            assert!(solved >= 24, "{name}: only {solved} positions solved");
+            assert_eq!(solved, 72, "{name}: every position solves");
         }
     }
 }
@@ -139,10 +135,7 @@ fn every_group_and_link_free_body_sums_to_zero() {
         let mut f = k.result();
         for i in 0..24 {
             let phi = m.assembly_angle + (i as f64 + 0.21) * 15f64.to_radians();
-            match k.solve_at(phi, &mut sol, &mut f) {
-                Err(ForceError::Kinematics(_)) if name == "triad" => continue,
-                r => r.unwrap(),
-            }
+            k.solve_at(phi, &mut sol, &mut f).unwrap_or_else(|e| panic!("{name} φ={phi}: {e}"));
             let mut sets: Vec<Vec<usize>> = m.groups.iter().map(|g| g.info.link_ids.clone()).collect();
             sets.extend((1..m.link_names.len()).map(|l| vec![l]).filter(|s| s[0] != m.crank.link));
             for s in &sets {
@@ -551,10 +544,8 @@ fn dyad_elimination_agrees_with_the_general_group_solve() {
         let (mut s1, mut f1, mut f2) = (m.solution(), fast.result(), slow.result());
         for i in 0..36 {
             let phi = m.assembly_angle + (i as f64 + 0.5) * 10f64.to_radians();
-            match fast.solve_at(phi, &mut s1, &mut f1) {
-                Err(ForceError::Kinematics(_)) if name == "triad" => continue,
-                r => r.unwrap(),
-            }
+            fast.solve_at(phi, &mut s1, &mut f1)
+                .unwrap_or_else(|e| panic!("{name} φ={phi}: {e}"));
             slow.solve(&s1, &mut f2).unwrap();
             let scale = f2.reactions.iter().map(|r| r.force.hypot()).fold(1.0, f64::max);
             for (a, b) in f1.reactions.iter().zip(&f2.reactions) {

@@ -110,29 +110,30 @@ pub fn seed004() -> Mechanism {
     Mechanism::new(&def).unwrap()
 }
 
-/// Class-III mechanism (examples/class3-triad.toml).
+/// Class-III mechanism (examples/class3-triad.toml): an equilateral base
+/// link B, C, D on links 2 (AB), 4 (CE), 5 (DF).
 pub fn triad() -> Mechanism {
-    let a = -58.67f64.to_radians();
+    let a = 60f64.to_radians();
     let base = LinkDef {
         name: "3".into(),
         points: vec![
             ("B".into(), v(0.0, 0.0)),
-            ("C".into(), v(0.25, 0.0)),
-            ("D".into(), v(0.2693 * a.cos(), 0.2693 * a.sin())),
+            ("C".into(), v(0.3, 0.0)),
+            ("D".into(), v(0.3 * a.cos(), 0.3 * a.sin())),
         ],
-        mass_center: v(0.12, -0.05),
+        mass_center: v(0.15, 0.0866),
     };
     let def = MechanismDef {
-        fixed: vec![("O1".into(), v(0.0, 0.0)), ("E".into(), v(0.7, 0.6)), ("F".into(), v(0.9, 0.0))],
+        fixed: vec![("O1".into(), v(0.0, 0.2)), ("E".into(), v(0.85, 0.05)), ("F".into(), v(0.25, 0.6))],
         links: vec![
-            LinkDef::bar("1", "O1", "A", 0.02),
-            LinkDef::bar("2", "A", "B", 0.4294),
+            LinkDef::bar("1", "O1", "A", 0.01),
+            LinkDef::bar("2", "A", "B", 0.3402),
             base,
-            LinkDef::bar("4", "C", "E", 0.2693),
-            LinkDef::bar("5", "D", "F", 0.2693),
+            LinkDef::bar("4", "C", "E", 0.2583),
+            LinkDef::bar("5", "D", "F", 0.2803),
         ],
         input: input("1", "O1", "A", 10.0),
-        hints: vec![near("C", 0.6, 0.35), near("D", 0.65, 0.1), near("B", 0.4, 0.2)],
+        hints: vec![near("B", 0.35, 0.2134), near("C", 0.65, 0.2134), near("D", 0.5, 0.4732)],
         ..Default::default()
     };
     Mechanism::new(&def).unwrap()

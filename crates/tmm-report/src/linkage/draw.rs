@@ -126,7 +126,7 @@ fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(Vec2, Vec2)> {
     let mut segs = Vec::new();
     for li in 1..m.link_names.len() {
         let mut joints: Vec<Vec2> = Vec::new();
-        for p in &m.pairs {
+        for p in m.pairs.iter().filter(|p| matches!(p, Pair::R { .. })) {
             let (a, b) = p.links();
             if a == li || b == li {
                 let pos = sol.points[p.point()].p;
@@ -175,7 +175,7 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
     let xy = |v: Vec2| (v.x, v.y);
     // trajectories of the joints
     for (k, p) in m.points.iter().enumerate() {
-        if p.link == 0 {
+        if p.link == 0 || !m.pairs.iter().any(|pr| pr.point() == k) {
             continue;
         }
         let tr: Vec<(f64, f64)> = a.rows.iter().map(|r| xy(r.sol.points[k].p)).collect();
@@ -225,7 +225,16 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
         } else {
             c.dot(xy(pos), 0.6, "#000000");
         }
-        c.text((pos.x + 2.0 / scale, pos.y + 2.0 / scale), &p.name, 3.2, Anchor::Start);
+        // a label once per place (a centre of mass at a joint keeps the joint's name)
+        let first_here = m
+            .points
+            .iter()
+            .enumerate()
+            .position(|(j, _)| (sol.points[j].p - pos).hypot() * scale < 1.0)
+            == Some(k);
+        if first_here {
+            c.text((pos.x + 2.0 / scale, pos.y + 2.0 / scale), &p.name, 3.2, Anchor::Start);
+        }
     }
     c.finish()
 }
