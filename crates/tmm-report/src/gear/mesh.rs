@@ -106,12 +106,13 @@ fn scene(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> Scene {
     let sp = w1.db / 2.0 * pair.alpha_w.tan();
     let (d0, d1) = ((sp - pair.s_start) / (w1.db / 2.0), (pair.s_end - sp) / (w1.db / 2.0));
     let (e0, e1) = ((sp - pair.s_start) / (w2.db / 2.0), (pair.s_end - sp) / (w2.db / 2.0));
-    let mut arcs = vec![(o1, rw1, PI / 2.0 - d0, PI / 2.0 + d1)];
+    // wheel 1 turns clockwise while the contact runs from A to B
+    let mut arcs = vec![(o1, rw1, PI / 2.0 - d1, PI / 2.0 + d0)];
     let rw2 = w2.dw / 2.0 * k;
     if internal {
-        arcs.push((o2, rw2, PI / 2.0 - e0, PI / 2.0 + e1));
+        arcs.push((o2, rw2, PI / 2.0 - e1, PI / 2.0 + e0));
     } else {
-        arcs.push((o2, rw2, -PI / 2.0 - e1, -PI / 2.0 + e0));
+        arcs.push((o2, rw2, -PI / 2.0 - e0, -PI / 2.0 + e1));
     }
     Scene {
         o1,
@@ -413,6 +414,62 @@ mod tests {
             let d = |a: Pt, b: Pt| (a.0 - b.0).hypot(a.1 - b.1);
             assert!((d(sc.a, sc.o2) - pair.w2.da / 2.0 * 1e3).abs() < 1e-9);
             assert!((d(sc.b, sc.o1) - pair.w1.da / 2.0 * 1e3).abs() < 1e-9);
+        }
+    }
+
+    /// The arcs of action: turning wheel 1 to the start of its arc brings its
+    /// working profile through A, to the end through B; each arc over the
+    /// angular pitch is εα (seed 003 §17 measures εα this way off the drawing).
+    #[test]
+    fn arcs_of_action() {
+        let cases = [
+            (15u32, 20u32, 0.2, 0.85, Kind::External),
+            (17, 40, 0.0, 0.0, Kind::External),
+            (20, 60, 0.5, 0.8, Kind::Internal),
+        ];
+        for &(z1, z2, x1, x2, kind) in &cases {
+            let pair = Pair::new(&PairSpec {
+                kind,
+                ..PairSpec::external(z1, z2, 0.005, x1, x2)
+            })
+            .unwrap();
+            let (t1, t2) = crate::gear::profiles(&pair, &crate::gear::input::Origin::Cli).unwrap();
+            let sc = scene(&pair, &t1, &t2);
+            let (c1, r1, a0, a1) = sc.arcs[0];
+            assert_eq!(c1, sc.o1);
+            let tau1 = 2.0 * PI / z1 as f64;
+            assert!(((a1 - a0) / tau1 - pair.eps_alpha).abs() < 1e-12);
+            let (_, _, b0, b1) = sc.arcs[1];
+            assert!(((b1 - b0) / (2.0 * PI / z2 as f64) - pair.eps_alpha).abs() < 1e-12);
+            assert!(a0 < PI / 2.0 && PI / 2.0 < a1 && (r1 - pair.w1.dw / 2.0 * 1e3).abs() < 1e-9);
+            // the arc's ends, reached from the pole position
+            let full: Vec<Pt> = t1
+                .half
+                .iter()
+                .map(|q| turn((q.r * 1e3 * q.psi.sin(), q.r * 1e3 * q.psi.cos()), sc.rot1, sc.o1))
+                .collect();
+            let at = |turn_by: f64| -> Vec<Pt> { full.iter().map(|&q| turn(q, turn_by, sc.o1)).collect() };
+            // wheel 1 turns clockwise while the contact runs from A to B
+            assert!(dist_to_polyline(sc.a, &at(a1 - PI / 2.0)) < 0.02, "{z1}/{z2}: wheel 1 misses A");
+            assert!(dist_to_polyline(sc.b, &at(a0 - PI / 2.0)) < 0.02, "{z1}/{z2}: wheel 1 misses B");
+            // wheel 2 the other way (a ring the same way)
+            let ring = kind == Kind::Internal;
+            let sgn = if ring { -1.0 } else { 1.0 };
+            let full2: Vec<Pt> = t2
+                .half
+                .iter()
+                .map(|q| turn((sgn * q.r * 1e3 * q.psi.sin(), q.r * 1e3 * q.psi.cos()), sc.rot2, sc.o2))
+                .collect();
+            let at2 = |turn_by: f64| -> Vec<Pt> {
+                full2
+                    .iter()
+                    .map(|&q| turn((q.0 - sc.o2.0, q.1 - sc.o2.1), turn_by, sc.o2))
+                    .collect()
+            };
+            let mid = if ring { PI / 2.0 } else { -PI / 2.0 };
+            let (ta, tb) = if ring { (b1 - mid, b0 - mid) } else { (b0 - mid, b1 - mid) };
+            assert!(dist_to_polyline(sc.a, &at2(ta)) < 0.02, "{z1}/{z2}: wheel 2 misses A");
+            assert!(dist_to_polyline(sc.b, &at2(tb)) < 0.02, "{z1}/{z2}: wheel 2 misses B");
         }
     }
 
