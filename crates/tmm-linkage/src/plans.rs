@@ -99,7 +99,9 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
         };
         let x = &sol.points[base];
         for &j in &joints {
-            if j == base {
+            // relative vectors join joints; other points (centres of mass)
+            // are found on the plan by similarity and get only their absolute vector
+            if j == base || !m.pairs.iter().any(|pr| pr.point() == j) {
                 continue;
             }
             let y = &sol.points[j];
@@ -126,7 +128,8 @@ pub fn plans(m: &Mechanism, sol: &Solution) -> Plans {
             let (vg, ag) = g.kin_at(y.p);
             let vrel = y.v - vg;
             let cor = perp(vrel) * (2.0 * g.omega);
-            let (ns, ng) = (&m.link_names[slider], &m.link_names[guide]);
+            // the frame is link 0 in the course's labels
+            let (ns, ng) = (&m.link_names[slider], if guide == 0 { "0" } else { m.link_names[guide].as_str() });
             let yn = name(point);
             if guide != 0 {
                 out.velocity.push(pv(format!("V_{yn}{ng}"), Vec2::ZERO, vg, VectorKind::Absolute));

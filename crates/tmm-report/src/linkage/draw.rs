@@ -285,8 +285,14 @@ fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> Stri
             Style::THIN.widened(0.35).colored(color(p.kind)),
             3.0,
         );
-        let mid = (p.from + p.to) * 0.5;
-        c.text_colored((mid.x, mid.y), &p.label, 2.4, Anchor::Start, color(p.kind));
+        if p.kind == VectorKind::Absolute {
+            // the plan point, named as the course names it: b, c, s2…
+            let name = p.label.split_once('_').map_or(p.label.as_str(), |x| x.1).to_lowercase();
+            c.text((p.to.x, p.to.y), &name, 3.2, Anchor::Start);
+        } else {
+            let mid = (p.from + p.to) * 0.5;
+            c.text_colored((mid.x, mid.y), &p.label, 2.4, Anchor::Start, color(p.kind));
+        }
     }
     c.dot((0.0, 0.0), 0.8, "#000000");
     c.text((0.0, 0.0), pole, 3.5, Anchor::End);
