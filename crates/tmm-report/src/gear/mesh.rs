@@ -247,8 +247,22 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> String {
         y += 6.0;
         c.text_paper((290.0, y), &row, 3.0, Anchor::Start, "#000");
     }
+    let legend: [(&str, Style); 6] = [
+        ("active line of action AB", Style::THICK.colored("#c00000").widened(0.6)),
+        ("working profile, wheel 1", Style::THICK.colored("#d000d0").widened(0.8)),
+        ("working profile, wheel 2", Style::THICK.colored("#ff8c00").widened(0.8)),
+        ("arcs of action (operating circles)", Style::THICK.colored("#008000").widened(0.9)),
+        ("operating circles", Style::DASHED.colored("#b03000")),
+        ("base circles", Style::THIN.colored("#1f5fbf")),
+    ];
+    y += 4.0;
+    for (name, st) in legend {
+        y += 5.0;
+        c.line_paper((290.0, y - 1.0), (298.0, y - 1.0), st);
+        c.text_paper((300.0, y), name, 2.8, Anchor::Start, "#000");
+    }
     let (th1, th2) = sliding_curves(pair, 81);
-    let (bx, by, bw, bh) = (292.0, 140.0, 118.0, 130.0);
+    let (bx, by, bw, bh) = (292.0, 170.0, 118.0, 105.0);
     let (s0, s1) = (pair.s_start * 1e3, pair.s_end * 1e3);
     let mapx = |s: f64| bx + (s - s0) / (s1 - s0).max(1e-9) * bw;
     let mapy = |v: f64| by + (1.0 - v) / 5.0 * bh;

@@ -1,7 +1,8 @@
 //! The `[gear]` section of a task file and the `tmm gear` commands: reading the
 //! input ([`input`]), computing the pair ([`solve`]), tables ([`text`]), JSON
 //! ([`json`]), the meshing drawing ([`mesh`]), the blocking contour plot
-//! ([`contour_plot`]) and the generated profiles ([`profile`]).
+//! ([`contour_plot`]), the sliding diagram ([`sliding_plot`]) and the
+//! generated profiles ([`profile`]).
 
 // The shared `Error` carries the task text for located diagnostics; it is large by design.
 #![allow(clippy::result_large_err)]
@@ -11,6 +12,7 @@ pub mod input;
 pub mod json;
 pub mod mesh;
 pub mod profile;
+pub mod sliding_plot;
 pub mod solve;
 pub mod text;
 
@@ -21,9 +23,9 @@ use tmm_gears::generate::{ToothProfile, generate, ring_profile};
 use tmm_gears::{Kind, Pair};
 
 use crate::output::{ensure_dir, write_file};
-use crate::svg::{Series, plot};
 use crate::{Error, SectionOutput, TaskSource};
 use input::{Field, Origin, Raw, gear_error};
+pub use sliding_plot::sliding_svg;
 
 /// Points per cutter part when generating a profile.
 pub const PROFILE_SAMPLES: usize = 60;
@@ -50,33 +52,6 @@ pub fn profiles(pair: &Pair, o: &Origin<'_>) -> Result<(ToothProfile, ToothProfi
         }
     };
     Ok((t1, t2))
-}
-
-/// The specific-sliding diagram over the active line (ϑ clipped to [−4, 1]).
-pub fn sliding_svg(pair: &Pair) -> String {
-    let tab = pair.sliding_table(101);
-    let clip = |v: f64| if v.is_finite() { v.clamp(-4.0, 1.0) } else { f64::NAN };
-    let a: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta1))).collect();
-    let b: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta2))).collect();
-    plot(
-        "Specific sliding along the active line",
-        "distance from N1, mm",
-        "ϑ",
-        &[
-            Series {
-                name: "ϑ1 (wheel 1)",
-                points: &a,
-                color: "#c00000",
-            },
-            Series {
-                name: "ϑ2 (wheel 2)",
-                points: &b,
-                color: "#1f5fbf",
-            },
-        ],
-        200.0,
-        130.0,
-    )
 }
 
 /// Run the `[gear]` section of a task, writing files under `out/gear/`.
