@@ -157,3 +157,54 @@ fn internal_pair_basics() {
     assert!((p.eps_alpha - p.eps_alpha_by_length()).abs() < 1e-12);
     assert!(p.eps_alpha > 1.5);
 }
+
+/// Bad data gives typed errors, never a panic or a non-finite result.
+#[test]
+fn bad_data_errors() {
+    use tmm_gears::GearError;
+    let e = |s: PairSpec| Pair::new(&s).unwrap_err();
+    // z below the smallest that can be cut (8 for the 20° rack)
+    assert!(matches!(
+        e(PairSpec::external(7, 20, 0.002, 0.0, 0.0)),
+        GearError::TooFewTeeth { wheel: 1, min: 8, .. }
+    ));
+    assert!(matches!(
+        e(PairSpec::external(20, 5, 0.002, 0.0, 0.0)),
+        GearError::TooFewTeeth { wheel: 2, .. }
+    ));
+    // m ≤ 0, non-finite
+    assert!(matches!(e(PairSpec::external(20, 30, 0.0, 0.0, 0.0)), GearError::Module(_)));
+    assert!(matches!(e(PairSpec::external(20, 30, -1.0, 0.0, 0.0)), GearError::Module(_)));
+    assert!(matches!(
+        e(PairSpec::external(20, 30, 0.002, f64::NAN, 0.0)),
+        GearError::Shift { wheel: 1 }
+    ));
+    // da ≤ df: Δy of a huge shift sum eats the tooth; check the cause with the formulas
+    let err = e(PairSpec::external(20, 20, 0.001, 5.0, 5.0));
+    let GearError::TipBelowRoot { da, df, .. } = err else {
+        panic!("{err:?}")
+    };
+    assert!(da <= df);
+    // a centre distance no shift sum can reach: aw ≤ a cos α
+    let r = BasicRack::default();
+    let a = 0.0875;
+    assert!(matches!(
+        tmm_gears::centre::shift_sum_for_aw(15, 20, 0.005, a * r.alpha.cos(), &r, Kind::External),
+        Err(GearError::CentreDistance { .. })
+    ));
+    assert!(tmm_gears::centre::shift_sum_for_aw(15, 20, 0.005, a * r.alpha.cos() * 1.0001, &r, Kind::External).is_ok());
+    // a basic rack out of range names its parameter
+    let bad_rack = PairSpec {
+        rack: BasicRack { hl: 5.0, ..r },
+        ..PairSpec::external(20, 30, 0.002, 0.0, 0.0)
+    };
+    assert!(matches!(e(bad_rack), GearError::Rack { param: "hl", .. }));
+    // no panic over a wide sweep of shifts; every Ok pair is finite
+    for i in -30..=30 {
+        for j in -30..=30 {
+            if let Ok(p) = Pair::new(&PairSpec::external(9, 40, 0.003, i as f64 * 0.1, j as f64 * 0.1)) {
+                assert!(p.eps_alpha.is_finite() && p.w1.sa.is_finite() && p.w2.rho_p.is_finite());
+            }
+        }
+    }
+}
