@@ -147,7 +147,11 @@ pub struct UnitError {
 /// ```
 pub fn from_number(x: f64, dim: Dim) -> Result<f64, UnitError> {
     if !x.is_finite() {
-        return Err(UnitError { input: x.to_string(), dim, reason: "the number is not finite".into() });
+        return Err(UnitError {
+            input: x.to_string(),
+            dim,
+            reason: "the number is not finite".into(),
+        });
     }
     Ok(if dim == Dim::Angle { x.to_radians() } else { x })
 }
@@ -164,7 +168,11 @@ pub fn from_number(x: f64, dim: Dim) -> Result<f64, UnitError> {
 /// assert!(parse("12 kg", Dim::Length).is_err());
 /// ```
 pub fn parse(text: &str, dim: Dim) -> Result<f64, UnitError> {
-    let err = |reason: String| UnitError { input: text.to_string(), dim, reason };
+    let err = |reason: String| UnitError {
+        input: text.to_string(),
+        dim,
+        reason,
+    };
     let t = text.trim();
     if t.is_empty() {
         return Err(err("the value is empty".into()));
@@ -176,7 +184,10 @@ pub fn parse(text: &str, dim: Dim) -> Result<f64, UnitError> {
             "" => from_number(num, dim),
             "%" => Ok(num / 100.0),
             u if u.starts_with('/') => {
-                let den: f64 = u[1..].replace(',', ".").parse().map_err(|_| err(format!("`{u}` is not a fraction")))?;
+                let den: f64 = u[1..]
+                    .replace(',', ".")
+                    .parse()
+                    .map_err(|_| err(format!("`{u}` is not a fraction")))?;
                 if den == 0.0 {
                     return Err(err("division by zero".into()));
                 }
@@ -338,7 +349,10 @@ fn factor(dim: Dim, u: &str) -> Option<f64> {
             let (f, l) = if let Some((f, l)) = u.split_once('*') {
                 (f, l)
             } else {
-                let idx = u.char_indices().find(|&(i, _)| i > 0 && force(&u[..i]).is_some() && len(&u[i..]).is_some())?.0;
+                let idx = u
+                    .char_indices()
+                    .find(|&(i, _)| i > 0 && force(&u[..i]).is_some() && len(&u[i..]).is_some())?
+                    .0;
                 (&u[..idx], &u[idx..])
             };
             Some(force(f)? * len(l)?)
@@ -395,7 +409,14 @@ mod tests {
 
     #[test]
     fn malformed() {
-        for (t, d) in [("", Dim::Length), ("mm", Dim::Length), ("12 furlongs", Dim::Length), ("3 kg", Dim::Force), ("1/0", Dim::Ratio), ("1e999 m", Dim::Length)] {
+        for (t, d) in [
+            ("", Dim::Length),
+            ("mm", Dim::Length),
+            ("12 furlongs", Dim::Length),
+            ("3 kg", Dim::Force),
+            ("1/0", Dim::Ratio),
+            ("1e999 m", Dim::Length),
+        ] {
             let e = parse(t, d).unwrap_err();
             assert!(e.to_string().contains("accepted units"), "{e}");
         }

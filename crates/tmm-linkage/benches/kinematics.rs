@@ -85,7 +85,10 @@ fn revolution(m: &Mechanism, bencher: divan::Bencher) {
     let mut sol = m.solution();
     bencher.counter(divan::counter::ItemsCount::new(N)).bench_local(|| {
         let mut acc = 0.0;
-        m.sweep(black_box(0.0), TAU / N as f64, N, &mut sol, |_, s| acc += s.points[s.points.len() - 1].a.x).unwrap();
+        m.sweep(black_box(0.0), TAU / N as f64, N, &mut sol, |_, s| {
+            acc += s.points[s.points.len() - 1].a.x
+        })
+        .unwrap();
         black_box(acc)
     });
 }

@@ -38,5 +38,9 @@ pub fn ensure_dir(dir: &Path) -> Result<(), Error> {
 /// turns NaN into `null`, so call this on the numbers before building the
 /// value, or use [`num`].
 pub fn num(x: f64) -> serde_json::Value {
-    if x.is_finite() { serde_json::Value::from(x) } else { serde_json::Value::Null }
+    if x.is_finite() {
+        serde_json::Value::from(x)
+    } else {
+        serde_json::Value::Null
+    }
 }

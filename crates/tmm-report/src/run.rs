@@ -15,14 +15,21 @@ pub const DEFAULT_TASK_NAME: &str = "<embedded default task>";
 type Runner = fn(&TaskSource, &Path) -> Result<Option<SectionOutput>, Error>;
 
 /// The sections in the order of the course project.
-const RUNNERS: &[Runner] = &[linkage::run_section, forces::run_section, gear::run_section, planetary::run_section, cam::run_section];
+const RUNNERS: &[Runner] = &[
+    linkage::run_section,
+    forces::run_section,
+    gear::run_section,
+    planetary::run_section,
+    cam::run_section,
+];
 
 /// Run every section the task has; write `report.json` (all sections' JSON
 /// under their names, `"units": "SI"`) and each section's files under `out`.
 pub fn run_task(task: &TaskSource, out: &Path) -> Result<Vec<SectionOutput>, Error> {
     let table = task.check_sections()?;
     if !table.keys().any(|k| k != "title") {
-        return Err(Error::input(&task.name, "the task file has no section to run").with_help(format!("add one of {}", crate::task::SECTIONS[1..].join(", "))));
+        return Err(Error::input(&task.name, "the task file has no section to run")
+            .with_help(format!("add one of {}", crate::task::SECTIONS[1..].join(", "))));
     }
     let mut outs = Vec::new();
     for run in RUNNERS {

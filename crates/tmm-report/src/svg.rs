@@ -22,13 +22,33 @@ pub struct Style {
 
 impl Style {
     /// Thick solid black line (contour lines, ГОСТ 2.303 "сплошная основная").
-    pub const THICK: Style = Style { width: 0.7, color: "#000000", dash: None, fill: None };
+    pub const THICK: Style = Style {
+        width: 0.7,
+        color: "#000000",
+        dash: None,
+        fill: None,
+    };
     /// Thin solid line (construction, dimension lines).
-    pub const THIN: Style = Style { width: 0.25, color: "#000000", dash: None, fill: None };
+    pub const THIN: Style = Style {
+        width: 0.25,
+        color: "#000000",
+        dash: None,
+        fill: None,
+    };
     /// Thin dash-dot line (centre lines, pitch circles).
-    pub const AXIS: Style = Style { width: 0.25, color: "#000000", dash: Some((6.0, 1.5)), fill: None };
+    pub const AXIS: Style = Style {
+        width: 0.25,
+        color: "#000000",
+        dash: Some((6.0, 1.5)),
+        fill: None,
+    };
     /// Thin dashed line (hidden or auxiliary).
-    pub const DASHED: Style = Style { width: 0.25, color: "#000000", dash: Some((2.0, 1.5)), fill: None };
+    pub const DASHED: Style = Style {
+        width: 0.25,
+        color: "#000000",
+        dash: Some((2.0, 1.5)),
+        fill: None,
+    };
 
     /// The same style in another colour.
     pub const fn colored(self, color: &'static str) -> Style {
@@ -70,7 +90,14 @@ impl Canvas {
     /// A blank paper of the given size in mm, world = paper (1 unit = 1 mm, y up,
     /// origin at the bottom-left corner).
     pub fn new(width_mm: f64, height_mm: f64) -> Self {
-        Canvas { width: width_mm, height: height_mm, scale: 1.0, ox: 0.0, oy: 0.0, body: String::new() }
+        Canvas {
+            width: width_mm,
+            height: height_mm,
+            scale: 1.0,
+            ox: 0.0,
+            oy: 0.0,
+            body: String::new(),
+        }
     }
 
     /// Map the world box `[xmin, xmax] × [ymin, ymax]` into the paper box
@@ -106,7 +133,12 @@ impl Canvas {
     }
 
     fn style_attr(s: &Style) -> String {
-        let mut a = format!("stroke=\"{}\" stroke-width=\"{:.3}\" fill=\"{}\"", s.color, s.width, s.fill.unwrap_or("none"));
+        let mut a = format!(
+            "stroke=\"{}\" stroke-width=\"{:.3}\" fill=\"{}\"",
+            s.color,
+            s.width,
+            s.fill.unwrap_or("none")
+        );
         if let Some((d, g)) = s.dash {
             let _ = write!(a, " stroke-dasharray=\"{d:.2} {g:.2}\"");
         }
@@ -120,7 +152,11 @@ impl Canvas {
         }
         let (x1, y1) = self.to_paper(a.0, a.1);
         let (x2, y2) = self.to_paper(b.0, b.1);
-        let _ = writeln!(self.body, "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {} stroke-linecap=\"round\"/>", Self::style_attr(&s));
+        let _ = writeln!(
+            self.body,
+            "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {} stroke-linecap=\"round\"/>",
+            Self::style_attr(&s)
+        );
     }
 
     /// An open polyline through world points (non-finite points are skipped).
@@ -143,7 +179,12 @@ impl Canvas {
             return;
         }
         let tag = if closed { "polygon" } else { "polyline" };
-        let _ = writeln!(self.body, "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>", d.trim_end(), Self::style_attr(&s));
+        let _ = writeln!(
+            self.body,
+            "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>",
+            d.trim_end(),
+            Self::style_attr(&s)
+        );
     }
 
     /// A circle of world radius `r`.
@@ -152,7 +193,12 @@ impl Canvas {
             return;
         }
         let (x, y) = self.to_paper(c.0, c.1);
-        let _ = writeln!(self.body, "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{:.3}\" {}/>", (r * self.scale).abs(), Self::style_attr(&s));
+        let _ = writeln!(
+            self.body,
+            "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{:.3}\" {}/>",
+            (r * self.scale).abs(),
+            Self::style_attr(&s)
+        );
     }
 
     /// A dot of paper radius `r_mm` (a joint, a point of a plan).
@@ -161,7 +207,10 @@ impl Canvas {
             return;
         }
         let (x, y) = self.to_paper(c.0, c.1);
-        let _ = writeln!(self.body, "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{r_mm:.3}\" fill=\"{fill}\" stroke=\"#000\" stroke-width=\"0.25\"/>");
+        let _ = writeln!(
+            self.body,
+            "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{r_mm:.3}\" fill=\"{fill}\" stroke=\"#000\" stroke-width=\"0.25\"/>"
+        );
     }
 
     /// A revolute joint: a small open circle of paper radius `r_mm`.
@@ -186,7 +235,14 @@ impl Canvas {
         );
         for i in 0..5 {
             let hx = x - 1.3 * h + i as f64 * 0.65 * h;
-            let _ = writeln!(self.body, "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" stroke=\"#000\" stroke-width=\"0.25\"/>", hx + 0.6 * h, y + 1.6 * h, hx, y + 2.3 * h);
+            let _ = writeln!(
+                self.body,
+                "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" stroke=\"#000\" stroke-width=\"0.25\"/>",
+                hx + 0.6 * h,
+                y + 1.6 * h,
+                hx,
+                y + 2.3 * h
+            );
         }
         self.joint(c, r_mm);
     }
@@ -212,7 +268,11 @@ impl Canvas {
         let (x2, y2) = self.to_paper(b.0, b.1);
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = (dx * dx + dy * dy).sqrt();
-        let _ = writeln!(self.body, "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {}/>", Self::style_attr(&Style { fill: None, ..s }));
+        let _ = writeln!(
+            self.body,
+            "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {}/>",
+            Self::style_attr(&Style { fill: None, ..s })
+        );
         if len < 1e-9 {
             return;
         }
@@ -263,7 +323,15 @@ impl Canvas {
 
     /// A line on paper coordinates (mm from the top-left corner).
     pub fn line_paper(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
-        let _ = writeln!(self.body, "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" {}/>", a.0, a.1, b.0, b.1, Self::style_attr(&s));
+        let _ = writeln!(
+            self.body,
+            "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" {}/>",
+            a.0,
+            a.1,
+            b.0,
+            b.1,
+            Self::style_attr(&s)
+        );
     }
 
     /// Open a group (`<g>`) with an id, e.g. a layer; close it with [`Canvas::end_group`].
@@ -293,7 +361,10 @@ fn finite(xs: &[f64]) -> bool {
 
 /// Escape text for XML.
 pub fn escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// One curve of a plot: a name, points and a colour.
@@ -341,7 +412,12 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
     let map = |x: f64, y: f64| (left + (x - xt0) * sx, height - (bottom + (y - yt0) * sy));
     c.text_paper((width / 2.0, 7.0), title, 4.0, Anchor::Middle, "#000");
     // grid and ticks
-    let grid = Style { width: 0.1, color: "#bbbbbb", dash: None, fill: None };
+    let grid = Style {
+        width: 0.1,
+        color: "#bbbbbb",
+        dash: None,
+        fill: None,
+    };
     let mut y = yt0;
     while y <= yt1 + 0.5 * ystep {
         let (x0p, yp) = map(xt0, y);
@@ -385,10 +461,24 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
             let _ = write!(d, "{}{px:.3},{py:.3} ", if pen { "L" } else { "M" });
             pen = true;
         }
-        let _ = writeln!(c.body, "<path d=\"{}\" stroke=\"{}\" stroke-width=\"0.45\" fill=\"none\"/>", d.trim_end(), s.color);
+        let _ = writeln!(
+            c.body,
+            "<path d=\"{}\" stroke=\"{}\" stroke-width=\"0.45\" fill=\"none\"/>",
+            d.trim_end(),
+            s.color
+        );
         if series.len() > 1 || !s.name.is_empty() {
             let ly = 14.0 + 4.5 * k as f64;
-            c.line_paper((width - 48.0, ly - 1.0), (width - 42.0, ly - 1.0), Style { width: 0.6, color: s.color, dash: None, fill: None });
+            c.line_paper(
+                (width - 48.0, ly - 1.0),
+                (width - 42.0, ly - 1.0),
+                Style {
+                    width: 0.6,
+                    color: s.color,
+                    dash: None,
+                    fill: None,
+                },
+            );
             c.text_paper((width - 40.0, ly), s.name, 2.8, Anchor::Start, "#000");
         }
     }

@@ -27,7 +27,10 @@ pub const SECTIONS: &[&str] = &["title", "linkage", "forces", "gear", "planetary
 impl TaskSource {
     /// A task from its name and text.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
-        TaskSource { name: name.into(), text: text.into() }
+        TaskSource {
+            name: name.into(),
+            text: text.into(),
+        }
     }
 
     /// 1-based line and column of a byte offset.
@@ -66,7 +69,9 @@ impl TaskSource {
         for key in table.keys() {
             if !SECTIONS.contains(&key.as_str()) {
                 let pos = self.find_key(key).unwrap_or(0..0);
-                return Err(Error::at(self, pos, key, "unknown section").with_help(format!("a task file has the sections {}", SECTIONS.join(", "))));
+                return Err(
+                    Error::at(self, pos, key, "unknown section").with_help(format!("a task file has the sections {}", SECTIONS.join(", ")))
+                );
             }
         }
         Ok(table)
@@ -74,7 +79,10 @@ impl TaskSource {
 
     fn find_key(&self, key: &str) -> Option<Range<usize>> {
         let needle = format!("[{key}");
-        self.text.find(&needle).map(|p| p + 1..p + 1 + key.len()).or_else(|| self.text.find(key).map(|p| p..p + key.len()))
+        self.text
+            .find(&needle)
+            .map(|p| p + 1..p + 1 + key.len())
+            .or_else(|| self.text.find(key).map(|p| p..p + key.len()))
     }
 }
 

@@ -2,7 +2,6 @@
 //! section of a task file): motion law, smallest size, profile, drawings.
 
 // The shared `Error` is large by design (it carries the task file for located messages).
-#![allow(clippy::result_large_err)]
 
 use std::path::PathBuf;
 

@@ -6,7 +6,8 @@ use tmm_report::{Error, TaskSource};
 
 /// Read a task file; a missing or unreadable file is bad input (exit code 2).
 pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::input(&path.display().to_string(), format!("cannot read the task file: {e}")))?;
+    let text =
+        std::fs::read_to_string(path).map_err(|e| Error::input(&path.display().to_string(), format!("cannot read the task file: {e}")))?;
     Ok(TaskSource::new(path.display().to_string(), text))
 }
 

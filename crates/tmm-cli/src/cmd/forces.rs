@@ -3,8 +3,6 @@
 //! group, the balancing torque and force, Zhukovsky's lever, the strength of
 //! a link.
 
-#![allow(clippy::result_large_err)]
-
 use std::path::PathBuf;
 
 use tmm_geom::units::Dim;

@@ -4,7 +4,6 @@
 
 // The shared `Error` carries the task text for located diagnostics, and the
 // command is parsed once: size lints do not apply here.
-#![allow(clippy::result_large_err, clippy::large_enum_variant)]
 
 use std::path::PathBuf;
 
@@ -19,6 +18,8 @@ use super::common::print_json;
 
 /// The gear subcommands.
 #[derive(clap::Subcommand)]
+// parsed once per run: the size of the variants does not matter
+#[allow(clippy::large_enum_variant)]
 pub enum GearCommand {
     /// One gear pair: geometry (GOST 16532-70), quality checks, specific sliding, meshing drawing, generated profiles.
     /// Give x1 and x2; or --aw to get the shift sum and split it; or neither to have both chosen.

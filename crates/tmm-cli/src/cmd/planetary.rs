@@ -4,7 +4,6 @@
 
 // The edge's one error type (`crate::Error`, with the task source for
 // located messages) is large by design; `run_section` must return it.
-#![allow(clippy::result_large_err)]
 
 use std::path::PathBuf;
 

@@ -12,7 +12,6 @@
 
 // The shared `Error` carries the source text for located messages; it is
 // large by design and returned only on the cold path.
-#![allow(clippy::result_large_err)]
 
 pub mod cad;
 pub mod draw;

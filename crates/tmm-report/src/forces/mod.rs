@@ -5,7 +5,6 @@
 //! JSON document and SVG drawings.
 
 // the shared `Error` carries the task file for located messages
-#![allow(clippy::result_large_err)]
 
 mod draw;
 mod json;

@@ -5,7 +5,6 @@
 //! generated profiles ([`profile`]).
 
 // The shared `Error` carries the task text for located diagnostics; it is large by design.
-#![allow(clippy::result_large_err)]
 
 pub mod contour_plot;
 pub mod input;

@@ -13,7 +13,6 @@
 
 // The edge's one error type (`crate::Error`, with the task source for
 // located messages) is large by design; `run_section` must return it.
-#![allow(clippy::result_large_err)]
 
 pub mod analysis;
 pub mod drawing;
