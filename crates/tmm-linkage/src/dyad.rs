@@ -22,7 +22,7 @@
 
 use tmm_geom::{Vec2, perp};
 
-use crate::state::{LinkState, PointState, conj, inverse2, rot, solve2};
+use crate::state::{LinkState, PointState, conj, inverse2, rot, solve2, unrotate};
 
 /// Why a dyad failed at a position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -252,7 +252,7 @@ impl DyadGeom {
     /// Solve positions, velocities and accelerations of the dyad's two links
     /// from the known links, on branch `sign` (±1). Writes `links[l1]`,
     /// `links[l2]`.
-    #[inline]
+    #[inline(always)]
     // `!(x >= tol)` is meant: it is also true for NaN
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
     pub fn solve(&self, sign: f64, links: &mut [LinkState]) -> Result<(), DyadFail> {
@@ -297,8 +297,8 @@ impl DyadGeom {
                 let (w1, w2) = (r1.dot(rv), r2.dot(rv));
                 let ra = pc.a - pa.a + ab * (w1 * w1) - cb * (w2 * w2);
                 let (e1, e2) = (r1.dot(ra), r2.dot(ra));
-                let u1 = rot(ab * inv.0, conj(dir1));
-                let u2 = rot(cb * inv.1, conj(dir2));
+                let u1 = unrotate(ab * inv.0, dir1);
+                let u2 = unrotate(cb * inv.1, dir2);
                 links[l1] = LinkState::from_point(&pa, a1, u1, w1, e1);
                 links[l2] = LinkState::from_point(&pc, c2, u2, w2, e2);
                 Ok(())

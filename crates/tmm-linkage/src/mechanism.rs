@@ -621,11 +621,11 @@ impl Mechanism {
     }
 
     /// Solve at crank angle `phi` whose direction `(cos φ, sin φ)` is `dir`.
-    #[inline]
+    #[inline(always)]
     fn solve_dir(&self, phi: f64, dir: Vec2, sol: &mut Solution) -> Result<(), LinkageError> {
         sol.phi = phi;
         let c = &self.crank;
-        let u = rot(dir, conj(c.dir_local));
+        let u = crate::state::unrotate(dir, c.dir_local);
         let piv = PointState {
             p: c.pivot,
             v: Vec2::ZERO,

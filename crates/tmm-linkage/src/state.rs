@@ -22,6 +22,13 @@ pub fn rot(u: Vec2, l: Vec2) -> Vec2 {
     Vec2::new(u.x * l.x - u.y * l.y, u.x * l.y + u.y * l.x)
 }
 
+/// Undo the local direction `d` of a link's reference line: `v·conj(d)`,
+/// free when `d` is the local x-axis (every bar).
+#[inline(always)]
+pub fn unrotate(v: Vec2, d: Vec2) -> Vec2 {
+    if d.y == 0.0 && d.x == 1.0 { v } else { rot(v, conj(d)) }
+}
+
 /// Complex conjugate: the inverse rotation of a unit vector.
 #[inline(always)]
 pub fn conj(u: Vec2) -> Vec2 {
@@ -93,7 +100,8 @@ impl LinkState {
     /// Full state of a local point.
     #[inline(always)]
     pub fn point(&self, l: Vec2) -> PointState {
-        let r = rot(self.u, l);
+        // most points lie on the link's axis (bars, centres of mass)
+        let r = if l.y == 0.0 { self.u * l.x } else { rot(self.u, l) };
         let pr = perp(r);
         PointState {
             p: self.o + r,
