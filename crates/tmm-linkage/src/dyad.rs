@@ -22,7 +22,7 @@
 
 use tmm_geom::{Vec2, perp};
 
-use crate::state::{LinkState, PointState, conj, inverse2, rot, solve2, unrotate};
+use crate::state::{LinkState, PointState, conj, rot, solve2, unrotate};
 
 /// Why a dyad failed at a position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -274,25 +274,36 @@ impl DyadGeom {
                 let pc = c.state(links);
                 let d = pc.p - pa.p;
                 let dd = d.x * d.x + d.y * d.y;
-                let dist = dd.sqrt();
-                let inv_d = 1.0 / dist;
-                let x = 0.5 * (inv.2 + dd) * inv_d;
-                let h2 = len1 * len1 - x * x;
-                // one comparison also catches dist = 0 (x infinite) and NaN
-                if !(h2 >= -1e-12 * len1 * len1) {
+                // B − A = α·d + σ·β·d⊥ with α = x/|d|, β = h/|d|: one division
+                // and one square root, independent of each other's results
+                // (x = (l1² − l2² + |d|²)/(2|d|), h² = l1² − x²)
+                let inv_dd = 1.0 / dd;
+                let alpha = 0.5 * (inv.2 + dd) * inv_dd;
+                let l1sq = len1 * len1;
+                let beta2 = l1sq * inv_dd - alpha * alpha;
+                // one comparison also catches |d| = 0 (∞ − ∞) and NaN
+                if !(beta2 >= -1e-12 * l1sq * inv_dd) {
                     return Err(DyadFail::Circles {
-                        d: dist,
+                        d: dd.sqrt(),
                         r1: len1,
                         r2: len2,
                     });
                 }
-                let h = h2.max(0.0).sqrt();
-                let e = d * inv_d;
-                let b = pa.p + e * x + perp(e) * (sign * h);
-                let ab = b - pa.p;
+                let beta2 = beta2.max(0.0);
+                let beta = beta2.sqrt();
+                let inv_b2 = 1.0 / beta2;
+                let ab = d * alpha + perp(d) * (sign * beta);
+                let b = pa.p + ab;
                 let cb = b - pc.p;
-                // ω1·(AB)⊥ − ω2·(CB)⊥ = V_C − V_A; the same matrix for ε1, ε2
-                let (r1, r2) = inverse2(perp(ab), -perp(cb), 1e-10 * len1 * len2).ok_or(DyadFail::Singular)?;
+                // ω1·(AB)⊥ − ω2·(CB)⊥ = V_C − V_A; its determinant is
+                // −cross(AB, CB) = −σ·β·|d|², so 1/det needs no division of its own
+                if !(beta * dd > 1e-10 * len1 * len2) {
+                    return Err(DyadFail::Singular);
+                }
+                let inv_det = -sign * beta * inv_b2 * inv_dd;
+                let (k1, k2) = (perp(ab), -perp(cb));
+                let r1 = Vec2::new(k2.y, -k2.x) * inv_det;
+                let r2 = Vec2::new(-k1.y, k1.x) * inv_det;
                 let rv = pc.v - pa.v;
                 let (w1, w2) = (r1.dot(rv), r2.dot(rv));
                 let ra = pc.a - pa.a + ab * (w1 * w1) - cb * (w2 * w2);
