@@ -139,7 +139,8 @@ pub fn solve_dyad(
     if det.abs() <= 1e-12 * size || !det.is_finite() {
         return false;
     }
-    let lm = [(u * s - qq * v) / det, (p * v - u * r) / det];
+    let id = 1.0 / det;
+    let lm = [(u * s - qq * v) * id, (p * v - u * r) * id];
     let le1 = outer(a10, a11, m10, m11, b1, lm);
     let le2 = outer(a20, a21, m20, m21, b2, lm);
     for (k, l) in [le1, lm, le2].into_iter().enumerate() {
@@ -204,8 +205,8 @@ fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm
     ];
     let (g00, g01, g11) = (dot3(a0, a0), dot3(a0, a1), dot3(a1, a1));
     let (h0, h1) = (dot3(a0, rr), dot3(a1, rr));
-    let d = g00 * g11 - g01 * g01;
-    [(h0 * g11 - g01 * h1) / d, (g00 * h1 - g01 * h0) / d]
+    let id = 1.0 / (g00 * g11 - g01 * g01);
+    [(h0 * g11 - g01 * h1) * id, (g00 * h1 - g01 * h0) * id]
 }
 
 #[inline(always)]

@@ -265,15 +265,27 @@ impl<'m> Kinetostatics<'m> {
                 out.q[i] = out.acc[l];
             }
             let prs = &self.gpairs[g];
-            let solver = if self.dyad[g] && !self.general { solve_dyad } else { solve_group };
-            if !solver(
-                prs,
-                links,
-                &sol.links,
-                &out.q[..links.len()],
-                &mut self.work,
-                &mut out.pf[..prs.len()],
-            ) {
+            // a direct call, so that the dyad's elimination is inlined
+            let solved = if self.dyad[g] && !self.general {
+                solve_dyad(
+                    prs,
+                    links,
+                    &sol.links,
+                    &out.q[..links.len()],
+                    &mut self.work,
+                    &mut out.pf[..prs.len()],
+                )
+            } else {
+                solve_group(
+                    prs,
+                    links,
+                    &sol.links,
+                    &out.q[..links.len()],
+                    &mut self.work,
+                    &mut out.pf[..prs.len()],
+                )
+            };
+            if !solved {
                 return Err(ForceError::Singular {
                     phi_deg: phi.to_degrees(),
                     group: grp.label(),
