@@ -18,95 +18,88 @@ use crate::svg::{Anchor, Canvas, Series, Style, nice_ticks, plot};
 pub fn write_all(l: &Loaded, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
     write_file(&dir.join("positions.svg"), &positions(l, a), files)?;
     let w = l.mech.crank.omega.abs();
-    let deg: Vec<f64> = a.diagram.iter().map(|d| d[0].to_degrees()).collect();
     let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
     let (su, vu) = if lin { ("s, m", "m") } else { ("s, rad", "rad") };
-    let series = |k: usize, f: f64| -> Vec<(f64, f64)> { deg.iter().zip(&a.diagram).map(|(x, d)| (*x, d[k] * f)).collect() };
-    let s = series(1, 1.0);
-    let ds = series(2, 1.0);
-    let dds = series(3, 1.0);
-    write_file(
-        &dir.join("diagram-s.svg"),
-        &plot(
-            "Output displacement s(φ)",
-            "crank rotation from the start φ, °",
-            su,
-            &[Series {
-                name: "s",
-                points: &s,
-                color: "#1f4e9c",
-            }],
-            200.0,
-            120.0,
-        ),
-        files,
-    )?;
-    write_file(
-        &dir.join("diagram-ds.svg"),
-        &plot(
-            "Velocity analog ds/dφ",
-            "φ, °",
-            &format!("ds/dφ, {vu}"),
-            &[Series {
-                name: "ds/dφ",
-                points: &ds,
-                color: "#c0392b",
-            }],
-            200.0,
-            120.0,
-        ),
-        files,
-    )?;
-    write_file(
-        &dir.join("diagram-dds.svg"),
-        &plot(
-            "Acceleration analog d²s/dφ²",
-            "φ, °",
-            &format!("d²s/dφ², {vu}"),
-            &[Series {
-                name: "d²s/dφ²",
-                points: &dds,
-                color: "#27ae60",
-            }],
-            200.0,
-            120.0,
-        ),
-        files,
-    )?;
-    let t: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[2] * w)).collect();
-    let ta: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0] / w, d[3] * w * w)).collect();
-    write_file(
-        &dir.join("diagram-v.svg"),
-        &plot(
-            "Output velocity v(t)",
-            "t, s",
-            if lin { "v, m/s" } else { "ω, rad/s" },
-            &[Series {
-                name: "v",
-                points: &t,
-                color: "#c0392b",
-            }],
-            200.0,
-            120.0,
-        ),
-        files,
-    )?;
-    write_file(
-        &dir.join("diagram-a.svg"),
-        &plot(
-            "Output acceleration a(t)",
-            "t, s",
-            if lin { "a, m/s²" } else { "ε, rad/s²" },
-            &[Series {
-                name: "a",
-                points: &ta,
-                color: "#27ae60",
-            }],
-            200.0,
-            120.0,
-        ),
-        files,
-    )?;
+    let (ds_label, dds_label) = (format!("ds/dφ, {vu}"), format!("d²s/dφ², {vu}"));
+    /// One kinematic diagram: file, title, axis labels, curve, colour, and
+    /// how a sample (ψ, s, ds/dφ, d²s/dφ²) maps to a point given |ω1|.
+    struct Diagram<'a> {
+        file: &'a str,
+        title: &'a str,
+        x_label: &'a str,
+        y_label: &'a str,
+        name: &'a str,
+        color: &'static str,
+        x: fn(&[f64; 4], f64) -> f64,
+        y: fn(&[f64; 4], f64) -> f64,
+    }
+    let by_angle = |d: &[f64; 4], _: f64| d[0].to_degrees();
+    let by_time = |d: &[f64; 4], w: f64| d[0] / w;
+    let diagrams = [
+        Diagram {
+            file: "diagram-s.svg",
+            title: "Output displacement s(φ)",
+            x_label: "crank rotation from the start φ, °",
+            y_label: su,
+            name: "s",
+            color: "#1f4e9c",
+            x: by_angle,
+            y: |d, _| d[1],
+        },
+        Diagram {
+            file: "diagram-ds.svg",
+            title: "Velocity analog ds/dφ",
+            x_label: "φ, °",
+            y_label: &ds_label,
+            name: "ds/dφ",
+            color: "#c0392b",
+            x: by_angle,
+            y: |d, _| d[2],
+        },
+        Diagram {
+            file: "diagram-dds.svg",
+            title: "Acceleration analog d²s/dφ²",
+            x_label: "φ, °",
+            y_label: &dds_label,
+            name: "d²s/dφ²",
+            color: "#27ae60",
+            x: by_angle,
+            y: |d, _| d[3],
+        },
+        Diagram {
+            file: "diagram-v.svg",
+            title: "Output velocity v(t)",
+            x_label: "t, s",
+            y_label: if lin { "v, m/s" } else { "ω, rad/s" },
+            name: "v",
+            color: "#c0392b",
+            x: by_time,
+            y: |d, w| d[2] * w,
+        },
+        Diagram {
+            file: "diagram-a.svg",
+            title: "Output acceleration a(t)",
+            x_label: "t, s",
+            y_label: if lin { "a, m/s²" } else { "ε, rad/s²" },
+            name: "a",
+            color: "#27ae60",
+            x: by_time,
+            y: |d, w| d[3] * w * w,
+        },
+    ];
+    for g in diagrams {
+        let points: Vec<(f64, f64)> = a.diagram.iter().map(|d| ((g.x)(d, w), (g.y)(d, w))).collect();
+        let series = [Series {
+            name: g.name,
+            points: &points,
+            color: g.color,
+        }];
+        write_file(
+            &dir.join(g.file),
+            &plot(g.title, g.x_label, g.y_label, &series, 200.0, 120.0),
+            files,
+        )?;
+    }
     write_file(
         &dir.join("velocity-plan.svg"),
         &plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi),
