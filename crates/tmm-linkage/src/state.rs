@@ -138,22 +138,6 @@ impl LinkState {
     }
 }
 
-/// The inverse of the 2×2 matrix with columns `c1`, `c2`, for solving it with
-/// several right-hand sides (velocities, then accelerations): returns the rows
-/// of the inverse, or `None` when `|det| ≤ tol`.
-#[inline(always)]
-// `!(x > tol)` is meant: it is also true for NaN
-#[allow(clippy::neg_cmp_op_on_partial_ord)]
-pub fn inverse2(c1: Vec2, c2: Vec2, tol: f64) -> Option<(Vec2, Vec2)> {
-    let det = c1.x * c2.y - c1.y * c2.x;
-    // false for NaN too
-    if !(det.abs() > tol) {
-        return None;
-    }
-    let inv = 1.0 / det;
-    Some((Vec2::new(c2.y * inv, -c2.x * inv), Vec2::new(-c1.y * inv, c1.x * inv)))
-}
-
 /// Solve the 2×2 system `x·c1 + y·c2 = r`; `None` when `|det|` is below
 /// `tol` (the columns are parallel).
 #[inline(always)]
