@@ -8,60 +8,13 @@ use std::f64::consts::TAU;
 use divan::black_box;
 use tmm_geom::Vec2;
 use tmm_linkage::forces::{Action, Kinetostatics, Law, Loads, Resistance};
-use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, SliderDef, Solution};
+use tmm_linkage::{Mechanism, Solution};
+
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 fn main() {
     divan::main();
-}
-
-fn sixbar() -> Mechanism {
-    let rocker = LinkDef {
-        name: "3".into(),
-        points: vec![
-            ("E".into(), Vec2::ZERO),
-            ("B".into(), Vec2::new(0.6, 0.0)),
-            ("C".into(), Vec2::new(-0.6, 0.0)),
-        ],
-        mass_center: Vec2::ZERO,
-    };
-    Mechanism::new(&MechanismDef {
-        fixed: vec![("O".into(), Vec2::new(-1.25, 0.0)), ("E".into(), Vec2::ZERO)],
-        links: vec![
-            LinkDef::bar("1", "O", "A", 0.27),
-            LinkDef::bar("2", "A", "B", 1.25),
-            rocker,
-            LinkDef::bar("4", "C", "D", 0.65),
-            LinkDef::block("5", "D"),
-        ],
-        sliders: vec![SliderDef {
-            slider: "5".into(),
-            point: "D".into(),
-            guide_link: "frame".into(),
-            through: Vec2::new(0.0, -0.2),
-            angle: 0.0,
-            angle_on_slider: 0.0,
-        }],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega: 12.0,
-            epsilon: 0.0,
-        }),
-        hints: vec![
-            AssemblyHint {
-                point: "B".into(),
-                kind: HintKind::Above("O".into(), "E".into()),
-            },
-            AssemblyHint {
-                point: "D".into(),
-                kind: HintKind::Near(Vec2::new(0.5, -0.2)),
-            },
-        ],
-        assembly_angle: 80f64.to_radians(),
-        ..Default::default()
-    })
-    .unwrap()
 }
 
 /// The seed-003 loads: 30 kg/m, J = m·l²/12, gravity, 3000 N·sin(π·s/H).
@@ -87,7 +40,7 @@ const N: usize = 3600;
 
 #[divan::bench]
 fn reactions_3600_positions(bencher: divan::Bencher) {
-    let m = sixbar();
+    let m = common::seed003();
     let mut k = Kinetostatics::new(&m, loads(&m)).unwrap();
     let mut sol = m.solution();
     let sols: Vec<Solution> = (0..N)
@@ -109,7 +62,7 @@ fn reactions_3600_positions(bencher: divan::Bencher) {
 
 #[divan::bench]
 fn kinematics_and_reactions_3600_positions(bencher: divan::Bencher) {
-    let m = sixbar();
+    let m = common::seed003();
     let mut k = Kinetostatics::new(&m, loads(&m)).unwrap();
     let mut sol = m.solution();
     let mut f = k.result();

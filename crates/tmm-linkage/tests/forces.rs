@@ -3,7 +3,7 @@
 //! solved by hand, seed 001 sheet 3 recomputed from its own data with
 //! kinematics by finite differences, and the beam diagrams' closure and M' = Q.
 
-#[path = "forces_common.rs"]
+#[path = "common/mod.rs"]
 mod common;
 
 use common::*;

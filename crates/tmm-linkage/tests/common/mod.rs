@@ -1,4 +1,5 @@
-//! Mechanisms of the examples, built in Rust, for the kinetostatics tests.
+//! Mechanisms of the examples, built in Rust, shared by the tests and the
+//! benchmarks (included with `#[path]`).
 #![allow(dead_code)]
 
 use tmm_geom::Vec2;
