@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod cmd;
+mod write;
 
 /// tmm: the Theory of Mechanisms and Machines (ТММ) course project and everyday
 /// mechanism calculations — lever mechanisms, forces, gears, planetary trains, cams.

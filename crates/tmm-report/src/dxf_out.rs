@@ -106,15 +106,61 @@ impl DxfDoc {
         }
     }
 
-    /// Write the drawing to a file.
-    pub fn save(&self, path: &std::path::Path) -> Result<(), crate::Error> {
-        self.drawing.save_file(path).map_err(|e| crate::Error::io(path, e))
+    /// The drawing as DXF text, byte-identical for the same drawing: the
+    /// date stamps and GUIDs the `dxf` crate fills from the clock and a
+    /// random source are replaced by fixed values (see [`deterministic`]).
+    pub fn to_bytes(&self) -> Result<Vec<u8>, crate::Error> {
+        let mut buf = Vec::new();
+        self.drawing
+            .save(&mut buf)
+            .map_err(|e| crate::Error::Io(format!("cannot encode a DXF drawing: {e}")))?;
+        Ok(deterministic(&String::from_utf8_lossy(&buf)).into_bytes())
     }
 
     /// The drawing as DXF text (for tests).
     pub fn to_text(&self) -> Result<String, crate::Error> {
-        let mut buf = Vec::new();
-        self.drawing.save(&mut buf).map_err(|e| crate::Error::Io(e.to_string()))?;
-        Ok(String::from_utf8_lossy(&buf).into_owned())
+        self.to_bytes().map(|b| String::from_utf8_lossy(&b).into_owned())
     }
+}
+
+/// Header variables that carry the time of writing or a random GUID.
+const STAMPS: [&str; 8] = [
+    "$TDCREATE",
+    "$TDUCREATE",
+    "$TDUPDATE",
+    "$TDUUPDATE",
+    "$TDINDWG",
+    "$TDUSRTIMER",
+    "$FINGERPRINTGUID",
+    "$VERSIONGUID",
+];
+
+/// Replace the values of the time and GUID header variables by fixed ones:
+/// dates by the Julian date 2451545.0 (1 January 2000, 12:00), durations by
+/// zero, GUIDs by a nil-like constant. A DXF file is a sequence of
+/// (group code, value) line pairs; a header variable is the pair `9`/name
+/// followed by one value pair.
+fn deterministic(text: &str) -> String {
+    let lines: Vec<&str> = text.split_inclusive('\n').collect();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < lines.len() {
+        out.push_str(lines[i]);
+        let name = lines[i].trim();
+        if STAMPS.contains(&name) && i + 2 < lines.len() {
+            let nl = if lines[i + 2].ends_with("\r\n") { "\r\n" } else { "\n" };
+            out.push_str(lines[i + 1]);
+            let value = match name {
+                "$TDINDWG" | "$TDUSRTIMER" => "0.0",
+                "$FINGERPRINTGUID" | "$VERSIONGUID" => "{00000000-0000-0000-0000-000000000000}",
+                _ => "2451545.0",
+            };
+            out.push_str(value);
+            out.push_str(nl);
+            i += 3;
+            continue;
+        }
+        i += 1;
+    }
+    out
 }

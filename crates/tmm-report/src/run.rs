@@ -1,9 +1,8 @@
 //! `tmm run`: every section of a task file, in the order of the course
-//! project, into one output folder (`./tmm-out/` by default).
+//! project, computed in memory. Every section is validated and computed
+//! before anything is handed out, so a bad section leaves no partial run.
 
-use std::path::Path;
-
-use crate::output::write_file;
+use crate::output::{Documents, to_json_text};
 use crate::{Error, SectionOutput, TaskSource, cam, forces, gear, linkage, planetary};
 
 /// The embedded default course project (`tmm run` with no file).
@@ -12,7 +11,7 @@ pub const DEFAULT_TASK: &str = include_str!("../tasks/default.toml");
 /// The name shown for the embedded default task in messages.
 pub const DEFAULT_TASK_NAME: &str = "<embedded default task>";
 
-type Runner = fn(&TaskSource, &Path) -> Result<Option<SectionOutput>, Error>;
+type Runner = fn(&TaskSource) -> Result<Option<SectionOutput>, Error>;
 
 /// The sections in the order of the course project.
 const RUNNERS: &[Runner] = &[
@@ -23,18 +22,38 @@ const RUNNERS: &[Runner] = &[
     cam::run_section,
 ];
 
-/// Run every section the task has; write `report.json` (all sections' JSON
-/// under their names, `"units": "SI"`) and each section's files under `out`.
-pub fn run_task(task: &TaskSource, out: &Path) -> Result<Vec<SectionOutput>, Error> {
+/// Everything a run produces, in memory.
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// Each section's tables, JSON and documents, in course order.
+    pub sections: Vec<SectionOutput>,
+    /// The combined JSON report: `"units": "SI"` first, the task's title,
+    /// then each section under its name.
+    pub report: serde_json::Value,
+    /// Every file of the run (`report.json` first, then each section's),
+    /// paths relative to the output folder.
+    pub docs: Documents,
+}
+
+/// Run every section the task has, in memory.
+///
+/// ```
+/// use tmm_report::run::{run_task, DEFAULT_TASK};
+/// let run = run_task(&tmm_report::TaskSource::new("t.toml", DEFAULT_TASK)).unwrap();
+/// assert_eq!(run.report.as_object().unwrap().keys().next().unwrap(), "units");
+/// assert!(run.docs.get("report.json").is_some());
+/// assert!(run.docs.get("linkage/positions.svg").is_some());
+/// ```
+pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
     let table = task.check_sections()?;
     if !table.keys().any(|k| k != "title") {
         return Err(Error::input(&task.name, "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[1..].join(", "))));
     }
-    let mut outs = Vec::new();
+    let mut sections = Vec::new();
     for run in RUNNERS {
-        if let Some(o) = run(task, out)? {
-            outs.push(o);
+        if let Some(o) = run(task)? {
+            sections.push(o);
         }
     }
     let mut doc = serde_json::Map::new();
@@ -42,11 +61,14 @@ pub fn run_task(task: &TaskSource, out: &Path) -> Result<Vec<SectionOutput>, Err
     if let Some(toml::Value::String(t)) = table.get("title") {
         doc.insert("title".into(), t.clone().into());
     }
-    for o in &outs {
+    for o in &sections {
         doc.insert(o.section.into(), o.json.clone());
     }
-    let mut files = Vec::new();
-    let text = serde_json::to_string_pretty(&serde_json::Value::Object(doc)).map_err(|e| Error::Io(e.to_string()))?;
-    write_file(&out.join("report.json"), &text, &mut files)?;
-    Ok(outs)
+    let report = serde_json::Value::Object(doc);
+    let mut docs = Documents::new();
+    docs.add_text("report.json", to_json_text(&report))?;
+    for o in &sections {
+        docs.append(o.docs.clone());
+    }
+    Ok(Run { sections, report, docs })
 }

@@ -403,8 +403,10 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
     if (xmax - xmin) < 1e-300 {
         xmax = xmin + 1.0;
     }
-    let (yt0, yt1, ystep) = nice_ticks(ymin, ymax, 6);
-    let (xt0, xt1, xstep) = nice_ticks(xmin, xmax, 8);
+    let yt = Ticks::new(ymin, ymax, 6);
+    let xt = Ticks::new(xmin, xmax, 8);
+    let (yt0, yt1) = (yt.value(yt.first), yt.value(yt.last));
+    let (xt0, xt1) = (xt.value(xt.first), xt.value(xt.last));
     let (left, bottom, pw, ph) = (22.0, 16.0, width - 30.0, height - 30.0);
     // independent scales on x and y
     let sx = pw / (xt1 - xt0);
@@ -418,21 +420,19 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
         dash: None,
         fill: None,
     };
-    let mut y = yt0;
-    while y <= yt1 + 0.5 * ystep {
+    for i in yt.first..=yt.last {
+        let y = yt.value(i);
         let (x0p, yp) = map(xt0, y);
         let (x1p, _) = map(xt1, y);
         c.line_paper((x0p, yp), (x1p, yp), grid);
-        c.text_paper((x0p - 1.5, yp + 1.0), &fmt_tick(y, ystep), 2.6, Anchor::End, "#000");
-        y += ystep;
+        c.text_paper((x0p - 1.5, yp + 1.0), &yt.label(i), 2.6, Anchor::End, "#000");
     }
-    let mut x = xt0;
-    while x <= xt1 + 0.5 * xstep {
+    for i in xt.first..=xt.last {
+        let x = xt.value(i);
         let (xp, y0p) = map(x, yt0);
         let (_, y1p) = map(x, yt1);
         c.line_paper((xp, y0p), (xp, y1p), grid);
-        c.text_paper((xp, y0p + 4.0), &fmt_tick(x, xstep), 2.6, Anchor::Middle, "#000");
-        x += xstep;
+        c.text_paper((xp, y0p + 4.0), &xt.label(i), 2.6, Anchor::Middle, "#000");
     }
     // axes through zero
     let (ax0, ay0) = map(xt0, 0.0f64.clamp(yt0, yt1));
@@ -485,38 +485,213 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
     c.finish()
 }
 
-/// Round tick marks covering `[lo, hi]` with about `n` steps: (first, last, step).
+/// Round tick marks covering `[lo, hi]` with about `n` steps: (first, last,
+/// step), the step being 1, 2 or 5 × 10ⁿ.
 ///
 /// ```
 /// let (a, b, s) = tmm_report::svg::nice_ticks(0.0, 9.3, 5);
 /// assert_eq!((a, b, s), (0.0, 10.0, 2.0));
 /// ```
 pub fn nice_ticks(lo: f64, hi: f64, n: usize) -> (f64, f64, f64) {
-    let span = (hi - lo).abs().max(1e-300);
-    let raw = span / n.max(1) as f64;
-    let mag = 10f64.powf(raw.log10().floor());
-    let norm = raw / mag;
-    let step = mag
-        * if norm <= 1.0 {
-            1.0
-        } else if norm <= 2.0 {
-            2.0
-        } else if norm <= 2.5 {
-            2.5
-        } else if norm <= 5.0 {
-            5.0
-        } else {
-            10.0
-        };
-    ((lo / step).floor() * step, (hi / step).ceil() * step, step)
+    let t = Ticks::new(lo, hi, n);
+    (t.value(t.first), t.value(t.last), t.step())
 }
 
-fn fmt_tick(v: f64, step: f64) -> String {
-    let v = if v.abs() < 1e-9 * step { 0.0 } else { v };
-    let decimals = (-step.log10().floor()).max(0.0) as usize;
-    if v.abs() >= 1e5 || (v != 0.0 && v.abs() < 1e-3) {
-        format!("{v:.2e}")
-    } else {
-        format!("{v:.decimals$}")
+/// Tick marks at whole multiples of a 1-2-5 step: the tick with index `i`
+/// stands at `i·k·10^e`, so values are never accumulated and every label is
+/// printed exactly from integers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ticks {
+    /// Index of the first tick.
+    pub first: i64,
+    /// Index of the last tick.
+    pub last: i64,
+    /// The step's leading digit: 1, 2 or 5.
+    pub k: i64,
+    /// The step's power of ten.
+    pub e: i32,
+}
+
+impl Ticks {
+    /// About `n` steps covering `[lo, hi]`.
+    ///
+    /// ```
+    /// let t = tmm_report::svg::Ticks::new(0.0, 7.5, 3);
+    /// assert_eq!(t.step(), 2.0);
+    /// let t = tmm_report::svg::Ticks::new(-0.3, 0.8, 5);
+    /// assert_eq!((t.label(t.first), t.label(t.last), t.step()), ("-0.4".to_string(), "0.8".to_string(), 0.2));
+    /// ```
+    pub fn new(lo: f64, hi: f64, n: usize) -> Self {
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        let span = if (hi - lo).is_finite() && hi - lo > 0.0 {
+            hi - lo
+        } else {
+            lo.abs().max(1.0)
+        };
+        let raw = span / n.max(1) as f64;
+        let mut e = raw.log10().floor() as i32;
+        let norm = raw / 10f64.powi(e);
+        // the 1-2-5 step nearest to the raw one on a log scale
+        let k = if norm < 2f64.sqrt() {
+            1
+        } else if norm < 10f64.sqrt() {
+            2
+        } else if norm < 50f64.sqrt() {
+            5
+        } else {
+            e += 1;
+            1
+        };
+        let step = k as f64 * 10f64.powi(e);
+        let first = (lo / step + 1e-9).floor() as i64;
+        let last = (hi / step - 1e-9).ceil() as i64;
+        Ticks { first, last, k, e }
+    }
+
+    /// The step between ticks.
+    pub fn step(&self) -> f64 {
+        self.k as f64 * 10f64.powi(self.e)
+    }
+
+    /// The value of tick `i`.
+    pub fn value(&self, i: i64) -> f64 {
+        (i * self.k) as f64 * 10f64.powi(self.e)
+    }
+
+    /// The label of tick `i`, exact: `2.5`, `0.75`, `-40`, `1.2e6`.
+    pub fn label(&self, i: i64) -> String {
+        let n = i * self.k;
+        if n == 0 {
+            return "0".into();
+        }
+        let digits = n.unsigned_abs().to_string();
+        let sign = if n < 0 { "-" } else { "" };
+        // the value is digits × 10^e; its decimal exponent:
+        let exp10 = self.e + digits.len() as i32 - 1;
+        if !(-4..6).contains(&exp10) {
+            let (head, tail) = digits.split_at(1);
+            let tail = tail.trim_end_matches('0');
+            let dot = if tail.is_empty() { "" } else { "." };
+            return format!("{sign}{head}{dot}{tail}e{exp10}");
+        }
+        if self.e >= 0 {
+            format!("{sign}{digits}{}", "0".repeat(self.e as usize))
+        } else {
+            let dec = (-self.e) as usize;
+            let padded = format!("{digits:0>width$}", width = dec + 1);
+            let (int, frac) = padded.split_at(padded.len() - dec);
+            let frac = frac.trim_end_matches('0');
+            if frac.is_empty() {
+                format!("{sign}{int}")
+            } else {
+                format!("{sign}{int}.{frac}")
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tick_tests {
+    use super::*;
+
+    /// Every label parses back to its tick's value, and the ticks cover the range.
+    #[test]
+    fn labels_are_exact_and_cover() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..5000 {
+            let scale = 10f64.powf(rnd() * 16.0 - 8.0);
+            let lo = (rnd() - 0.5) * scale;
+            let hi = lo + rnd() * scale + 1e-300;
+            let n = 2 + (rnd() * 10.0) as usize;
+            let t = Ticks::new(lo, hi, n);
+            let slack = 1e-9 * t.step();
+            assert!(t.value(t.first) <= lo + slack && t.value(t.last) >= hi - slack, "{lo} {hi} {t:?}");
+            assert!((t.last - t.first) as usize <= 3 * n + 2, "{lo} {hi} {n} {t:?}");
+            for i in t.first..=t.last {
+                let v: f64 = t.label(i).parse().unwrap();
+                assert!(
+                    (v - t.value(i)).abs() <= 1e-12 * t.step().max(v.abs()),
+                    "{} vs {}",
+                    t.label(i),
+                    t.value(i)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_reported_cases() {
+        let t = Ticks {
+            first: 0,
+            last: 4,
+            k: 25,
+            e: -1,
+        };
+        assert_eq!(t.label(1), "2.5");
+        assert_eq!(t.label(3), "7.5");
+        let t = Ticks {
+            first: 0,
+            last: 4,
+            k: 25,
+            e: -2,
+        };
+        assert_eq!((t.label(1), t.label(3)), ("0.25".into(), "0.75".into()));
+        let t = Ticks::new(0.0, 0.8, 4);
+        assert_eq!(t.step(), 0.2);
+        assert_eq!(t.label(3), "0.6");
+        assert_eq!(Ticks::new(0.0, 3e6, 3).label(1), "1e6");
+        assert_eq!(Ticks::new(-2e-5, 0.0, 2).label(-1), "-1e-5");
+    }
+
+    /// Read the x-axis labels of a plot back against their positions: the
+    /// label's value and its place on the paper lie on one straight line.
+    #[test]
+    fn plot_labels_read_back_against_positions() {
+        let pts: Vec<(f64, f64)> = (0..=100).map(|k| (k as f64 * 0.075, (k as f64 * 0.1).sin() * 0.75)).collect();
+        let svg = plot(
+            "t",
+            "x",
+            "y",
+            &[Series {
+                name: "s",
+                points: &pts,
+                color: "#000",
+            }],
+            200.0,
+            120.0,
+        );
+        // x labels: anchored middle, font-size 2.60
+        let mut xs: Vec<(f64, f64)> = Vec::new();
+        let mut ys: Vec<(f64, f64)> = Vec::new();
+        for line in svg.lines().filter(|l| l.starts_with("<text") && l.contains("font-size=\"2.60\"")) {
+            let attr = |name: &str| -> f64 {
+                let i = line.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+                line[i..i + line[i..].find('"').unwrap()].parse().unwrap()
+            };
+            let label: f64 = line[line.find('>').unwrap() + 1..line.find("</text>").unwrap()].parse().unwrap();
+            if line.contains("text-anchor=\"middle\"") {
+                xs.push((attr("x"), label));
+            } else {
+                ys.push((attr("y"), label));
+            }
+        }
+        for set in [&xs, &ys] {
+            assert!(set.len() >= 4, "{svg}");
+            let (p0, v0) = set[0];
+            let (p1, v1) = set[set.len() - 1];
+            for &(p, v) in set.iter() {
+                let expect = v0 + (p - p0) * (v1 - v0) / (p1 - p0);
+                assert!(
+                    (expect - v).abs() < 0.002 * (v1 - v0).abs(),
+                    "label {v} at {p}: the axis says {expect}"
+                );
+            }
+        }
     }
 }

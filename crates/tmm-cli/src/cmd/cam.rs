@@ -5,12 +5,13 @@
 
 use std::path::PathBuf;
 
+use tmm_report::cam as cam_report;
 use tmm_report::cam::input::{self, Field, Raw};
-use tmm_report::cam::{self as cam_report, Targets};
+use tmm_report::output::Documents;
 use tmm_report::task::RawQty;
 use tmm_report::{Error, TaskSource};
 
-use super::common::{print_json, read_task};
+use super::common::{checked, json_text, print, read_task, write_dir, write_named, written};
 
 /// Arguments of `tmm cam`.
 #[derive(clap::Args)]
@@ -133,11 +134,6 @@ impl Args {
 
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
-    let targets = Targets {
-        svg_dir: a.svg.clone(),
-        dxf: a.dxf.clone(),
-        csv: a.csv.clone(),
-    };
     let (task, design) = match &a.file {
         Some(path) => {
             if let Some(opt) = a.any_task_option() {
@@ -166,16 +162,29 @@ pub fn run(a: &Args) -> Result<(), Error> {
             (task, d)
         }
     };
-    let files = cam_report::write_outputs(&task, &design, &targets)?;
-    if a.json {
-        return print_json(&cam_report::json::document(&task, &design));
+    let out = if a.json {
+        json_text(&cam_report::json::document(&task, &design))?
+    } else {
+        checked(cam_report::text::tables(&task, &design, a.step))?
+    };
+    let mut single: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    if let Some(p) = &a.dxf {
+        single.push((p.clone(), cam_report::profile_dxf(&design)?));
     }
-    print!("{}", cam_report::text::tables(&task, &design, a.step));
-    if !files.is_empty() {
-        println!("\nFiles written:");
-        for f in files {
-            println!("  {}", f.display());
+    if let Some(p) = &a.csv {
+        single.push((p.clone(), cam_report::profile_csv(&design)?.into_bytes()));
+    }
+    let svgs = match &a.svg {
+        Some(_) => {
+            let mut docs = Documents::new();
+            cam_report::drawings(&task, &design, "", &mut docs)?;
+            Some(docs)
         }
+        None => None,
+    };
+    let mut files = write_named(&single)?;
+    if let (Some(dir), Some(docs)) = (&a.svg, &svgs) {
+        files.extend(write_dir(dir, docs)?);
     }
-    Ok(())
+    print(&if a.json { out } else { out + &written(&files) })
 }

@@ -1,8 +1,12 @@
-//! Helpers shared by the subcommands: reading a task file, printing JSON.
+//! Helpers shared by the subcommands: reading a task file, printing JSON and
+//! text, writing the requested files and saying what was written.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
+use tmm_report::output::{Document, Documents, check_finite, to_json_text};
 use tmm_report::{Error, TaskSource};
+
+use crate::write::{self, Existing};
 
 /// Read a task file; a missing or unreadable file is bad input (exit code 2).
 pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
@@ -11,9 +15,47 @@ pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
     Ok(TaskSource::new(path.display().to_string(), text))
 }
 
-/// Print one JSON document on stdout.
-pub fn print_json(v: &serde_json::Value) -> Result<(), Error> {
-    let s = serde_json::to_string_pretty(v).map_err(|e| Error::Io(e.to_string()))?;
-    println!("{s}");
-    Ok(())
+/// A JSON document as the text printed on stdout, checked for non-finite
+/// numbers before anything is written.
+pub fn json_text(v: &serde_json::Value) -> Result<String, Error> {
+    let mut s = to_json_text(v);
+    s.push('\n');
+    checked(s)
+}
+
+/// Text for stdout, checked for non-finite numbers before anything is written.
+pub fn checked(text: String) -> Result<String, Error> {
+    check_finite(&Document::text("standard output", text.as_str()))?;
+    Ok(text)
+}
+
+/// Print text on stdout (a closed pipe ends quietly).
+pub fn print(text: &str) -> Result<(), Error> {
+    write::print(text)
+}
+
+/// Write the drawings of a subcommand's `--svg DIR` into `dir`: a new, empty
+/// or tmm-made folder is replaced as a whole; into any other folder the files
+/// are added one by one, deleting nothing.
+pub fn write_dir(dir: &Path, docs: &Documents) -> Result<Vec<PathBuf>, Error> {
+    write::write_folder(dir, docs, Existing::AddFiles)
+}
+
+/// Write single files named on the command line (`--svg mesh.svg`), all or none.
+pub fn write_named(files: &[(PathBuf, Vec<u8>)]) -> Result<Vec<PathBuf>, Error> {
+    let refs: Vec<(PathBuf, &[u8])> = files.iter().map(|(p, b)| (p.clone(), b.as_slice())).collect();
+    write::write_files(&refs)?;
+    Ok(files.iter().map(|f| f.0.clone()).collect())
+}
+
+/// The one wording of "these files were written", for every subcommand.
+pub fn written(files: &[PathBuf]) -> String {
+    if files.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from("\nFiles written:\n");
+    for f in files {
+        s.push_str(&format!("  {}\n", f.display()));
+    }
+    s
 }

@@ -7,10 +7,10 @@ use std::path::PathBuf;
 
 use tmm_geom::units::Dim;
 use tmm_report::Error;
-use tmm_report::forces::{analyse, json_document, load, text_report, write_svgs};
+use tmm_report::forces::{analyse, drawings, json_document, load, text_report};
 use tmm_report::task::arg_qty;
 
-use super::common::{print_json, read_task};
+use super::common::{checked, json_text, print, read_task, write_dir, written};
 
 /// Kinetostatics (force analysis) of the `[linkage]` mechanism under the
 /// loads of the `[forces]` section of a task file.
@@ -43,16 +43,14 @@ pub fn run(a: &Args) -> Result<(), Error> {
         None => None,
     };
     let an = analyse(&task, &l, &t, at)?;
+    let out = if a.json {
+        json_text(&json_document(&l, &t, &an))?
+    } else {
+        checked(text_report(&l, &t, &an))?
+    };
     let files = match &a.svg {
-        Some(dir) => write_svgs(&l, &t, &an, dir)?,
+        Some(dir) => write_dir(dir, &drawings(&l, &t, &an)?)?,
         None => Vec::new(),
     };
-    if a.json {
-        return print_json(&json_document(&l, &t, &an));
-    }
-    print!("{}", text_report(&l, &t, &an));
-    for f in files {
-        println!("wrote {}", f.display());
-    }
-    Ok(())
+    print(&if a.json { out } else { out + &written(&files) })
 }

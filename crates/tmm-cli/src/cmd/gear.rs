@@ -11,10 +11,11 @@ use tmm_gears::contour::{ContourOptions, blocking_contour};
 use tmm_report::Error;
 use tmm_report::gear::input::{Field, Origin, Raw, gear_error};
 use tmm_report::gear::{contour_plot, json, mesh, profile, profiles, sliding_svg, solve, text};
-use tmm_report::output::write_file;
 use tmm_report::task::RawQty;
 
-use super::common::print_json;
+use tmm_report::output::num;
+
+use super::common::{checked, json_text, print, write_named, written};
 
 /// The gear subcommands.
 #[derive(clap::Subcommand)]
@@ -160,35 +161,32 @@ fn pair(a: &PairArgs) -> Result<(), Error> {
     let solved = solve::solve(&job, &o)?;
     let pair = &solved.pair;
     let (t1, t2) = profiles(pair, &o)?;
-    let mut files = Vec::new();
+    let out = if a.common.json {
+        json_text(&json::pair_json(&solved, &job.limits, a.with_profiles.then_some((&t1, &t2))))?
+    } else {
+        checked(text::pair_text(&solved, &job.limits))?
+    };
+    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     if let Some(p) = &a.svg {
-        write_file(p, &mesh::mesh_svg(pair, &t1, &t2), &mut files)?;
+        files.push((p.clone(), mesh::mesh_svg(pair, &t1, &t2).into_bytes()));
     }
     if let Some(p) = &a.dxf {
-        mesh::mesh_dxf(pair, &t1, &t2).save(p)?;
-        files.push(p.clone());
+        files.push((p.clone(), mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?));
     }
     if let Some(p) = &a.profiles {
-        write_file(p, &profile::profiles_csv(&t1, &t2), &mut files)?;
+        files.push((p.clone(), profile::profiles_csv(&t1, &t2).into_bytes()));
     }
     if let Some(p) = &a.profiles_svg {
-        write_file(p, &profile::profiles_svg(&t1, &t2), &mut files)?;
+        files.push((p.clone(), profile::profiles_svg(&t1, &t2).into_bytes()));
     }
     if let Some(p) = &a.profiles_dxf {
-        profile::profiles_dxf(&t1, &t2).save(p)?;
-        files.push(p.clone());
+        files.push((p.clone(), profile::profiles_dxf(&t1, &t2).to_bytes()?));
     }
     if let Some(p) = &a.sliding_svg {
-        write_file(p, &sliding_svg(pair), &mut files)?;
+        files.push((p.clone(), sliding_svg(pair).into_bytes()));
     }
-    if a.common.json {
-        return print_json(&json::pair_json(&solved, &job.limits, a.with_profiles.then_some((&t1, &t2))));
-    }
-    print!("{}", text::pair_text(&solved, &job.limits));
-    for f in &files {
-        println!("written: {}", f.display());
-    }
-    Ok(())
+    let files = write_named(&files)?;
+    print(&if a.common.json { out } else { out + &written(&files) })
 }
 
 fn contour(a: &ContourArgs) -> Result<(), Error> {
@@ -219,11 +217,12 @@ fn contour(a: &ContourArgs) -> Result<(), Error> {
             s.criterion.map_or("chosen".into(), |c| c.name().to_string()),
         )
     });
-    let mut files = Vec::new();
-    if let Some(p) = &a.svg {
-        write_file(p, &contour_plot::contour_svg(&c, chosen.clone()), &mut files)?;
-    }
-    if a.common.json {
+    let svg_file: Vec<(PathBuf, Vec<u8>)> = a
+        .svg
+        .iter()
+        .map(|p| (p.clone(), contour_plot::contour_svg(&c, chosen.clone()).into_bytes()))
+        .collect();
+    let out = if a.common.json {
         let lines: Vec<serde_json::Value> = c
             .lines
             .iter()
@@ -232,7 +231,7 @@ fn contour(a: &ContourArgs) -> Result<(), Error> {
                     "boundary": l.boundary.key(),
                     "label": l.boundary.label(),
                     "blocking": l.boundary.is_blocking(),
-                    "polylines": l.polylines.iter().map(|pl| pl.iter().map(|&(x, y)| [x, y]).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                    "polylines": l.polylines.iter().map(|pl| pl.iter().map(|&(x, y)| [num(x), num(y)]).collect::<Vec<_>>()).collect::<Vec<_>>(),
                 })
             })
             .collect();
@@ -241,52 +240,58 @@ fn contour(a: &ContourArgs) -> Result<(), Error> {
             "z1": job.spec.z1,
             "z2": job.spec.z2,
             "kind": if job.spec.kind == tmm_gears::Kind::Internal { "internal" } else { "external" },
-            "x1_range": [c.x1.0, c.x1.1],
-            "x2_range": [c.x2.0, c.x2.1],
+            "x1_range": [num(c.x1.0), num(c.x1.1)],
+            "x2_range": [num(c.x2.0), num(c.x2.1)],
             "n": c.n,
             "lines": lines,
         });
         match &solved {
             Ok(s) => {
-                doc["chosen"] = serde_json::json!({"x1": s.pair.w1.x, "x2": s.pair.w2.x, "criterion": s.criterion.map(|c| c.name()), "reason": s.reason, "eps_alpha": s.pair.eps_alpha, "theta1_max": s.pair.theta1_max(), "theta2_max": s.pair.theta2_max()});
+                doc["chosen"] = serde_json::json!({"x1": num(s.pair.w1.x), "x2": num(s.pair.w2.x), "criterion": s.criterion.map(|c| c.name()), "reason": s.reason, "eps_alpha": num(s.pair.eps_alpha), "theta1_max": s.pair.theta1_max().map(num), "theta2_max": s.pair.theta2_max().map(num)});
             }
             Err(e) => doc["chosen"] = serde_json::json!({"error": e.to_string()}),
         }
-        return print_json(&doc);
-    }
-    println!(
-        "Blocking contour z1 = {}, z2 = {}: x1 in [{:.3}, {:.3}], x2 in [{:.3}, {:.3}], {}×{} grid",
-        job.spec.z1, job.spec.z2, c.x1.0, c.x1.1, c.x2.0, c.x2.1, c.n, c.n
+        json_text(&doc)?
+    } else {
+        checked(contour_text(&job.spec, &c, &solved))?
+    };
+    let files = write_named(&svg_file)?;
+    let _ = Field::Section;
+    print(&if a.common.json { out } else { out + &written(&files) })
+}
+
+/// The contour's summary table.
+fn contour_text(spec: &tmm_gears::PairSpec, c: &tmm_gears::contour::Contour, solved: &Result<solve::Solved, Error>) -> String {
+    let mut out = format!(
+        "Blocking contour z1 = {}, z2 = {}: x1 in [{:.3}, {:.3}], x2 in [{:.3}, {:.3}], {}×{} grid\n",
+        spec.z1, spec.z2, c.x1.0, c.x1.1, c.x2.0, c.x2.1, c.n, c.n
     );
     for l in &c.lines {
         let pts: usize = l.polylines.iter().map(|p| p.len()).sum();
-        println!(
-            "  {:<22} {} polyline(s), {pts} points{}",
+        out += &format!(
+            "  {:<22} {} polyline(s), {pts} points{}\n",
             l.boundary.label(),
             l.polylines.len(),
             if l.boundary.is_blocking() { " (blocking)" } else { "" }
         );
     }
-    match &solved {
+    let opt = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
+    match solved {
         Ok(s) => {
-            println!(
-                "Chosen by {}: x1 = {:.4}, x2 = {:.4} (εα = {:.4}, ϑ1max = {:.4}, ϑ2max = {:.4})",
+            out += &format!(
+                "Chosen by {}: x1 = {:.4}, x2 = {:.4} (εα = {:.4}, ϑ1max = {}, ϑ2max = {})\n",
                 s.criterion.map_or("-", |c| c.name()),
                 s.pair.w1.x,
                 s.pair.w2.x,
                 s.pair.eps_alpha,
-                s.pair.theta1_max().unwrap_or(f64::NAN),
-                s.pair.theta2_max().unwrap_or(f64::NAN)
+                opt(s.pair.theta1_max()),
+                opt(s.pair.theta2_max())
             );
             if let Some(r) = &s.reason {
-                println!("  ({r})");
+                out += &format!("  ({r})\n");
             }
         }
-        Err(e) => println!("No point chosen: {e}"),
+        Err(e) => out += &format!("No point chosen: {e}\n"),
     }
-    let _ = Field::Section;
-    for f in &files {
-        println!("written: {}", f.display());
-    }
-    Ok(())
+    out
 }

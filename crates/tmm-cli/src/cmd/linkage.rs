@@ -4,10 +4,10 @@ use std::path::PathBuf;
 
 use tmm_geom::units::Dim;
 use tmm_report::Error;
-use tmm_report::linkage::{analyse, json_document, load, text_report, write_svgs};
+use tmm_report::linkage::{analyse, drawings, json_document, load, text_report};
 use tmm_report::task::arg_qty;
 
-use super::common::{print_json, read_task};
+use super::common::{checked, json_text, print, read_task, write_dir, written};
 
 /// Structure (Assur groups, formula) and kinematics (dead positions, Kv, the
 /// 12-position table, diagrams, velocity and acceleration plans) of the
@@ -44,16 +44,14 @@ pub fn run(a: &Args) -> Result<(), Error> {
     }
     let n = a.positions.unwrap_or(l.task.positions);
     let an = analyse(&l, &task, at, n)?;
+    let out = if a.json {
+        json_text(&json_document(&l, &an))?
+    } else {
+        checked(text_report(&l, &an))?
+    };
     let files = match &a.svg {
-        Some(dir) => write_svgs(&l, &an, dir)?,
+        Some(dir) => write_dir(dir, &drawings(&l, &an)?)?,
         None => Vec::new(),
     };
-    if a.json {
-        return print_json(&json_document(&l, &an));
-    }
-    print!("{}", text_report(&l, &an));
-    for f in files {
-        println!("wrote {}", f.display());
-    }
-    Ok(())
+    print(&if a.json { out } else { out + &written(&files) })
 }

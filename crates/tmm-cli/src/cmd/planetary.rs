@@ -14,7 +14,7 @@ use tmm_report::planetary::{Origin, Params, analyse, drawing, json, text};
 use tmm_report::task::arg_qty;
 use tmm_report::{Error, TaskSource};
 
-use super::common::read_task;
+use super::common::{checked, json_text, print, read_task, write_named, written};
 
 const AFTER: &str = "Schemes (wheel 3 is fixed in all four; the ratio is u_1H = ω1/ωH,
 wheel 1 to the carrier H, by Willis' method):
@@ -190,28 +190,12 @@ fn params(a: &Args) -> Result<(Params, Origin), Error> {
 pub fn run(a: &Args) -> Result<(), Error> {
     let (p, o) = params(a)?;
     let an = analyse(&p, &o)?;
-    if let Some(path) = &a.svg {
-        let sheet = drawing::sheet(&an);
-        let mut files = Vec::new();
-        tmm_report::output::write_file(path, &sheet.svg, &mut files)?;
-    }
-    let mut out = if a.json {
-        serde_json::to_string_pretty(&json::document(&an)).map_err(|e| Error::Io(e.to_string()))?
+    let out = if a.json {
+        json_text(&json::document(&an))?
     } else {
-        text::report(&an)
+        checked(text::report(&an))?
     };
-    if let (false, Some(path)) = (a.json, &a.svg) {
-        out.push_str(&format!("\nSheet written to {}", path.display()));
-    }
-    emit(&out)
-}
-
-/// Print to stdout; a closed pipe (`| head`) is not an error.
-fn emit(text: &str) -> Result<(), Error> {
-    use std::io::Write as _;
-    let mut o = std::io::stdout().lock();
-    match writeln!(o, "{}", text.trim_end()).and_then(|()| o.flush()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Error::Io(format!("cannot write to stdout: {e}"))),
-        _ => Ok(()),
-    }
+    let svg: Vec<(PathBuf, Vec<u8>)> = a.svg.iter().map(|p| (p.clone(), drawing::sheet(&an).svg.into_bytes())).collect();
+    let files = write_named(&svg)?;
+    print(&if a.json { out } else { out + &written(&files) })
 }

@@ -4,15 +4,13 @@
 //! images of their points), the balancing torque over the cycle, and the
 //! N, Q, M diagrams of the link sized for strength.
 
-use std::path::{Path, PathBuf};
-
 use tmm_geom::Vec2;
 
 use super::task::ForcesTask;
 use super::{Analysis, Row, json::pair_name};
 use crate::Error;
 use crate::linkage::Loaded;
-use crate::output::write_file;
+use crate::output::Documents;
 use crate::svg::{Anchor, Canvas, Series, Style, plot};
 
 const COLORS: [&str; 6] = ["#c00000", "#0050c0", "#008000", "#a05000", "#7000a0", "#007070"];
@@ -272,8 +270,8 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
     c.finish()
 }
 
-/// Write every drawing into `dir`.
-pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+/// Every drawing, as documents whose paths start with `dir` (`"forces/"`).
+pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &str, docs: &mut Documents) -> Result<(), Error> {
     let m = &l.mech;
     for (g, grp) in m.groups.iter().enumerate().rev() {
         let names: Vec<String> = grp.info.pair_ids.iter().map(|&p| pair_name(l, p)).collect();
@@ -283,22 +281,20 @@ pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &
             grp.label(),
             names.join(", ")
         );
-        write_file(
-            &dir.join(format!("group-{}.svg", g + 1)),
-            &free_body(l, &a.detail, &grp.info.link_ids, &title, false),
-            files,
+        docs.add_text(
+            format!("{dir}group-{}.svg", g + 1),
+            free_body(l, &a.detail, &grp.info.link_ids, &title, false),
         )?;
     }
     let title = format!(
         "Input link {} with the balancing force P_b = {:.3} N at the crank pin",
         m.link_names[m.crank.link], a.detail.fs.balancing_force
     );
-    write_file(
-        &dir.join("input-link.svg"),
-        &free_body(l, &a.detail, &[m.crank.link], &title, true),
-        files,
+    docs.add_text(
+        format!("{dir}input-link.svg"),
+        free_body(l, &a.detail, &[m.crank.link], &title, true),
     )?;
-    write_file(&dir.join("zhukovsky-lever.svg"), &lever(l, a), files)?;
+    docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a))?;
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
     let mz: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[3])).collect();
     let svg = plot(
@@ -320,7 +316,7 @@ pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &
         240.0,
         150.0,
     );
-    write_file(&dir.join("balancing-torque.svg"), &svg, files)?;
+    docs.add_text(format!("{dir}balancing-torque.svg"), svg)?;
     if let Some(b) = &a.beam {
         let link = &m.link_names[b.beam.link];
         for (key, name, unit, idx) in [
@@ -341,7 +337,7 @@ pub fn write_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &Path, files: &
                 200.0,
                 110.0,
             );
-            write_file(&dir.join(format!("strength-{key}.svg")), &svg, files)?;
+            docs.add_text(format!("{dir}strength-{key}.svg"), svg)?;
         }
     }
     Ok(())

@@ -12,7 +12,6 @@ pub mod task;
 mod text;
 
 use std::f64::consts::TAU;
-use std::path::{Path, PathBuf};
 
 use tmm_linkage::Solution;
 use tmm_linkage::cycle::{self, Cycle, Position};
@@ -21,7 +20,7 @@ use tmm_linkage::forces::zhukovsky::{LeverForce, lever_forces};
 use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, SectionSizes, size_sections};
 
 use crate::linkage::{self, Loaded};
-use crate::output::{SectionOutput, write_file};
+use crate::output::{Documents, SectionOutput};
 use crate::{Error, TaskSource};
 
 pub use task::ForcesTask;
@@ -188,24 +187,21 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
     })
 }
 
-/// Run the `[forces]` section of a task into `out/forces/`.
-pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
+/// Run the `[forces]` section of a task: documents under `forces/`.
+pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((l, t)) = load(task)? else { return Ok(None) };
     let a = analyse(task, &l, &t, None)?;
-    let dir = out.join("forces");
-    let mut files = Vec::new();
-    draw::write_all(&l, &t, &a, &dir, &mut files)?;
+    let mut docs = Documents::new();
+    draw::draw_all(&l, &t, &a, "forces/", &mut docs)?;
     let json = json::document(&l, &t, &a);
-    write_file(
-        &dir.join("forces.json"),
-        &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?,
-        &mut files,
-    )?;
+    docs.add_json("forces/forces.json", &json)?;
+    let text = text::report(&l, &t, &a);
+    docs.add_text("forces/forces.txt", text.clone())?;
     Ok(Some(SectionOutput {
         section: "forces",
-        text: text::report(&l, &t, &a),
+        text,
         json,
-        files,
+        docs,
     }))
 }
 
@@ -219,9 +215,9 @@ pub fn json_document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> serde_json::Va
     json::document(l, t, a)
 }
 
-/// Write the drawings into `dir`.
-pub fn write_svgs(l: &Loaded, t: &ForcesTask, a: &Analysis, dir: &Path) -> Result<Vec<PathBuf>, Error> {
-    let mut files = Vec::new();
-    draw::write_all(l, t, a, dir, &mut files)?;
-    Ok(files)
+/// The drawings, as documents named by file name only (`group-1.svg`, …).
+pub fn drawings(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Result<Documents, Error> {
+    let mut docs = Documents::new();
+    draw::draw_all(l, t, a, "", &mut docs)?;
+    Ok(docs)
 }

@@ -65,23 +65,21 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>) -> String 
         dash: None,
         fill: None,
     };
-    let (t0, t1, st) = crate::svg::nice_ticks(c.x1.0, c.x1.1, 10);
-    let mut x = t0;
-    while x <= t1 + 1e-9 {
+    let tx = crate::svg::Ticks::new(c.x1.0, c.x1.1, 10);
+    for i in tx.first..=tx.last {
+        let x = tx.value(i);
         if x >= c.x1.0 - 1e-9 && x <= c.x1.1 + 1e-9 {
             cv.line((x, c.x2.0), (x, c.x2.1), grid);
-            cv.text((x, c.x2.0), &format!("{x:.1}"), 2.6, Anchor::Middle);
+            cv.text((x, c.x2.0), &tx.label(i), 2.6, Anchor::Middle);
         }
-        x += st;
     }
-    let (u0, u1, su) = crate::svg::nice_ticks(c.x2.0, c.x2.1, 10);
-    let mut y = u0;
-    while y <= u1 + 1e-9 {
+    let ty = crate::svg::Ticks::new(c.x2.0, c.x2.1, 10);
+    for i in ty.first..=ty.last {
+        let y = ty.value(i);
         if y >= c.x2.0 - 1e-9 && y <= c.x2.1 + 1e-9 {
             cv.line((c.x1.0, y), (c.x1.1, y), grid);
-            cv.text((c.x1.0, y), &format!("{y:.1} "), 2.6, Anchor::End);
+            cv.text((c.x1.0, y), &format!("{} ", ty.label(i)), 2.6, Anchor::End);
         }
-        y += su;
     }
     cv.polygon(
         &[(c.x1.0, c.x2.0), (c.x1.1, c.x2.0), (c.x1.1, c.x2.1), (c.x1.0, c.x2.1)],

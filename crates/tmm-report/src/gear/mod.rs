@@ -15,13 +15,11 @@ pub mod sliding_plot;
 pub mod solve;
 pub mod text;
 
-use std::path::Path;
-
 use tmm_gears::contour::{ContourOptions, blocking_contour};
 use tmm_gears::generate::{ToothProfile, generate, ring_profile};
 use tmm_gears::{Kind, Pair};
 
-use crate::output::{ensure_dir, write_file};
+use crate::output::Documents;
 use crate::{Error, SectionOutput, TaskSource};
 use input::{Field, Origin, Raw, gear_error};
 pub use sliding_plot::sliding_svg;
@@ -53,9 +51,9 @@ pub fn profiles(pair: &Pair, o: &Origin<'_>) -> Result<(ToothProfile, ToothProfi
     Ok((t1, t2))
 }
 
-/// Run the `[gear]` section of a task, writing files under `out/gear/`.
+/// Run the `[gear]` section of a task: documents under `gear/`.
 /// Returns `None` when the task has no such section.
-pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
+pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((raw, origin)) = Raw::from_task(task)? else {
         return Ok(None);
     };
@@ -63,35 +61,28 @@ pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput
     let solved = solve::solve(&job, &origin)?;
     let pair = &solved.pair;
     let (t1, t2) = profiles(pair, &origin)?;
-    let dir = out.join("gear");
-    ensure_dir(&dir)?;
-    let mut files = Vec::new();
-    write_file(&dir.join("mesh.svg"), &mesh::mesh_svg(pair, &t1, &t2), &mut files)?;
-    let dxf = mesh::mesh_dxf(pair, &t1, &t2);
-    let p = dir.join("mesh.dxf");
-    dxf.save(&p)?;
-    files.push(p);
-    write_file(&dir.join("sliding.svg"), &sliding_svg(pair), &mut files)?;
-    write_file(&dir.join("profiles.csv"), &profile::profiles_csv(&t1, &t2), &mut files)?;
-    write_file(&dir.join("profiles.svg"), &profile::profiles_svg(&t1, &t2), &mut files)?;
-    let pd = profile::profiles_dxf(&t1, &t2);
-    let p = dir.join("profiles.dxf");
-    pd.save(&p)?;
-    files.push(p);
+    let mut docs = Documents::new();
+    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2))?;
+    docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
+    docs.add_text("gear/sliding.svg", sliding_svg(pair))?;
+    docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
+    docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2))?;
+    docs.add_bytes("gear/profiles.dxf", profile::profiles_dxf(&t1, &t2).to_bytes()?)?;
     let c = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| gear_error(&origin, &e))?;
     let label = solved.criterion.map_or("given".to_string(), |c| c.name().to_string());
-    write_file(
-        &dir.join("contour.svg"),
-        &contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label))),
-        &mut files,
+    docs.add_text(
+        "gear/contour.svg",
+        contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label))),
     )?;
     let text = text::pair_text(&solved, &job.limits);
     let json = json::pair_json(&solved, &job.limits, None);
+    docs.add_json("gear/gear.json", &json)?;
+    docs.add_text("gear/gear.txt", text.clone())?;
     let _ = Field::Section;
     Ok(Some(SectionOutput {
         section: "gear",
         text,
         json,
-        files,
+        docs,
     }))
 }

@@ -2,8 +2,6 @@
 //! overlaid, the kinematic diagrams of the output, and the velocity and
 //! acceleration plans with their scale factors μ.
 
-use std::path::{Path, PathBuf};
-
 use tmm_geom::Vec2;
 use tmm_linkage::Solution;
 use tmm_linkage::mechanism::Pair;
@@ -11,12 +9,12 @@ use tmm_linkage::plans::{PlanVector, VectorKind};
 
 use super::{Analysis, Loaded};
 use crate::Error;
-use crate::output::write_file;
+use crate::output::Documents;
 use crate::svg::{Anchor, Canvas, Series, Style, nice_ticks, plot};
 
-/// Write every drawing into `dir`.
-pub fn write_all(l: &Loaded, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
-    write_file(&dir.join("positions.svg"), &positions(l, a), files)?;
+/// Every drawing, as documents whose paths start with `dir` (`"linkage/"` gives `linkage/positions.svg`).
+pub fn draw_all(l: &Loaded, a: &Analysis, dir: &str, docs: &mut Documents) -> Result<(), Error> {
+    docs.add_text(format!("{dir}positions.svg"), positions(l, a))?;
     let w = l.mech.crank.omega.abs();
     let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
     let (su, vu) = if lin { ("s, m", "m") } else { ("s, rad", "rad") };
@@ -94,21 +92,18 @@ pub fn write_all(l: &Loaded, a: &Analysis, dir: &Path, files: &mut Vec<PathBuf>)
             points: &points,
             color: g.color,
         }];
-        write_file(
-            &dir.join(g.file),
-            &plot(g.title, g.x_label, g.y_label, &series, 200.0, 120.0),
-            files,
+        docs.add_text(
+            format!("{dir}{}", g.file),
+            plot(g.title, g.x_label, g.y_label, &series, 200.0, 120.0),
         )?;
     }
-    write_file(
-        &dir.join("velocity-plan.svg"),
-        &plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi),
-        files,
+    docs.add_text(
+        format!("{dir}velocity-plan.svg"),
+        plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi),
     )?;
-    write_file(
-        &dir.join("acceleration-plan.svg"),
-        &plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi),
-        files,
+    docs.add_text(
+        format!("{dir}acceleration-plan.svg"),
+        plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi),
     )?;
     Ok(())
 }

@@ -7,13 +7,12 @@ pub mod task;
 mod text;
 
 use std::f64::consts::TAU;
-use std::path::Path;
 
 use tmm_linkage::cycle::{self, Cycle, Position};
 use tmm_linkage::plans::{self, Plans};
 use tmm_linkage::{LinkageError, Mechanism, MechanismDef, Solution};
 
-use crate::output::{SectionOutput, write_file};
+use crate::output::{Documents, SectionOutput};
 use crate::{Error, TaskSource};
 
 pub use task::LinkageTask;
@@ -209,24 +208,21 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
     })
 }
 
-/// Run the `[linkage]` section of a task into `out/linkage/`.
-pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
+/// Run the `[linkage]` section of a task: documents under `linkage/`.
+pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some(l) = load(task)? else { return Ok(None) };
     let a = analyse(&l, task, None, l.task.positions)?;
-    let dir = out.join("linkage");
-    let mut files = Vec::new();
-    draw::write_all(&l, &a, &dir, &mut files)?;
+    let mut docs = Documents::new();
+    draw::draw_all(&l, &a, "linkage/", &mut docs)?;
     let json = json::document(&l, &a);
-    write_file(
-        &dir.join("linkage.json"),
-        &serde_json::to_string_pretty(&json).map_err(|e| Error::Io(e.to_string()))?,
-        &mut files,
-    )?;
+    docs.add_json("linkage/linkage.json", &json)?;
+    let text = text::report(&l, &a);
+    docs.add_text("linkage/linkage.txt", text.clone())?;
     Ok(Some(SectionOutput {
         section: "linkage",
-        text: text::report(&l, &a),
+        text,
         json,
-        files,
+        docs,
     }))
 }
 
@@ -240,9 +236,9 @@ pub fn json_document(l: &Loaded, a: &Analysis) -> serde_json::Value {
     json::document(l, a)
 }
 
-/// Write the drawings into `dir`.
-pub fn write_svgs(l: &Loaded, a: &Analysis, dir: &Path) -> Result<Vec<std::path::PathBuf>, Error> {
-    let mut files = Vec::new();
-    draw::write_all(l, a, dir, &mut files)?;
-    Ok(files)
+/// The drawings, as documents named by file name only (`positions.svg`, …).
+pub fn drawings(l: &Loaded, a: &Analysis) -> Result<Documents, Error> {
+    let mut docs = Documents::new();
+    draw::draw_all(l, a, "", &mut docs)?;
+    Ok(docs)
 }

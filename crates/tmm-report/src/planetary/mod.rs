@@ -20,32 +20,31 @@ pub mod input;
 pub mod json;
 pub mod text;
 
-use std::path::Path;
-
-use crate::output::write_file;
+use crate::output::Documents;
 use crate::{Error, SectionOutput, TaskSource};
 
 pub use analysis::{Analysis, analyse};
 pub use input::{Origin, Params};
 
-/// Run the `[planetary]` section of a task, writing files under `out/planetary/`.
+/// Run the `[planetary]` section of a task: documents under `planetary/`.
 /// Returns `None` when the task has no such section.
-pub fn run_section(task: &TaskSource, out: &Path) -> Result<Option<SectionOutput>, Error> {
+pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((params, origin)) = input::from_task(task)? else {
         return Ok(None);
     };
     let a = analyse(&params, &origin)?;
-    let dir = out.join("planetary");
-    let mut files = Vec::new();
+    let mut docs = Documents::new();
     let sheet = drawing::sheet(&a);
     let text = text::report(&a);
-    write_file(&dir.join("planetary.svg"), &sheet.svg, &mut files)?;
-    write_file(&dir.join("planetary.txt"), &text, &mut files)?;
+    let json = json::document(&a);
+    docs.add_text("planetary/planetary.svg", sheet.svg)?;
+    docs.add_json("planetary/planetary.json", &json)?;
+    docs.add_text("planetary/planetary.txt", text.clone())?;
     Ok(Some(SectionOutput {
         section: "planetary",
         text,
-        json: json::document(&a),
-        files,
+        json,
+        docs,
     }))
 }
 
@@ -56,21 +55,20 @@ mod tests {
 
     #[test]
     fn section_absent_or_present() {
-        let out = std::env::temp_dir().join(format!("tmm-planetary-section-{}", std::process::id()));
         let none = TaskSource::new("t.toml", "title = \"x\"\n");
-        assert!(run_section(&none, &out).unwrap().is_none());
+        assert!(run_section(&none).unwrap().is_none());
         let t = TaskSource::new(
             "t.toml",
             "[planetary]\nscheme = \"sun-planet-ring\"\nratio = 6\nplanets = 3\nmodule = \"2 mm\"\n",
         );
-        let o = run_section(&t, &out).unwrap().unwrap();
+        let o = run_section(&t).unwrap().unwrap();
         // u = 6: z3 = 5·z1 ≥ 85 → z1 = 17, z2 = 2·z1 = 34; 6·17/3 = 34 is whole
         assert_eq!(o.json["best"]["z"], serde_json::json!([17, 34, 85]));
         assert_eq!(o.json["units"], "SI");
         assert!((o.json["best"]["radial_size_m"].as_f64().unwrap() - 0.17).abs() < 1e-12);
-        assert!(o.files.iter().all(|f| f.exists()));
+        assert!(o.docs.get("planetary/planetary.svg").is_some());
         let bad = TaskSource::new("t.toml", "[planetary]\nscheme = \"sun\"\nratio = 6\nplanets = 3\n");
-        let e = run_section(&bad, &out).unwrap_err();
+        let e = run_section(&bad).unwrap_err();
         assert_eq!(e.exit_code(), 2);
         assert!(e.to_string().starts_with("t.toml:2:10: planetary.scheme"), "{e}");
     }

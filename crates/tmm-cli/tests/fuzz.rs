@@ -1,0 +1,357 @@
+//! A mutation fuzzer over every task file in `examples/`, the embedded
+//! default task and the command-line options, run as an ordinary test with a
+//! fixed seed.
+//!
+//! Each case mutates a task (a line deleted or duplicated, a number replaced
+//! by 0, a negative, a huge or a tiny value, units swapped, the text
+//! truncated, a byte flipped) and runs it. The test fails on any panic, a case
+//! slower than the time limit, a non-finite number in any output, files
+//! written by a run that failed, or an exit code other than 0, 1 or 2.
+//!
+//! `TMM_FUZZ_CASES` sets the number of in-process cases (default 2000);
+//! every 25th case also runs through the `tmm` binary, and so do the
+//! command-line option cases. `TMM_FUZZ_SEED` changes the seed. The long run
+//! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test fuzz -- --nocapture`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use tmm_report::TaskSource;
+use tmm_report::run::{DEFAULT_TASK, run_task};
+
+/// A small deterministic generator (xorshift64*).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n.max(1) as u64) as usize
+    }
+    fn pick<'a, T>(&mut self, xs: &'a [T]) -> &'a T {
+        &xs[self.below(xs.len())]
+    }
+}
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn corpus() -> Vec<(String, String)> {
+    let mut v = vec![("default".to_string(), DEFAULT_TASK.to_string())];
+    let mut files: Vec<PathBuf> = std::fs::read_dir(repo().join("examples"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    for f in files {
+        v.push((
+            f.file_name().unwrap().to_string_lossy().into_owned(),
+            std::fs::read_to_string(&f).unwrap(),
+        ));
+    }
+    v
+}
+
+const NUMBERS: [&str; 14] = [
+    "0",
+    "-1",
+    "-120",
+    "1e300",
+    "1e-300",
+    "1e160",
+    "1e9",
+    "-0",
+    "0.0000001",
+    "nan",
+    "inf",
+    "100000",
+    "3",
+    "1e6",
+];
+const UNIT_SWAPS: [(&str, &str); 10] = [
+    ("mm", "m"),
+    (" m\"", " mm\""),
+    ("deg", "rad"),
+    ("rpm", "rad/s"),
+    ("rad/s", "rpm"),
+    ("kg", "N"),
+    (" N\"", " kN\""),
+    ("N·m", "mm"),
+    ("°", " rpm"),
+    ("MPa", "kg"),
+];
+
+/// Positions of the numbers in a text: (start, end).
+fn number_spans(t: &str) -> Vec<(usize, usize)> {
+    let b = t.as_bytes();
+    let mut v = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i].is_ascii_digit() && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_')) {
+            let s = i;
+            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.' || b[i] == b'e' || b[i] == b'-') {
+                i += 1;
+            }
+            v.push((s, i));
+        } else {
+            i += 1;
+        }
+    }
+    v
+}
+
+/// One mutation of `t` (the result may not be valid UTF-8 only for byte flips,
+/// which are returned as bytes).
+fn mutate(rng: &mut Rng, t: &str) -> Vec<u8> {
+    let lines: Vec<&str> = t.lines().collect();
+    let rounds = 1 + rng.below(3);
+    let mut text = t.to_string();
+    for _ in 0..rounds {
+        match rng.below(8) {
+            0 if !lines.is_empty() => {
+                let mut l: Vec<&str> = text.lines().collect();
+                if !l.is_empty() {
+                    let i = rng.below(l.len());
+                    l.remove(i);
+                }
+                text = l.join("\n");
+            }
+            1 => {
+                let mut l: Vec<String> = text.lines().map(str::to_string).collect();
+                if !l.is_empty() {
+                    let i = rng.below(l.len());
+                    let dup = l[i].clone();
+                    l.insert(i, dup);
+                }
+                text = l.join("\n");
+            }
+            2..=4 => {
+                let spans = number_spans(&text);
+                if !spans.is_empty() {
+                    let (s, e) = *rng.pick(&spans);
+                    let v: &str = NUMBERS[rng.below(NUMBERS.len())];
+                    text.replace_range(s..e, v);
+                }
+            }
+            5 => {
+                let (a, b) = *rng.pick(&UNIT_SWAPS);
+                let hits: Vec<usize> = text.match_indices(a).map(|m| m.0).collect();
+                if !hits.is_empty() {
+                    let at = *rng.pick(&hits);
+                    text.replace_range(at..at + a.len(), b);
+                }
+            }
+            6 => {
+                let mut cut = rng.below(text.len() + 1);
+                while !text.is_char_boundary(cut) {
+                    cut -= 1;
+                }
+                text.truncate(cut);
+            }
+            _ => {
+                let mut bytes = text.into_bytes();
+                if !bytes.is_empty() {
+                    let i = rng.below(bytes.len());
+                    bytes[i] ^= 1 << rng.below(8);
+                }
+                return bytes;
+            }
+        }
+    }
+    text.into_bytes()
+}
+
+/// A word `NaN`, `inf` or `Infinity` standing alone: written independently of
+/// the check inside tmm, so that the two do not share a mistake.
+fn has_nonfinite(s: &str) -> bool {
+    s.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .any(|w| w == "NaN" || w == "inf" || w == "Infinity")
+}
+
+const TIME_LIMIT: Duration = Duration::from_secs(20);
+
+fn tmm() -> PathBuf {
+    PathBuf::from(env!("CARGO_BIN_EXE_tmm"))
+}
+
+/// Run the binary with a time limit; (exit code, stdout, stderr).
+fn run_bin(args: &[&str], dir: &Path) -> (i32, String, String) {
+    let mut child = Command::new(tmm())
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // read both pipes while waiting, or a large output would block the child
+    let mut so = child.stdout.take().unwrap();
+    let mut se = child.stderr.take().unwrap();
+    let to = std::thread::spawn(move || {
+        let mut b = Vec::new();
+        std::io::Read::read_to_end(&mut so, &mut b).ok();
+        b
+    });
+    let te = std::thread::spawn(move || {
+        let mut b = Vec::new();
+        std::io::Read::read_to_end(&mut se, &mut b).ok();
+        b
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(st) = child.try_wait().unwrap() {
+            break st;
+        }
+        if start.elapsed() > TIME_LIMIT {
+            let _ = child.kill();
+            panic!("timeout: tmm {}", args.join(" "));
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    };
+    (
+        status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&to.join().unwrap()).into_owned(),
+        String::from_utf8_lossy(&te.join().unwrap()).into_owned(),
+    )
+}
+
+fn check_bin(args: &[&str], dir: &Path, what: &str) -> i32 {
+    let (code, out, err) = run_bin(args, dir);
+    assert!(matches!(code, 0..=2), "{what}: exit code {code}\nargs: {args:?}\nstderr: {err}");
+    assert!(!err.contains("panicked"), "{what}: panic\nargs: {args:?}\n{err}");
+    assert!(!has_nonfinite(&out), "{what}: non-finite number on stdout\nargs: {args:?}");
+    code
+}
+
+fn cases() -> usize {
+    std::env::var("TMM_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(2000)
+}
+
+fn seed() -> u64 {
+    std::env::var("TMM_FUZZ_SEED")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0x5eed_7a5c_0ffe_e001)
+}
+
+#[test]
+fn mutated_task_files() {
+    let corpus = corpus();
+    let n = cases();
+    let mut rng = Rng(seed());
+    let work = std::env::temp_dir().join(format!("tmm-fuzz-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&work);
+    std::fs::create_dir_all(&work).unwrap();
+    let (mut ok, mut refused, mut slowest) = (0usize, 0usize, Duration::ZERO);
+    let started = Instant::now();
+    for case in 0..n {
+        let (name, text) = rng.pick(&corpus);
+        let bytes = mutate(&mut rng, text);
+        let what = format!("case {case} (from {name})");
+        if let Ok(text) = std::str::from_utf8(&bytes) {
+            let src = TaskSource::new("task.toml", text);
+            let t0 = Instant::now();
+            let r = std::panic::catch_unwind(|| run_task(&src));
+            let dt = t0.elapsed();
+            slowest = slowest.max(dt);
+            let Ok(r) = r else {
+                panic!("{what}: panic on this task:\n{text}");
+            };
+            assert!(dt < TIME_LIMIT, "{what}: {dt:?}\n{text}");
+            match r {
+                Ok(run) => {
+                    ok += 1;
+                    for d in &run.docs {
+                        if let Some(t) = d.as_text() {
+                            assert!(!has_nonfinite(t), "{what}: non-finite number in {}\n{text}", d.path);
+                        }
+                    }
+                    for o in &run.sections {
+                        assert!(
+                            !has_nonfinite(&o.text),
+                            "{what}: non-finite number in the {} tables\n{text}",
+                            o.section
+                        );
+                    }
+                }
+                Err(e) => {
+                    refused += 1;
+                    assert!(matches!(e.exit_code(), 1 | 2), "{what}: exit code {}", e.exit_code());
+                    let msg = e.to_string();
+                    assert!(!msg.is_empty());
+                    for leak in ["Vec2 {", "Some(", "RawQty", "untagged enum"] {
+                        assert!(!msg.contains(leak), "{what}: debug output in the message: {msg}");
+                    }
+                }
+            }
+        }
+        if case % 25 == 0 {
+            let file = work.join("task.toml");
+            std::fs::write(&file, &bytes).unwrap();
+            let out = work.join("out");
+            let _ = std::fs::remove_dir_all(&out);
+            let code = check_bin(&["run", "task.toml", "--out", "out"], &work, &what);
+            if code == 0 {
+                assert!(out.join(".tmm-out").exists(), "{what}: no marker");
+            } else {
+                assert!(!out.exists(), "{what}: a failed run left files");
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&work);
+    eprintln!(
+        "fuzz: {n} cases in {:.1} s: {ok} ran, {refused} refused with a message, slowest {slowest:?}",
+        started.elapsed().as_secs_f64()
+    );
+}
+
+#[test]
+fn mutated_command_lines() {
+    let mut rng = Rng(seed() ^ 0xabcdef);
+    let work = std::env::temp_dir().join(format!("tmm-fuzz-cli-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&work);
+    std::fs::create_dir_all(&work).unwrap();
+    let ex = repo().join("examples");
+    let ex = ex.to_string_lossy();
+    let base: Vec<Vec<String>> = [
+        "linkage {ex}/seed-001-fourbar.toml --at 15",
+        "linkage {ex}/seed-003-sixbar.toml --positions 24 --json",
+        "forces {ex}/seed-001-fourbar.toml --at 15 --json",
+        "forces {ex}/seed-004-two-sliders.toml --at 40",
+        "gear pair --z1 15 --z2 20 --module 5mm --x1 0.2 --x2 0.85",
+        "gear pair --z1 16 --z2 20 --module 30mm --aw 560mm --json",
+        "gear contour --z1 16 --z2 20 --n 41",
+        "planetary --scheme sun-planet-ring --ratio 6 --planets 3",
+        "planetary --scheme ext-int --ratio 12 --planets 3 --json",
+        "cam --follower translating-roller --stroke 13mm --phases rise_108_cosine;dwell_15;return_108_cosine;dwell_129 --max-pressure 30",
+    ]
+    .iter()
+    .map(|s| s.replace("{ex}", &ex).split(' ').map(|w| w.replace('_', " ")).collect())
+    .collect();
+    let n = (cases() / 10).max(100);
+    for case in 0..n {
+        let mut args = rng.pick(&base).clone();
+        for _ in 0..1 + rng.below(2) {
+            let i = rng.below(args.len());
+            let v = &args[i];
+            args[i] = match rng.below(6) {
+                0 => rng.pick(&NUMBERS).to_string(),
+                1 => format!("{}{}", rng.pick(&NUMBERS), rng.pick(&[" mm", " m", " deg", " rpm", "", " kN"])),
+                2 => String::new(),
+                3 => v.chars().rev().collect(),
+                4 => "--positions".to_string(),
+                _ => format!("{v}{v}"),
+            };
+        }
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        check_bin(&refs, &work, &format!("command-line case {case}"));
+    }
+    let _ = std::fs::remove_dir_all(&work);
+}
