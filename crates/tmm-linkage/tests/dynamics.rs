@@ -506,3 +506,26 @@ fn bad_input_is_reported() {
     assert!(matches!(e, DynamicsError::NoResistance { .. }), "{e}");
     assert!(e.to_string().contains("[forces]"));
 }
+
+#[test]
+#[ignore]
+fn explore_runup() {
+    let m = seed001();
+    let loads = seed001_loads(&m);
+    let mut spec = DynamicsSpec::new(0.02);
+    spec.driving = DrivingMoment::Motor(Motor {
+        synchronous_speed: 157.08,
+        nominal_speed: 146.6,
+        nominal_torque: 60.0,
+        ratio: 1.6,
+    });
+    let d = Dynamics::compute(&m, &loads, &spec).unwrap();
+    let r = d.runup.unwrap();
+    eprintln!(
+        "cycles {} steps {} time {} steady {:?}",
+        r.cycles,
+        r.trace_time.len(),
+        r.time,
+        r.steady
+    );
+}

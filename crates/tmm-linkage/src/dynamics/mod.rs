@@ -256,7 +256,7 @@ impl Dynamics {
         let (simulated, runup) = {
             let mut sim = Simulator::new(&red, &mut sol, inertia_total, spec.driving, md, omega_m);
             match spec.driving {
-                DrivingMoment::Constant => (sim.run(motion.omega[0], 1, |_| true, None)?, None),
+                DrivingMoment::Constant => (sim.cycle(motion.omega[0])?, None),
                 DrivingMoment::Motor(_) => {
                     let r = sim.runup(100_000)?;
                     (r.steady, Some(r))

@@ -68,6 +68,8 @@ pub struct Reducer {
     /// positions of the output), rad from the start of the cycle.
     breaks: [f64; 2],
     nbreaks: usize,
+    /// Some resistance law needs the phase of the cycle.
+    needs_phase: bool,
 }
 
 impl Reducer {
@@ -100,6 +102,7 @@ impl Reducer {
             inertia_crank: ld.inertia + ld.mass * r.hypot2(),
             breaks,
             nbreaks,
+            needs_phase: loads.resistance.iter().any(|r| r.law.needs_stroke()),
         })
     }
 
@@ -143,7 +146,11 @@ impl Reducer {
             }
         }
         if !loads.resistance.is_empty() {
-            let phase = self.stroke.as_ref().map(|s| s.phase(sol)).unwrap_or_default();
+            let phase = if self.needs_phase {
+                self.stroke.as_ref().map(|s| s.phase(sol)).unwrap_or_default()
+            } else {
+                Default::default()
+            };
             for r in &loads.resistance {
                 let st = &sol.links[r.link];
                 let (f, p, cpl) = r.apply(st, r.law.value(&phase));

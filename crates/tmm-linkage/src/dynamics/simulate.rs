@@ -30,6 +30,12 @@ use crate::Solution;
 /// of its steady value (the run-up time).
 pub const SETTLE: f64 = 0.01;
 
+/// Relative tolerance of the steady cycle's integration.
+pub const STEADY_RTOL: f64 = 1e-12;
+
+/// Relative tolerance of the run-up's integration.
+pub const RUNUP_RTOL: f64 = 1e-9;
+
 /// One simulated cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SimulatedCycle {
@@ -57,7 +63,8 @@ pub struct Runup {
     /// Time until the speed at the start of a cycle is within [`SETTLE`] of
     /// its steady value, s.
     pub time: f64,
-    /// Cycles simulated until the cycle repeated itself (to 1e-9).
+    /// Cycles simulated from rest until the cycle repeated itself to 1e-7
+    /// (the steady cycle is then found by shooting).
     pub cycles: usize,
     /// The last (steady) cycle.
     pub steady: SimulatedCycle,
@@ -97,6 +104,7 @@ impl<'a> Simulator<'a> {
     pub fn run(
         &mut self,
         omega0: f64,
+        rtol: f64,
         max_cycles: usize,
         mut stop: impl FnMut(&SimulatedCycle) -> bool,
         mut trace: Option<(&mut Vec<f64>, &mut Vec<f64>)>,
@@ -117,7 +125,7 @@ impl<'a> Simulator<'a> {
         let f0 = rhs(0.0, &y0)?;
         let period = 2.0 * PI / self.omega_ref;
         let h0 = if omega0 > 0.0 { period / 200.0 } else { period * 1e-3 };
-        let mut d = Dopri::new(0.0, y0, f0, h0, period / 48.0, 1e-12, [1e-12, 1e-12 * self.omega_ref]);
+        let mut d = Dopri::new(0.0, y0, f0, h0, period / 16.0, rtol, [rtol, rtol * self.omega_ref]);
         if omega0 <= 0.0 && f0[1] <= 0.0 {
             return Err(DynamicsError::Stall { time: 0.0, phi_deg: 0.0 });
         }
@@ -202,23 +210,55 @@ impl<'a> Simulator<'a> {
         })
     }
 
-    /// The run-up from rest to the steady cycle.
+    /// One steady cycle from cycle angle 0 at speed `omega0`, integrated to
+    /// the tolerance [`STEADY_RTOL`].
+    pub fn cycle(&mut self, omega0: f64) -> Result<SimulatedCycle, DynamicsError> {
+        self.run(omega0, STEADY_RTOL, 1, |_| true, None)
+    }
+
+    /// The periodic cycle near the start speed `omega0`: the fixed point of
+    /// the one-cycle map ω(0) ↦ ω(2π) by the secant method (shooting).
+    pub fn periodic(&mut self, omega0: f64) -> Result<SimulatedCycle, DynamicsError> {
+        let mut x0 = omega0;
+        let mut c0 = self.cycle(x0)?;
+        let mut r0 = c0.omega_end - x0;
+        let mut x1 = c0.omega_end;
+        for _ in 0..30 {
+            let c1 = self.cycle(x1)?;
+            let r1 = c1.omega_end - x1;
+            if r1.abs() <= 1e-11 * x1 {
+                return Ok(c1);
+            }
+            let x2 = if r1 != r0 { x1 - r1 * (x1 - x0) / (r1 - r0) } else { c1.omega_end };
+            (x0, r0, c0) = (x1, r1, c1);
+            x1 = if x2 > 0.0 && x2.is_finite() { x2 } else { c0.omega_end };
+        }
+        Err(DynamicsError::NoConvergence {
+            what: format!("the periodic steady cycle (last start speed {x1:.9} rad/s)"),
+        })
+    }
+
+    /// The run-up from rest to the steady cycle: integrated from rest until
+    /// the speed at the start of a cycle changes by less than 1e-7 from one
+    /// cycle to the next, then the periodic cycle by shooting; the run-up
+    /// time is when the speed at the start of a cycle first comes within
+    /// [`SETTLE`] of the periodic one.
     pub fn runup(&mut self, max_cycles: usize) -> Result<Runup, DynamicsError> {
         let mut starts: Vec<(f64, f64)> = Vec::new();
         let (mut tt, mut ww) = (Vec::new(), Vec::new());
-        let mut prev = f64::NAN;
-        let steady = self.run(
+        let last = self.run(
             0.0,
+            RUNUP_RTOL,
             max_cycles,
             |c| {
                 starts.push((c.start, c.omega_start));
-                let done = starts.len() >= 3 && (c.omega_end - prev).abs() <= 1e-9 * c.omega_end;
-                prev = c.omega_end;
-                done
+                starts.len() >= 3 && (c.omega_end - c.omega_start).abs() <= 1e-7 * c.omega_end
             },
             Some((&mut tt, &mut ww)),
         )?;
-        let target = steady.omega_end;
+        let mut steady = self.periodic(last.omega_end)?;
+        steady.start = last.start + last.period;
+        let target = steady.omega_start;
         let time = starts
             .iter()
             .find(|(_, w)| (w - target).abs() <= SETTLE * target)
