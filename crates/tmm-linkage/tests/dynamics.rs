@@ -110,7 +110,7 @@ fn slotted_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
 #[test]
 fn reduced_inertia_is_twice_the_kinetic_energy_over_omega_squared() {
     let mut rng = Rng(0x1234_5678_9abc_def1);
-    for m in [seed001(), seed003(), seed004(), slotted()] {
+    for m in [seed001(), seed003(), seed004(), slotted(), triad()] {
         let loads = random_loads(&m, &mut rng);
         let red = Reducer::new(&m, &loads, Working::Slower).unwrap();
         let mut s_unit = red.solution();
@@ -519,4 +519,55 @@ fn bad_input_is_reported() {
     let e = Dynamics::compute(&m, &masses, &DynamicsSpec::new(0.02)).unwrap_err();
     assert!(matches!(e, DynamicsError::NoResistance { .. }), "{e}");
     assert!(e.to_string().contains("[forces]"));
+}
+
+/// Random loads, δ and flywheel shapes on every seed mechanism: either a
+/// result whose every number is finite, or a typed error — never a panic.
+#[test]
+fn random_cases_give_finite_results_or_typed_errors() {
+    let mut rng = Rng(0x5eed_0000_dddd_0001);
+    let mut ok = 0;
+    for i in 0..12 {
+        let m = [seed001(), seed003(), seed004(), slotted()][i % 4].clone();
+        let mut loads = random_loads(&m, &mut rng);
+        loads.resistance = match i % 4 {
+            0 => seed001_loads(&m).resistance,
+            1 => seed003_loads(&m).resistance,
+            2 => seed004_loads(&m).resistance,
+            _ => slotted_loads(&m, &mut rng).resistance,
+        };
+        let mut spec = DynamicsSpec::new(0.005 + 0.2 * rng.uniform());
+        spec.points = 360 * (1 + i % 3);
+        spec.inertia_crank_shaft = 0.1 * rng.uniform();
+        if i % 2 == 1 {
+            spec.flywheel.shape = FlywheelShape::Rim {
+                width_ratio: 0.1 + 0.2 * rng.uniform(),
+                thickness_ratio: 0.05 + 0.4 * rng.uniform(),
+            };
+        }
+        match Dynamics::compute(&m, &loads, &spec) {
+            Ok(d) => {
+                ok += 1;
+                let c = &d.cycle;
+                for x in c
+                    .inertia
+                    .iter()
+                    .chain(&c.moment)
+                    .chain(&c.energy)
+                    .chain(&d.motion.omega)
+                    .chain(&d.motion.epsilon)
+                {
+                    assert!(x.is_finite());
+                }
+                let r = d.required;
+                assert!(r.merkalov.is_finite() && r.exact.is_finite() && (r.wittenbauer / r.exact - 1.0).abs() < 1e-6);
+                assert!(d.motion.delta <= spec.delta * (1.0 + 1e-9));
+                if let Some(f) = d.flywheel {
+                    assert!(f.diameter > 0.0 && f.mass > 0.0 && f.diameter.is_finite());
+                }
+            }
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+    }
+    assert!(ok >= 6, "{ok}");
 }

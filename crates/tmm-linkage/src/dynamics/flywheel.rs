@@ -54,3 +54,31 @@ pub fn size(inertia: f64, spec: &FlywheelSpec) -> FlywheelSize {
         mass: spec.density * PI * pb * d * d * d * k2 / 4.0,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A rim against the hollow cylinder's J = m·(D² + d²)/8 (its own formula,
+    /// not the fifth-power form the code inverts) and its proportions.
+    #[test]
+    fn rim_matches_the_hollow_cylinder() {
+        let spec = FlywheelSpec {
+            place: super::super::spec::FlywheelPlace::Crank,
+            density: 7200.0,
+            shape: FlywheelShape::Rim {
+                width_ratio: 0.15,
+                thickness_ratio: 0.08,
+            },
+        };
+        let s = size(3.5, &spec);
+        let d_in = s.diameter - 2.0 * s.thickness;
+        let j = s.mass * (s.diameter * s.diameter + d_in * d_in) / 8.0;
+        assert!((j - 3.5).abs() < 1e-12, "{j}");
+        assert!((s.width - 0.15 * s.diameter).abs() < 1e-15);
+        assert!((s.thickness - 0.08 * s.diameter).abs() < 1e-15);
+        // the mass from the volume of the ring
+        let vol = PI / 4.0 * (s.diameter * s.diameter - d_in * d_in) * s.width;
+        assert!((s.mass - 7200.0 * vol).abs() < 1e-9);
+    }
+}
