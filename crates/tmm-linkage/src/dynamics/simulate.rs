@@ -98,9 +98,10 @@ impl<'a> Simulator<'a> {
         }
     }
 
-    /// Integrate from cycle angle 0 at speed `omega0` until `stop` says so
-    /// after a completed cycle (at most `max_cycles`), recording ω(t) when
-    /// `trace` is given.
+    /// Integrate from cycle angle 0 at speed `omega0` (0: from rest) to
+    /// relative tolerance `rtol` until `stop` says so after a completed cycle
+    /// (at most `max_cycles`), recording ω(t) at every accepted step when
+    /// `trace` is given. Returns the last cycle.
     pub fn run(
         &mut self,
         omega0: f64,
