@@ -3,8 +3,10 @@
 //! speed, T_II(φ) = I_II(φ)·ω_m²/2; the rest, T_I(φ) = ΔT(φ) − T_II(φ), is
 //! the energy of the constant inertia (up to a constant), whose swing
 //! ΔT_I = max T_I − min T_I must be held within ±δ/2 of ω_m:
-//! I_I = ΔT_I/(δ·ω_m²) (Артоболевский 1988, § 21; Попов С. А., Тимофеев Г. А.,
-//! *Курсовое проектирование по ТММ*, 2002, § 3.3).
+//! I_I = ΔT_I/(δ·ω_m²) (Артоболевский И. И., *Теория механизмов и машин*, 1988, the
+//! chapter on the regulation of the machine's motion by a flywheel;
+//! Попов С. А., Тимофеев Г. А., *Курсовое проектирование по теории
+//! механизмов и механике машин*, 2002, the dynamics sheet).
 //!
 //! The method is approximate: it takes ω = ω_m in T_II. The error is of
 //! order δ (docs/dynamics.md), so it tends to the exact inertia as δ → 0.

@@ -2,8 +2,9 @@
 //! движения звена приведения): from the energy equation
 //! I(φ)·ω²/2 = T₀ + ΔT(φ), ω(φ) = √(2·(T₀ + ΔT)/I); from the equation of
 //! motion in the energy form, I·ε + ½·I′·ω² = M_d + M_c, the angular
-//! acceleration ε(φ) = (M_d + M_c)/I − ω²·I′/(2I) (Артоболевский 1988,
-//! § 19, eq. of motion of the link of reduction); the time from the start of
+//! acceleration ε(φ) = (M_d + M_c)/I − ω²·I′/(2I) (derived in
+//! docs/dynamics.md from the energy equation; Артоболевский 1988, the
+//! equation of motion of the link of reduction); the time from the start of
 //! the cycle t(φ) = ∫ dφ/ω (trapezoid rule on the grid; 1/ω is smooth, the
 //! error is below 1e-9 of the cycle time on 3600 intervals).
 

@@ -8,7 +8,8 @@
 //! acceleration, so that every velocity *is* the analogue dx/dφ and every
 //! acceleration the second analogue d²x/dφ².
 //!
-//! Formulas (Артоболевский И. И., *Теория механизмов и машин*, 1988, § 19;
+//! Formulas (Артоболевский И. И., *Теория механизмов и машин*, 1988, the
+//! reduction of masses and forces;
 //! the derivative derived in docs/dynamics.md):
 //!
 //! - I_II(φ) = Σ_{i≠1} [m_i·|v_Si/ω₁|² + J_Si·(ω_i/ω₁)²];

@@ -2,7 +2,7 @@
 //! I_II, dI_II/dφ and M_c on a uniform grid of the crank angle, the work of
 //! the loads A_c(φ) = ∫₀^φ M_c dφ (работа сил сопротивления), the constant
 //! driving moment from zero work over the steady cycle,
-//! M_d = −A_c(2π)/(2π) (Артоболевский 1988, § 20: "за цикл установившегося
+//! M_d = −A_c(2π)/(2π) (Артоболевский 1988, steady motion: "за цикл установившегося
 //! движения работа движущих сил равна работе сил сопротивления"), its work
 //! A_d = M_d·φ, and the change of kinetic energy ΔT = A_d + A_c.
 //!

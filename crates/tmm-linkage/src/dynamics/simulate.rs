@@ -1,6 +1,6 @@
 //! The motion by time integration of the equation of motion of the link of
 //! reduction (уравнение движения в дифференциальной форме,
-//! Артоболевский 1988, § 19):
+//! Артоболевский 1988, the equation of motion of the machine):
 //!
 //! dφ/dt = ω, dω/dt = (M_d(ω) + M_c(φ) − ½·I′(φ)·ω²)/(I_I + I_II(φ)),
 //!

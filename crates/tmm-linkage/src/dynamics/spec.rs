@@ -32,8 +32,9 @@ pub struct Motor {
 impl Motor {
     /// Torque on the motor shaft at motor speed `w`, N·m:
     /// M = M_n·(ω_s − w)/(ω_s − ω_n) (the linearised working branch, e.g.
-    /// Артоболевский И. И., *Теория механизмов и машин*, 1988, § 19 — the
-    /// static characteristic of an asynchronous motor).
+    /// the straight line through the synchronous point (ω_s, 0) and the
+    /// nominal point (ω_n, M_n), the linearised working branch of the
+    /// mechanical characteristic; docs/dynamics.md).
     ///
     /// ```
     /// use tmm_linkage::dynamics::Motor;

@@ -6,7 +6,8 @@
 //! k_min = ω_min²/2 (below); O′ is their intersection:
 //! b_max = max(ΔT − k_max·I_II), b_min = min(ΔT − k_min·I_II),
 //! I_I = (b_max − b_min)/(k_max − k_min), T₀ = k_max·I_I − b_max
-//! (Артоболевский 1988, § 21; Wittenbauer F., *Graphische Dynamik*, 1923).
+//! (Wittenbauer F., *Graphische Dynamik*, Springer, 1923; Артоболевский 1988,
+//! the energy–mass diagram).
 //! Done exactly (the supporting lines touch the exact curve), this is the
 //! exact steady motion, not an approximation.
 
