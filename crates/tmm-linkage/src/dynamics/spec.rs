@@ -31,8 +31,7 @@ pub struct Motor {
 
 impl Motor {
     /// Torque on the motor shaft at motor speed `w`, N·m:
-    /// M = M_n·(ω_s − w)/(ω_s − ω_n) (the linearised working branch, e.g.
-    /// the straight line through the synchronous point (ω_s, 0) and the
+    /// M = M_n·(ω_s − w)/(ω_s − ω_n) (the straight line through the synchronous point (ω_s, 0) and the
     /// nominal point (ω_n, M_n), the linearised working branch of the
     /// mechanical characteristic; docs/dynamics.md).
     ///
