@@ -519,6 +519,10 @@ fn bad_input_is_reported() {
     let e = Dynamics::compute(&m, &masses, &DynamicsSpec::new(0.02)).unwrap_err();
     assert!(matches!(e, DynamicsError::NoResistance { .. }), "{e}");
     assert!(e.to_string().contains("[forces]"));
+    // weights only: their work over a cycle is zero up to rounding
+    masses.gravity = v(0.0, -9.81);
+    let e = Dynamics::compute(&m, &masses, &DynamicsSpec::new(0.02)).unwrap_err();
+    assert!(matches!(e, DynamicsError::NoResistance { .. }), "{e}");
 }
 
 /// Random loads, δ and flywheel shapes on every seed mechanism: either a

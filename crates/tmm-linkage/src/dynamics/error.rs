@@ -23,7 +23,8 @@ pub enum DynamicsError {
         "the loads do no resisting work over a cycle (work of the loads {work:.6e} J per turn of the crank); the dynamics needs a useful resistance or other loads that the drive must overcome (give them in [forces])"
     )]
     NoResistance {
-        /// The work of all loads over one cycle, J (≥ 0 here).
+        /// The work of all loads over one cycle, J (≥ 0, or negative only by
+        /// rounding: within 1e-9 of ∫|M_c|dφ).
         work: f64,
     },
     /// The loads are wrong for the mechanism.

@@ -96,7 +96,11 @@ impl ReducedCycle {
                 what: "the reduced inertia, moment or work of the loads".into(),
             });
         }
-        if a >= 0.0 {
+        // conservative loads (weights, fixed forces on the rocker) do zero
+        // work up to rounding: a cycle work within 1e-9 of the work of |M_c|
+        // is no resistance
+        let gross = c.moment.iter().map(|m| m.abs()).sum::<f64>() * h;
+        if a >= -1e-9 * gross {
             return Err(DynamicsError::NoResistance { work: a });
         }
         let md = -a / (2.0 * PI);
