@@ -274,10 +274,15 @@ fn wittenbauer_equals_exact() {
 
 /// The exact flywheel, re-integrated in time (Dormand–Prince) from the exact
 /// start over one cycle, gives back δ, ω_m, the cycle time and a periodic
-/// speed — for two mechanisms.
+/// speed — for three mechanisms (one turning clockwise).
 #[test]
 fn time_integration_reproduces_delta_and_mean_speed() {
-    for (m, loads) in [(seed001(), seed001_loads(&seed001())), (seed003(), seed003_loads(&seed003()))] {
+    let sl = slotted_loads(&slotted(), &mut Rng(7));
+    for (m, loads) in [
+        (seed001(), seed001_loads(&seed001())),
+        (seed003(), seed003_loads(&seed003())),
+        (slotted(), sl),
+    ] {
         let d = Dynamics::compute(&m, &loads, &DynamicsSpec::new(0.02)).unwrap();
         let s = d.simulated;
         assert!((s.delta - 0.02).abs() < 1e-6, "{s:?}");
@@ -389,7 +394,12 @@ fn crank_with_constant_inertia_and_sine_load_by_hand() {
 /// M_b = M_d − (I_I − I_crank)·ε₁ (the shaft's equation of motion).
 #[test]
 fn kinetostatics_with_the_true_crank_motion() {
-    for (m, loads) in [(seed001(), seed001_loads(&seed001())), (seed003(), seed003_loads(&seed003()))] {
+    let sl = slotted_loads(&slotted(), &mut Rng(7));
+    for (m, loads) in [
+        (seed001(), seed001_loads(&seed001())),
+        (seed003(), seed003_loads(&seed003())),
+        (slotted(), sl),
+    ] {
         let d = Dynamics::compute(&m, &loads, &DynamicsSpec::new(0.03)).unwrap();
         let mut k = Kinetostatics::new(&m, loads.clone()).unwrap();
         let mut f = k.result();
