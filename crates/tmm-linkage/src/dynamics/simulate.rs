@@ -145,7 +145,9 @@ impl<'a> Simulator<'a> {
         }
         while k < max_cycles {
             d.step(&mut rhs)?;
-            if d.y[1] <= 0.0 {
+            // a crank creeping towards a standstill never ends its cycle: a
+            // cycle taking a hundred thousand steps more than usual is a stall
+            if d.y[1] <= 0.0 || d.accepted > 100_000 + 5_000 * (k + 1) {
                 return Err(DynamicsError::Stall {
                     time: d.t,
                     phi_deg: d.y[0].rem_euclid(2.0 * PI).to_degrees(),
