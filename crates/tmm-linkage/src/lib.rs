@@ -24,6 +24,7 @@
 pub mod constraints;
 pub mod cycle;
 pub mod dyad;
+pub mod dynamics;
 pub mod error;
 pub mod forces;
 pub mod mechanism;

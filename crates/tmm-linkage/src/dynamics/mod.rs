@@ -1,0 +1,296 @@
+//! Dynamics of the machine (динамический анализ и синтез машинного
+//! агрегата), stage 3 of the course project: the mechanism reduced to its
+//! crank, the flywheel (маховик) for a given coefficient of speed
+//! fluctuation δ by Merkalov's method, by Wittenbauer's energy–mass diagram
+//! and exactly, its size, the true motion of the crank over the steady
+//! cycle, and the motion by time integration (the steady cycle re-integrated
+//! and, with a motor, the run-up from rest).
+//!
+//! Module map, one concept per file:
+//! - [`spec`]: what the user gives (δ, the driving moment, shafts, flywheel);
+//! - [`reduced`]: I_II, I_II′ and M_c at one crank angle, from the analogues;
+//! - [`reduction`]: the same over the cycle, the work and ΔT;
+//! - [`extremum`]: extremes over the cycle, refined between the nodes;
+//! - [`merkalov`], [`wittenbauer`], [`exact`]: the three ways to the inertia;
+//! - [`flywheel`]: the flywheel's size;
+//! - [`motion`]: ω(φ), ε(φ), t(φ) over the steady cycle;
+//! - [`ode`]: the Dormand–Prince 5(4) integrator;
+//! - [`simulate`]: the time integration: steady cycle and run-up;
+//! - [`error`]: what can go wrong.
+//!
+//! Derivations and the seed-001 flywheel: docs/dynamics.md.
+//!
+//! ```
+//! use tmm_linkage::{LinkDef, MechanismDef, InputDef, Mechanism};
+//! use tmm_linkage::forces::{Loads, Resistance, Action, Law};
+//! use tmm_linkage::dynamics::{Dynamics, DynamicsSpec};
+//! use tmm_geom::Vec2;
+//! // Seed 001: four-bar, 900 rpm, 10 kg/m, J_S = 0.1·m·l², 380 N·m on the rocker, δ = 0.02.
+//! let def = MechanismDef {
+//!     fixed: vec![("A".into(), Vec2::ZERO), ("D".into(), Vec2::new(0.51, 0.0))],
+//!     links: vec![LinkDef::bar("1", "A", "B", 0.12), LinkDef::bar("2", "B", "C", 0.48), LinkDef::bar("3", "D", "C", 0.38)],
+//!     input: Some(InputDef { link: "1".into(), pivot: "A".into(), pin: "B".into(), omega: 30.0 * std::f64::consts::PI, epsilon: 0.0 }),
+//!     ..Default::default()
+//! };
+//! let m = Mechanism::new(&def).unwrap();
+//! let mut loads = Loads::new(&m);
+//! for (l, len) in [(1, 0.12), (2, 0.48), (3, 0.38)] {
+//!     loads.links[l].mass = 10.0 * len;
+//!     loads.links[l].inertia = 0.1 * 10.0 * len * len * len;
+//! }
+//! loads.resistance.push(Resistance { link: 3, action: Action::Moment { sign: None }, law: Law::Constant(380.0) });
+//! let d = Dynamics::compute(&m, &loads, &DynamicsSpec::new(0.02)).unwrap();
+//! // Wittenbauer's construction done exactly is the exact steady motion
+//! assert!((d.required.wittenbauer / d.required.exact - 1.0).abs() < 1e-6);
+//! // and the time integration gives back δ
+//! assert!((d.simulated.delta - 0.02).abs() < 1e-4);
+//! ```
+
+pub mod error;
+pub mod exact;
+pub mod extremum;
+pub mod flywheel;
+pub mod merkalov;
+pub mod motion;
+pub mod ode;
+pub mod reduced;
+pub mod reduction;
+pub mod simulate;
+pub mod spec;
+pub mod wittenbauer;
+
+pub use error::DynamicsError;
+pub use exact::{Steady, Target};
+pub use flywheel::FlywheelSize;
+pub use merkalov::Merkalov;
+pub use motion::Motion;
+pub use reduced::{Reduced, Reducer, kinetic_energy, with_crank_motion};
+pub use reduction::{EnergyPoint, ReducedCycle};
+pub use simulate::{Runup, SimulatedCycle, Simulator};
+pub use spec::{DrivingMoment, DynamicsSpec, FlywheelPlace, FlywheelShape, FlywheelSpec, Motor, STEEL_DENSITY};
+pub use wittenbauer::{Tangent, Wittenbauer};
+
+use crate::Mechanism;
+use crate::Solution;
+use crate::forces::Loads;
+
+/// The constant inertia required on the crank shaft by each method, kg·m².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RequiredInertia {
+    /// Merkalov's method.
+    pub merkalov: f64,
+    /// Wittenbauer's diagram (done exactly).
+    pub wittenbauer: f64,
+    /// The exact steady motion.
+    pub exact: f64,
+}
+
+/// The constant inertia already on the crank shaft, reduced to it, kg·m².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GivenInertia {
+    /// The crank's own about its pivot, J_S1 + m₁·|AS₁|².
+    pub crank: f64,
+    /// Other parts on the crank shaft.
+    pub crank_shaft: f64,
+    /// The motor shaft's, reduced: u²·J_motor.
+    pub motor_shaft: f64,
+    /// Their sum.
+    pub total: f64,
+}
+
+/// One of the course's 12 positions (every 30° from the start of the cycle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Position {
+    /// Its number, 0…11.
+    pub index: usize,
+    /// Cycle angle from the start of the cycle in the direction of rotation, rad.
+    pub phi: f64,
+    /// Absolute crank angle, rad.
+    pub crank_angle: f64,
+    /// I_II, kg·m².
+    pub inertia: f64,
+    /// M_c, N·m.
+    pub moment: f64,
+    /// M_d, N·m.
+    pub driving_moment: f64,
+    /// A_c, J.
+    pub work_loads: f64,
+    /// A_d, J.
+    pub work_driving: f64,
+    /// ΔT, J.
+    pub energy: f64,
+    /// T_I = ΔT − I_II·ω_m²/2 (Merkalov), J.
+    pub energy_constant: f64,
+    /// ω₁, rad/s (in the direction of rotation).
+    pub omega: f64,
+    /// ε₁, rad/s² (in the direction of rotation).
+    pub epsilon: f64,
+}
+
+/// The whole dynamics of one machine.
+#[derive(Debug, Clone)]
+pub struct Dynamics {
+    /// The specification it was computed for.
+    pub spec: DynamicsSpec,
+    /// The nominal (mean) crank speed ω_m, rad/s (> 0).
+    pub omega_nominal: f64,
+    /// The reduced model at any angle.
+    pub reducer: Reducer,
+    /// The reduced model and energy over the cycle.
+    pub cycle: ReducedCycle,
+    /// The constant inertia already on the crank shaft.
+    pub inertia_given: GivenInertia,
+    /// Merkalov's method in detail.
+    pub merkalov: Merkalov,
+    /// Wittenbauer's construction in detail.
+    pub wittenbauer: Wittenbauer,
+    /// The exact steady motion for δ.
+    pub exact: Steady,
+    /// The required constant inertia by the three methods.
+    pub required: RequiredInertia,
+    /// The flywheel's inertia reduced to the crank shaft (0 when none is needed), kg·m².
+    pub flywheel_inertia_crank: f64,
+    /// The flywheel's own inertia on its shaft, kg·m².
+    pub flywheel_inertia: f64,
+    /// Its size (none when the shaft already carries enough inertia).
+    pub flywheel: Option<FlywheelSize>,
+    /// The steady motion with the flywheel.
+    pub motion: Motion,
+    /// The 12 positions.
+    pub positions: Vec<Position>,
+    /// One steady cycle by time integration: from the exact start with a
+    /// constant moment, the run-up's last cycle with a motor.
+    pub simulated: SimulatedCycle,
+    /// The run-up from rest (with a motor).
+    pub runup: Option<Runup>,
+}
+
+impl Dynamics {
+    /// Everything, for mechanism `m` (its input speed is the nominal one)
+    /// under `loads`.
+    pub fn compute(m: &Mechanism, loads: &Loads, spec: &DynamicsSpec) -> Result<Self, DynamicsError> {
+        spec.check()?;
+        let omega_m = m.crank.omega.abs();
+        let red = Reducer::new(m, loads, spec.working)?;
+        let mut sol = red.solution();
+        let cycle = ReducedCycle::new(&red, spec.points, &mut sol)?;
+        let md = cycle.driving_moment;
+        let ratio = spec.motor().map_or(1.0, |mo| mo.ratio);
+        if let Some(mo) = spec.motor() {
+            let sync = mo.synchronous_speed / mo.ratio;
+            if sync <= omega_m {
+                return Err(DynamicsError::spec(
+                    "dynamics.motor.synchronous_speed",
+                    format!(
+                        "the motor is too slow: its synchronous speed {:.3} rad/s through the ratio {} turns the crank at most at {:.3} rad/s, below the crank's nominal speed {:.3} rad/s; choose a faster motor or a smaller ratio",
+                        mo.synchronous_speed, mo.ratio, sync, omega_m
+                    ),
+                ));
+            }
+            let need = md / mo.ratio;
+            if need > mo.nominal_torque {
+                return Err(DynamicsError::spec(
+                    "dynamics.motor.nominal_torque",
+                    format!(
+                        "the motor is too weak: the machine needs {need:.3} N·m on the motor shaft on average, above its nominal torque {:.3} N·m",
+                        mo.nominal_torque
+                    ),
+                ));
+            }
+        }
+        let given = GivenInertia {
+            crank: red.inertia_crank,
+            crank_shaft: spec.inertia_crank_shaft,
+            motor_shaft: ratio * ratio * spec.inertia_motor_shaft,
+            total: red.inertia_crank + spec.inertia_crank_shaft + ratio * ratio * spec.inertia_motor_shaft,
+        };
+        let delta = spec.delta;
+        let (wmax, wmin) = (omega_m * (1.0 + 0.5 * delta), omega_m * (1.0 - 0.5 * delta));
+        let merkalov = merkalov::merkalov(&red, &cycle, &mut sol, omega_m, delta)?;
+        let wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin)?;
+        let exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), merkalov.inertia)?;
+        let required = RequiredInertia {
+            merkalov: merkalov.inertia,
+            wittenbauer: wittenbauer.inertia,
+            exact: exact.inertia,
+        };
+        let fw_crank = (exact.inertia - given.total).max(0.0);
+        let (fw, size) = if fw_crank > 0.0 {
+            let on = match spec.flywheel.place {
+                FlywheelPlace::Crank => fw_crank,
+                FlywheelPlace::Motor => fw_crank / (ratio * ratio),
+            };
+            (on, Some(flywheel::size(on, &spec.flywheel)))
+        } else {
+            (0.0, None)
+        };
+        // the motion with the flywheel: exactly δ; without one, the given
+        // inertia at mean speed ω_m (δ smaller than asked)
+        let st = if fw_crank > 0.0 {
+            exact
+        } else {
+            exact::steady(&red, &cycle, &mut sol, omega_m, Target::Inertia(given.total), given.total)?
+        };
+        let motion = Motion::new(&cycle, st.inertia, st.energy_start, st.omega_max, st.omega_min)?;
+        let n = cycle.len();
+        let positions = (0..12)
+            .map(|i| {
+                let k = i * n / 12;
+                Position {
+                    index: i,
+                    phi: cycle.phi[k],
+                    crank_angle: red.crank_angle(cycle.phi[k]),
+                    inertia: cycle.inertia[k],
+                    moment: cycle.moment[k],
+                    driving_moment: md,
+                    work_loads: cycle.work_loads[k],
+                    work_driving: cycle.work_driving[k],
+                    energy: cycle.energy[k],
+                    energy_constant: merkalov.energy_constant[k],
+                    omega: motion.omega[k],
+                    epsilon: motion.epsilon[k],
+                }
+            })
+            .collect();
+        let inertia_total = st.inertia;
+        let (simulated, runup) = {
+            let mut sim = Simulator::new(&red, &mut sol, inertia_total, spec.driving, md, omega_m);
+            match spec.driving {
+                DrivingMoment::Constant => (sim.cycle(motion.omega[0])?, None),
+                DrivingMoment::Motor(_) => {
+                    let r = sim.runup(100_000)?;
+                    (r.steady, Some(r))
+                }
+            }
+        };
+        Ok(Dynamics {
+            spec: spec.clone(),
+            omega_nominal: omega_m,
+            reducer: red,
+            cycle,
+            inertia_given: given,
+            merkalov,
+            wittenbauer,
+            exact,
+            required,
+            flywheel_inertia_crank: fw_crank,
+            flywheel_inertia: fw,
+            flywheel: size,
+            motion,
+            positions,
+            simulated,
+            runup,
+        })
+    }
+
+    /// A solution buffer for [`Dynamics::crank_motion_at`].
+    pub fn solution(&self) -> Solution {
+        self.reducer.solution()
+    }
+
+    /// The crank's true speed and acceleration (ω₁, ε₁) at absolute crank
+    /// angle `phi`, signed as the mechanism's input.
+    pub fn crank_motion_at(&self, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
+        self.motion.at(&self.reducer, &self.cycle, phi, sol)
+    }
+}
