@@ -1,0 +1,173 @@
+//! The independent check of a synthesised mechanism (проверка синтеза) by the
+//! linkage core, not by the synthesis formulas: the mechanism is compiled,
+//! assembled over the whole turn of the crank (so the crank turns fully), its
+//! dead positions are found as roots of ds/dφ = 0 ([`Cycle`]), and K and the
+//! stroke or swing are compared with the request to 1e-9. The pressure angle
+//! curve of every dyad is scanned over the cycle and its largest value on
+//! each stroke refined by golden-section search.
+
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+use crate::cycle::{Cycle, OutputKind, Working, pressure_angles};
+use crate::mechanism::{Mechanism, Solution};
+use crate::model::MechanismDef;
+
+use super::error::SynthesisError;
+use super::limits::Limits;
+use super::result::{CheckReport, Stroke};
+
+/// Relative tolerance on K and on the stroke.
+pub const TOL: f64 = 1e-9;
+
+/// What the check must find.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Expect {
+    /// K requested (`None`: whatever the mechanism gives).
+    pub k: Option<f64>,
+    /// Stroke or swing requested.
+    pub stroke: Option<Stroke>,
+}
+
+/// Largest pressure angle over the dyads at crank angle `phi` (0 when the
+/// position cannot be solved, which the cycle analysis has already excluded).
+fn worst_at(m: &Mechanism, phi: f64, sol: &mut Solution, buf: &mut Vec<(usize, f64)>) -> f64 {
+    if m.solve(phi, sol).is_err() {
+        return 0.0;
+    }
+    pressure_angles(m, sol, buf);
+    buf.iter().fold(0.0f64, |a, &(_, t)| a.max(t))
+}
+
+/// Largest pressure angle on the crank travel [ψ0, ψ1] from `start` in the
+/// direction `sg`: a scan of `n` steps, then golden-section refinement.
+fn stroke_max(m: &Mechanism, start: f64, sg: f64, (psi0, psi1): (f64, f64), sol: &mut Solution, buf: &mut Vec<(usize, f64)>) -> f64 {
+    let n = 180;
+    let h = (psi1 - psi0) / n as f64;
+    let mut best = (psi0, f64::NEG_INFINITY);
+    for k in 0..=n {
+        let psi = psi0 + h * k as f64;
+        let v = worst_at(m, start + sg * psi, sol, buf);
+        if v > best.1 {
+            best = (psi, v);
+        }
+    }
+    // golden section on [best − h, best + h] ∩ [ψ0, ψ1]
+    let (mut a, mut b) = ((best.0 - h).max(psi0), (best.0 + h).min(psi1));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let mut fc = worst_at(m, start + sg * c, sol, buf);
+    let mut fd = worst_at(m, start + sg * d, sol, buf);
+    for _ in 0..60 {
+        if fc > fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = worst_at(m, start + sg * c, sol, buf);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = worst_at(m, start + sg * d, sol, buf);
+        }
+        if b - a < 1e-11 {
+            break;
+        }
+    }
+    best.1.max(fc).max(fd)
+}
+
+/// Every named point of the mechanism at crank angle `phi`.
+pub fn points_at(m: &Mechanism, phi: f64) -> Result<Vec<(String, tmm_geom::Vec2)>, SynthesisError> {
+    let mut sol = m.solution();
+    m.solve(phi, &mut sol)?;
+    Ok(m.points.iter().zip(&sol.points).map(|(p, s)| (p.name.clone(), s.p)).collect())
+}
+
+/// Check a mechanism whose crank must turn fully: K, stroke, pressure angles.
+pub fn check_cycle(def: &MechanismDef, expect: &Expect, branch: &str) -> Result<CheckReport, SynthesisError> {
+    let m = Mechanism::new(def)?;
+    let cycle = Cycle::new(&m, Working::Slower)?;
+    if cycle.dead.len() != 2 {
+        return Err(SynthesisError::Check(
+            "the output has no two dead positions: it does not oscillate".into(),
+        ));
+    }
+    if let Some(k) = expect.k {
+        if (cycle.kv - k).abs() > TOL * k.max(1.0) {
+            return Err(SynthesisError::Check(format!(
+                "K = {:.12} found over the cycle, {k:.12} requested",
+                cycle.kv
+            )));
+        }
+    }
+    let stroke = match cycle.output.kind {
+        OutputKind::Linear => Stroke::Linear(cycle.stroke),
+        OutputKind::Angular => Stroke::Angular(cycle.stroke),
+    };
+    match (expect.stroke, stroke) {
+        (Some(Stroke::Linear(h)), Stroke::Linear(s)) | (Some(Stroke::Angular(h)), Stroke::Angular(s)) => {
+            if (h - s).abs() > TOL * h.max(1.0) {
+                return Err(SynthesisError::Check(format!(
+                    "stroke {s:.12} found over the cycle, {h:.12} requested"
+                )));
+            }
+        }
+        (None, _) => {}
+        _ => return Err(SynthesisError::Check("the output is not of the requested kind".into())),
+    }
+    let sg = m.crank.omega.signum();
+    let mut sol = m.solution();
+    let mut buf = Vec::with_capacity(4);
+    let w = stroke_max(&m, cycle.start, sg, (0.0, cycle.working_angle), &mut sol, &mut buf);
+    let r = stroke_max(&m, cycle.start, sg, (cycle.working_angle, TAU), &mut sol, &mut buf);
+    let dead_positions = vec![points_at(&m, cycle.dead[0])?, points_at(&m, cycle.dead[1])?];
+    Ok(CheckReport {
+        k: Some(cycle.kv),
+        theta: Some(cycle.theta),
+        stroke: Some(stroke),
+        pressure_angle_max: (w, r),
+        transmission_angle_min: FRAC_PI_2 - w.max(r),
+        crank_turns_fully: true,
+        branch: branch.to_string(),
+        dead_phi: cycle.dead.clone(),
+        dead_positions,
+    })
+}
+
+/// The limits against the checked pressure angles: an error naming the
+/// stroke, the angle found and the limit.
+pub fn check_limits(limits: &Limits, report: &CheckReport) -> Result<(), SynthesisError> {
+    let (lw, lr) = limits.pressure();
+    let (w, r) = report.pressure_angle_max;
+    let eps = 1e-9;
+    if let Some(l) = lw {
+        if w > l + eps {
+            return Err(SynthesisError::infeasible(
+                "limits.pressure_working",
+                format!(
+                    "the largest pressure angle on the working stroke is {:.4}°, above the allowed {:.4}°",
+                    w.to_degrees(),
+                    l.to_degrees()
+                ),
+                Some(w),
+            ));
+        }
+    }
+    if let Some(l) = lr {
+        if r > l + eps {
+            return Err(SynthesisError::infeasible(
+                "limits.pressure_return",
+                format!(
+                    "the largest pressure angle on the return stroke is {:.4}°, above the allowed {:.4}°",
+                    r.to_degrees(),
+                    l.to_degrees()
+                ),
+                Some(r),
+            ));
+        }
+    }
+    Ok(())
+}
