@@ -171,3 +171,9 @@ pub fn check_limits(limits: &Limits, report: &CheckReport) -> Result<(), Synthes
     }
     Ok(())
 }
+
+/// The assembly angle is taken this far (rad) past the extended dead
+/// position, where the hint "near the extreme position" still picks the
+/// branch unambiguously and the scan for dead positions does not start on a
+/// root of ds/dφ.
+pub const ASSEMBLY_OFFSET: f64 = 0.1;

@@ -13,7 +13,7 @@ use tmm_geom::Vec2;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef};
 
-use super::check::{Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -122,7 +122,7 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
             point: "B".into(),
             kind: HintKind::Near(c_ext),
         }],
-        assembly_angle: place.angle(b.phi_ext),
+        assembly_angle: place.angle(b.phi_ext) + ASSEMBLY_OFFSET,
         output: Some("3".into()),
         ..Default::default()
     };

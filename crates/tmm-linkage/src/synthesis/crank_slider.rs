@@ -26,7 +26,7 @@ use tmm_geom::root::brent;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use super::check::{Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -372,7 +372,7 @@ fn build(
             point: "B".into(),
             kind: HintKind::Near(b_ext),
         }],
-        assembly_angle: b_ext.atan2(),
+        assembly_angle: b_ext.atan2() + ASSEMBLY_OFFSET,
         output: Some("3".into()),
     };
     let check = check_cycle(
@@ -522,7 +522,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
             point: "B".into(),
             kind: HintKind::Near(b_ext),
         }],
-        assembly_angle: b_ext.atan2(),
+        assembly_angle: b_ext.atan2() + ASSEMBLY_OFFSET,
         output: Some("3".into()),
     };
     let check = check_cycle(&def, &Expect { k: None, stroke: None }, "B on the side x > x_A")?;

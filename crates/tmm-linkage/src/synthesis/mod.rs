@@ -26,12 +26,14 @@ pub mod check;
 pub mod crank_rocker;
 pub mod crank_slider;
 pub mod error;
+pub mod function_gen;
 pub mod limits;
 pub mod locus;
 pub mod pivot;
 pub mod placement;
 pub mod result;
 pub mod search;
+pub mod slotted;
 pub mod time_ratio;
 
 pub use error::SynthesisError;
