@@ -45,7 +45,7 @@ fn solve3(m: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
     };
     let d = det(m);
     let scale = m.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs())).powi(3);
-    if !(d.abs() > 1e-12 * scale) {
+    if d.is_nan() || d.abs() <= 1e-12 * scale {
         return None;
     }
     let mut x = [0.0; 3];

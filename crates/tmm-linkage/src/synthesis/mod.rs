@@ -27,12 +27,14 @@ pub mod crank_rocker;
 pub mod crank_slider;
 pub mod error;
 pub mod function_gen;
+pub mod knee_press;
 pub mod limits;
 pub mod locus;
 pub mod pivot;
 pub mod placement;
 pub mod result;
 pub mod search;
+pub mod six_bar;
 pub mod slotted;
 pub mod time_ratio;
 

@@ -43,6 +43,13 @@ pub enum PivotCondition {
         /// Direction of the line.
         dir: Vec2,
     },
+    /// The largest pressure angle of the four-bar over the cycle, rad (seed
+    /// 003 § 3: 38°).
+    MaxPressure(f64),
+    /// The pressure angle at one of the two dead positions, rad: the pivot on
+    /// a line through an extreme position C at ϑ to C's velocity (seed 003 § 3:
+    /// 38° in the extreme position K1).
+    ExtremePressure(f64),
     /// The best margin against the limits (no limits: the largest smallest
     /// transmission angle).
     Optimum,
@@ -169,7 +176,8 @@ fn value_of(cond: &PivotCondition, b: &FourBar) -> f64 {
         PivotCondition::CrankLength(_) => b.l1,
         PivotCondition::FrameDistance(_) => b.frame,
         PivotCondition::OnLine { point, dir } => cross(dir * (1.0 / dir.hypot()), b.o - point),
-        PivotCondition::Optimum => 0.0,
+        PivotCondition::MaxPressure(_) => b.pressure.0.max(b.pressure.1),
+        PivotCondition::ExtremePressure(_) | PivotCondition::Optimum => 0.0,
     }
 }
 
@@ -201,7 +209,8 @@ fn nearest(locus: &Locus, d: Vec2, sg: f64, cond: &PivotCondition, target: f64) 
 /// for [`PivotCondition::OnLine`] the error's nearest value is the signed
 /// offset (along the line's left normal) of the nearest line that works.
 pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Limits, field: &str) -> Result<PivotChoice, SynthesisError> {
-    let score = |b: &FourBar| limits.margin(b.pressure.0, b.pressure.1);
+    // margin first; among equal margins the more compact four-bar
+    let score = |b: &FourBar| limits.margin(b.pressure.0, b.pressure.1) - 1e-9 * (b.l2 + b.frame) / b.l3;
     let mut cands: Vec<FourBar> = Vec::new();
     let (lo, hi) = locus.domain();
     let what;
@@ -254,6 +263,44 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
                 }
             }
         }
+        PivotCondition::MaxPressure(p) => {
+            what = format!("the largest pressure angle {:.4}°", p.to_degrees());
+            let n = 720;
+            for side in [1.0, -1.0] {
+                let f = |w: f64| evaluate(&locus, d, locus.point(side, w), sg).map_or(f64::NAN, |b| b.pressure.0.max(b.pressure.1) - p);
+                let h = (hi - lo) / (n + 1) as f64;
+                let mut prev = (lo + h, f(lo + h));
+                for k in 2..=n {
+                    let w = lo + h * k as f64;
+                    let v = f(w);
+                    if prev.1.is_finite() && v.is_finite() && prev.1.signum() != v.signum() {
+                        if let Some(root) = tmm_geom::root::brent(f, prev.0, w, 1e-15) {
+                            if let Some(b) = evaluate(&locus, d, locus.point(side, root), sg) {
+                                cands.push(b);
+                            }
+                        }
+                    }
+                    prev = (w, v);
+                }
+            }
+        }
+        PivotCondition::ExtremePressure(p) => {
+            what = format!("the pressure angle {:.4}° at a dead position", p.to_degrees());
+            for c in [locus.c1, locus.c2] {
+                let v = perp(c - d);
+                for a in [p, -p] {
+                    let (s, co) = a.sin_cos();
+                    let dir = Vec2::new(co * v.x - s * v.y, s * v.x + co * v.y);
+                    for side in [1.0, -1.0] {
+                        for o in locus.meet_line(side, c, dir) {
+                            if let Some(b) = evaluate(&locus, d, o, sg) {
+                                cands.push(b);
+                            }
+                        }
+                    }
+                }
+            }
+        }
         PivotCondition::Optimum => {
             let mut best: Option<FourBar> = None;
             for side in [1.0, -1.0] {
@@ -299,9 +346,17 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
     }
     let n = cands.len();
     let Some(bar) = cands.into_iter().max_by(|a, b| score(a).total_cmp(&score(b))) else {
+        if let PivotCondition::ExtremePressure(_) = cond {
+            return Err(SynthesisError::infeasible(
+                field,
+                format!("no crank pivot on the locus of K gives a crank-rocker with {what}"),
+                None,
+            ));
+        }
         let target = match cond {
             PivotCondition::CrankLength(l) => l,
             PivotCondition::FrameDistance(f) => f,
+            PivotCondition::MaxPressure(p) => p,
             _ => 0.0,
         };
         return Err(SynthesisError::infeasible(
