@@ -138,35 +138,36 @@ pub fn check_cycle(def: &MechanismDef, expect: &Expect, branch: &str) -> Result<
 }
 
 /// The limits against the checked pressure angles: an error naming the
-/// stroke, the angle found and the limit.
+/// limit that fails, the angle found and the limit; the nearest feasible
+/// value is the one this design reaches.
 pub fn check_limits(limits: &Limits, report: &CheckReport) -> Result<(), SynthesisError> {
-    let (lw, lr) = limits.pressure();
     let (w, r) = report.pressure_angle_max;
     let eps = 1e-9;
-    if let Some(l) = lw {
+    let fail = |field: &str, what: &str, found: f64, limit: f64| {
+        Err(SynthesisError::infeasible(
+            field,
+            format!(
+                "{what} is {:.4}°, the limit {:.4}° cannot be met",
+                found.to_degrees(),
+                limit.to_degrees()
+            ),
+            Some(found),
+        ))
+    };
+    if let Some(l) = limits.pressure_working {
         if w > l + eps {
-            return Err(SynthesisError::infeasible(
-                "limits.pressure_working",
-                format!(
-                    "the largest pressure angle on the working stroke is {:.4}°, above the allowed {:.4}°",
-                    w.to_degrees(),
-                    l.to_degrees()
-                ),
-                Some(w),
-            ));
+            return fail("limits.pressure_working", "the largest pressure angle on the working stroke", w, l);
         }
     }
-    if let Some(l) = lr {
+    if let Some(l) = limits.pressure_return {
         if r > l + eps {
-            return Err(SynthesisError::infeasible(
-                "limits.pressure_return",
-                format!(
-                    "the largest pressure angle on the return stroke is {:.4}°, above the allowed {:.4}°",
-                    r.to_degrees(),
-                    l.to_degrees()
-                ),
-                Some(r),
-            ));
+            return fail("limits.pressure_return", "the largest pressure angle on the return stroke", r, l);
+        }
+    }
+    if let Some(g) = limits.transmission_min {
+        let found = FRAC_PI_2 - w.max(r);
+        if found < g - eps {
+            return fail("limits.transmission_min", "the smallest transmission angle", found, g);
         }
     }
     Ok(())

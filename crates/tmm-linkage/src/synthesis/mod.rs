@@ -32,12 +32,15 @@ pub mod limits;
 pub mod locus;
 pub mod pivot;
 pub mod placement;
+pub mod request;
 pub mod result;
 pub mod search;
 pub mod six_bar;
 pub mod slotted;
+pub mod sweep;
 pub mod time_ratio;
 
 pub use error::SynthesisError;
 pub use limits::{Drive, Limits, Rotation};
+pub use request::{Request, synthesize};
 pub use result::{CheckReport, Construction, FreeParameter, Kind, LocusCircle, Stroke, Synthesis};
