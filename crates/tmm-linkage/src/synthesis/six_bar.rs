@@ -103,30 +103,36 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
     let off = (led * led - 0.25 * dd * dd).sqrt();
     let n = Vec2::new(-dv.y, dv.x) * (1.0 / dd);
     // a candidate D′ is valid when the slider moves monotonically from E′ to
-    // E″ while the lever turns from D′ by γ on one assembly branch
+    // E″ while the lever turns from D′ by γ on one assembly branch: the
+    // derivative dx_E/dβ = ẋ_D + s·(y_g − y_D)·ẏ_D/√(l_ED² − (y_g − y_D)²) keeps
+    // the sign of the travel at every sample and at both ends (it vanishes
+    // only where DE lies along the lever, a dead position of the
+    // rocker-slider)
     let valid = |d1: Vec2| -> Option<f64> {
         let rho = d1.hypot();
         if rho < 1e-9 * led {
             return None;
         }
         let s = (e1.x - d1.x).signum();
-        let steps = 64;
-        let mut prev = e1.x;
+        let steps = 256;
         let mut worst = 0.0f64;
+        let mut x = e1.x;
         for k in 0..=steps {
             let d = rot(d1, gamma * k as f64 / steps as f64);
             let dy = yg - d.y;
-            if dy.abs() >= led {
+            let root = (led * led - dy * dy).sqrt();
+            if root.is_nan() || root <= 1e-9 * led {
                 return None;
             }
-            let x = d.x + s * (led * led - dy * dy).sqrt();
-            if k > 0 && (x - prev) * travel <= 0.0 {
+            let v = Vec2::new(-d.y, d.x) * gamma.signum();
+            let dx = v.x + s * dy * v.y / root;
+            if dx * travel.signum() <= 1e-9 * rho {
                 return None;
             }
-            prev = x;
+            x = d.x + s * root;
             worst = worst.max((dy.abs() / led).asin());
         }
-        ((prev - e2.x).abs() < 1e-9 * h.max(1.0)).then_some(worst)
+        ((x - e2.x).abs() < 1e-9 * h.max(1.0)).then_some(worst)
     };
     let mut cands: Vec<(Vec2, f64)> = [mid + n * off, mid - n * off]
         .into_iter()
