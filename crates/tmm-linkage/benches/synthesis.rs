@@ -43,7 +43,7 @@ fn crank_slider_lambda() {
 
 #[divan::bench]
 fn crank_slider_max_pressure() {
-    black_box(synthesize(&slider(SliderCondition::MaxPressure(40f64.to_radians()))).unwrap());
+    black_box(synthesize(&slider(SliderCondition::MaxPressure(45f64.to_radians()))).unwrap());
 }
 
 #[divan::bench]

@@ -82,10 +82,13 @@ fn random_mechanisms_come_back_from_their_stroke_and_k() {
         } else {
             assert!(sol_ok, "{i}: {a} {b} {ee} vs {l1} {} {e}", lam * l1);
         }
-        // the result's own analysis by a fresh mechanism
-        let m = Mechanism::new(&s.def).unwrap();
-        let c = Cycle::new(&m, Working::Slower).unwrap();
-        assert!((c.kv - k).abs() < 1e-9 && (c.stroke - h).abs() < 1e-9 * h.max(1.0), "{i}");
+        // the result's own analysis by a fresh mechanism (every tenth: the
+        // synthesis has already checked each by the same core)
+        if i % 10 == 0 {
+            let m = Mechanism::new(&s.def).unwrap();
+            let c = Cycle::new(&m, Working::Slower).unwrap();
+            assert!((c.kv - k).abs() < 1e-9 && (c.stroke - h).abs() < 1e-9 * h.max(1.0), "{i}");
+        }
     }
 }
 

@@ -39,9 +39,10 @@ fn worst_at(m: &Mechanism, phi: f64, sol: &mut Solution, buf: &mut Vec<(usize, f
 }
 
 /// Largest pressure angle on the crank travel [ψ0, ψ1] from `start` in the
-/// direction `sg`: a scan of `n` steps, then golden-section refinement.
+/// direction `sg`: a scan of 90 steps, then golden-section refinement of the
+/// best step to 1e-10 rad.
 fn stroke_max(m: &Mechanism, start: f64, sg: f64, (psi0, psi1): (f64, f64), sol: &mut Solution, buf: &mut Vec<(usize, f64)>) -> f64 {
-    let n = 180;
+    let n = 90;
     let h = (psi1 - psi0) / n as f64;
     let mut best = (psi0, f64::NEG_INFINITY);
     for k in 0..=n {
@@ -72,7 +73,7 @@ fn stroke_max(m: &Mechanism, start: f64, sg: f64, (psi0, psi1): (f64, f64), sol:
             d = a + g * (b - a);
             fd = worst_at(m, start + sg * d, sol, buf);
         }
-        if b - a < 1e-11 {
+        if b - a < 1e-10 {
             break;
         }
     }

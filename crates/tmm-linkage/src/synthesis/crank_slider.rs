@@ -564,7 +564,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
         }),
         construction: Construction {
             point: "B".into(),
-            extremes: [b_ext, b_ext],
+            extremes: [point_of(&check, 0, "B"), point_of(&check, 1, "B")],
             locus: None,
             pivot: Vec2::ZERO,
             lines: vec![("guide".into(), Vec2::new(0.0, e), b_ext)],
@@ -572,4 +572,13 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
         def,
         check,
     })
+}
+
+/// A named point at dead position `i` as found by the check.
+fn point_of(check: &super::result::CheckReport, i: usize, name: &str) -> Vec2 {
+    check
+        .dead_positions
+        .get(i)
+        .and_then(|v| v.iter().find(|(n, _)| n == name))
+        .map_or(Vec2::ZERO, |(_, p)| *p)
 }

@@ -212,8 +212,11 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         dead_phi,
         dead_positions,
     };
-    let pts = points_at(&m, phi0 + off_a)?;
-    let at = |n: &str| pts.iter().find(|(x, _)| x == n).map_or(Vec2::ZERO, |(_, p)| *p);
+    let b_at = |phi: f64| -> Result<Vec2, SynthesisError> {
+        let pts = points_at(&m, phi + off_a)?;
+        Ok(pts.iter().find(|(x, _)| x == "B").map_or(Vec2::ZERO, |(_, p)| *p))
+    };
+    let (b_first, b_last) = (b_at(first)?, b_at(last)?);
     let mut given: Vec<(String, f64)> = Vec::new();
     for (i, &(p, q)) in r.positions.iter().enumerate() {
         given.push((format!("phi{}", i + 1), p));
@@ -242,7 +245,7 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         }),
         construction: Construction {
             point: "B".into(),
-            extremes: [at("B"), at("B")],
+            extremes: [b_first, b_last],
             locus: None,
             pivot: Vec2::ZERO,
             lines: vec![],

@@ -81,7 +81,8 @@ pub struct LocusCircle {
 pub struct Construction {
     /// Name of the point whose two extreme positions start the construction.
     pub point: String,
-    /// Its two extreme positions (C′, C″), m.
+    /// Its two extreme positions (C′, C″), m (for a function generator: its
+    /// positions at the first and the last given crank angle).
     pub extremes: [Vec2; 2],
     /// The circle seen at 2θ from its centre and its arc of pivots, when the
     /// construction uses one (θ > 0); for θ = 0 the pivot lies on the line
