@@ -120,3 +120,17 @@ fn sweep_1000_crank_slider_lambda() {
     let t = sweep(&slider(SliderCondition::Lambda(3.5)), "lambda", 1.5, 8.0, 1000).unwrap();
     black_box(t);
 }
+
+/// The parts of one check: compiling the description, and the cycle analysis.
+#[divan::bench]
+fn part_mechanism_new(bencher: divan::Bencher) {
+    let s = synthesize(&rocker(RockerCondition::Crank(0.1))).unwrap();
+    bencher.bench_local(|| black_box(tmm_linkage::Mechanism::new(black_box(&s.def)).unwrap()));
+}
+
+#[divan::bench]
+fn part_cycle_new(bencher: divan::Bencher) {
+    let s = synthesize(&rocker(RockerCondition::Crank(0.1))).unwrap();
+    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
+    bencher.bench_local(|| black_box(tmm_linkage::cycle::Cycle::new(black_box(&m), tmm_linkage::cycle::Working::Slower).unwrap()));
+}

@@ -192,3 +192,34 @@ fn infeasible_requests_name_the_condition_and_the_nearest_value() {
     r.limits.pressure_return = Some(10f64.to_radians());
     assert!(matches!(synthesize(&r), Err(SynthesisError::Infeasible { .. })));
 }
+
+#[test]
+fn random_two_position_requests_recover_the_crank() {
+    // forward: x_C(φ) = l1 cos φ + √(l2² − (e − l1 sin φ)²) (the branch x_C > x_A)
+    let mut rng = Rng(0x5eed_0008);
+    let mut n = 0;
+    while n < 1000 {
+        let l1 = 0.02 + 0.3 * rng.uniform();
+        let lam = 1.6 + 4.0 * rng.uniform();
+        let le = rng.sym(0.9 * (lam - 1.0));
+        let (p0, p1) = (rng.sym(std::f64::consts::PI), rng.sym(std::f64::consts::PI));
+        let (l2, e) = (lam * l1, le * l1);
+        let x = |p: f64| l1 * p.cos() + (l2 * l2 - (e - l1 * p.sin()).powi(2)).sqrt();
+        let travel = x(p0) - x(p1);
+        if travel.abs() < 1e-3 * l1 {
+            continue;
+        }
+        let s = by_two_positions(&TwoPositionsRequest {
+            lambda: lam,
+            lambda_e: le,
+            phi_start: p0,
+            phi_end: p1,
+            travel,
+            drive: Drive::default(),
+        })
+        .unwrap_or_else(|err| panic!("{n}: {err}"));
+        assert!((s.length("OA").unwrap() - l1).abs() < 1e-9 * l1, "{n}");
+        assert!((s.length("e").unwrap() - e).abs() < 1e-9 * l1, "{n}");
+        n += 1;
+    }
+}
