@@ -189,3 +189,39 @@ fn limits_steer_the_optimum_and_impossible_limits_fail() {
         other => panic!("{other:?}"),
     }
 }
+
+#[test]
+fn k_too_large_for_the_swing_names_the_largest_feasible_k() {
+    let r = CrankRockerRequest {
+        k: 10.0,
+        rocker: 0.245,
+        swing: 30f64.to_radians(),
+        condition: RockerCondition::Optimum,
+        drive: Drive::default(),
+        limits: Limits::default(),
+    };
+    match synthesize(&r) {
+        Err(SynthesisError::Infeasible {
+            field, nearest: Some(k), ..
+        }) => {
+            assert_eq!(field, "k");
+            assert!(k > 1.0 && k < 10.0, "{k}");
+            // just below it a crank-rocker exists, and it has the requested K and swing
+            let s = synthesize(&CrankRockerRequest {
+                k: 1.0 + (k - 1.0) * 0.99,
+                ..r
+            })
+            .unwrap();
+            assert!((s.check.k.unwrap() - (1.0 + (k - 1.0) * 0.99)).abs() < 1e-9);
+            // just above it none does
+            assert!(
+                synthesize(&CrankRockerRequest {
+                    k: 1.0 + (k - 1.0) * 1.01,
+                    ..r
+                })
+                .is_err()
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -126,6 +126,7 @@ fn two_positions_reproduce_seed_000_system() {
         phi_end: p1,
         travel: hc,
         drive: Drive::default(),
+        limits: Limits::default(),
     })
     .unwrap();
     let (l1, l2, e) = (s.length("OA").unwrap(), s.length("AB").unwrap(), s.length("e").unwrap());
@@ -216,6 +217,7 @@ fn random_two_position_requests_recover_the_crank() {
             phi_end: p1,
             travel,
             drive: Drive::default(),
+            limits: Limits::default(),
         })
         .unwrap_or_else(|err| panic!("{n}: {err}"));
         assert!((s.length("OA").unwrap() - l1).abs() < 1e-9 * l1, "{n}");

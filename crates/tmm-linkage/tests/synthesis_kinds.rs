@@ -63,6 +63,7 @@ fn function_generation_recovers_random_four_bars() {
             positions,
             frame: d,
             omega: 1.0,
+            limits: Limits::default(),
         })
         .unwrap_or_else(|e| panic!("{n}: {e}"));
         for (name, want) in [("OA", a), ("AB", b), ("BC", c)] {
@@ -81,12 +82,14 @@ fn function_generation_rejects_too_few_and_repeated_positions() {
         positions: vec![(0.1, 0.2), (0.3, 0.4)],
         frame: 1.0,
         omega: 1.0,
+        limits: Limits::default(),
     };
     assert!(matches!(function_gen::synthesize(&r), Err(SynthesisError::Input { .. })));
     let r = FunctionRequest {
         positions: vec![(0.1, 0.2), (0.1, 0.2), (0.1, 0.2)],
         frame: 1.0,
         omega: 1.0,
+        limits: Limits::default(),
     };
     assert!(matches!(function_gen::synthesize(&r), Err(SynthesisError::Infeasible { .. })));
 }

@@ -82,7 +82,7 @@ proptest! {
     #[test]
     fn two_positions(l in num(), le in num(), a in num(), b in num(), t in num()) {
         run(Request::TwoPositions(TwoPositionsRequest {
-            lambda: 5.0 * l, lambda_e: le - 1.0, phi_start: 4.0 * a, phi_end: 4.0 * b, travel: t - 1.0, drive: Drive::default(),
+            lambda: 5.0 * l, lambda_e: le - 1.0, phi_start: 4.0 * a, phi_end: 4.0 * b, travel: t - 1.0, drive: Drive::default(), limits: Limits::default(),
         }))?;
     }
 
@@ -100,7 +100,7 @@ proptest! {
     #[test]
     fn function_generation(ps in proptest::collection::vec((num(), num()), 0..7), frame in num()) {
         let positions = ps.into_iter().map(|(a, b)| (3.0 * a, 3.0 * b)).collect();
-        run(Request::Function(FunctionRequest { positions, frame, omega: 1.0 }))?;
+        run(Request::Function(FunctionRequest { positions, frame, omega: 1.0, limits: Limits::default() }))?;
     }
 
     #[test]

@@ -97,7 +97,39 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
         ),
         RockerCondition::Optimum => (PivotCondition::Optimum, "optimum", "optimum"),
     };
-    let choice = choose(locus, d, sg, cond, &r.limits, field)?;
+    let choice = match choose(locus, d, sg, cond, &r.limits, field) {
+        Ok(c) => c,
+        Err(e) => {
+            // when no pivot at all works, K is too large for this swing
+            let any = |k: f64| {
+                theta_from_k(k)
+                    .and_then(|t| Locus::new(c1, c2, t))
+                    .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), field))
+                    .is_ok()
+            };
+            if !any(r.k) && any(1.0) {
+                let (mut lo, mut hi) = (1.0, r.k);
+                for _ in 0..40 {
+                    let mid = 0.5 * (lo + hi);
+                    if any(mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Err(SynthesisError::infeasible(
+                    "k",
+                    format!(
+                        "no crank-rocker swings a rocker by {:.4}° with K = {}: the crank pivots on the locus all fail Grashof's condition or put the extreme positions on two assembly branches",
+                        psi.to_degrees(),
+                        r.k
+                    ),
+                    Some(lo),
+                ));
+            }
+            return Err(e);
+        }
+    };
     let b = choice.bar;
     let place = Placement {
         origin: b.o,

@@ -459,6 +459,8 @@ pub struct TwoPositionsRequest {
     pub travel: f64,
     /// Crank direction and speed.
     pub drive: Drive,
+    /// Pressure-angle limits, checked over the cycle.
+    pub limits: Limits,
 }
 
 /// Synthesis by two crank positions and the slider travel between them
@@ -471,6 +473,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
     let le = finite("lambda_e", r.lambda_e)?;
     let (p0, p1) = (finite("phi_start", r.phi_start)?, finite("phi_end", r.phi_end)?);
     let hc = finite("travel", r.travel)?;
+    r.limits.validate()?;
     if lam <= 1.0 + le.abs() {
         return Err(SynthesisError::infeasible(
             "lambda",

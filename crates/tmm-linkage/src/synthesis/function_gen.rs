@@ -21,8 +21,9 @@ use crate::cycle::{Cycle, OutputKind, Working, pressure_angles};
 use crate::mechanism::Mechanism;
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef};
 
-use super::check::points_at;
+use super::check::{check_limits, points_at};
 use super::error::{SynthesisError, finite, positive};
+use super::limits::Limits;
 use super::pivot::polar;
 use super::result::{CheckReport, Construction, FreeParameter, Kind, Stroke, Synthesis};
 
@@ -35,6 +36,9 @@ pub struct FunctionRequest {
     pub frame: f64,
     /// Crank speed, rad/s (signed).
     pub omega: f64,
+    /// Pressure / transmission angle limits over the travel from the first
+    /// position to the last (the same on both "strokes").
+    pub limits: Limits,
 }
 
 /// Solve the 3×3 system `m·x = r` by Cramer's rule.
@@ -82,7 +86,7 @@ pub fn coefficients(positions: &[(f64, f64)]) -> Option<[f64; 3]> {
 /// ```
 /// use tmm_linkage::synthesis::function_gen::*;
 /// let p = [(40f64, 70f64), (75.0, 95.0), (110.0, 112.0)].map(|(a, b)| (a.to_radians(), b.to_radians()));
-/// let s = synthesize(&FunctionRequest { positions: p.to_vec(), frame: 0.3, omega: 1.0 }).unwrap();
+/// let s = synthesize(&FunctionRequest { positions: p.to_vec(), frame: 0.3, omega: 1.0, limits: Default::default() }).unwrap();
 /// assert!(s.free_parameter.unwrap().value < 1e-9); // the largest residual, rad
 /// ```
 pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
@@ -97,6 +101,7 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         finite(&format!("positions.{i}.psi"), b)?;
     }
     let d = positive("frame", r.frame)?;
+    r.limits.validate()?;
     let omega = finite("omega", r.omega)?;
     if omega == 0.0 {
         return Err(SynthesisError::input("omega", "the crank speed must not be zero"));
@@ -212,6 +217,7 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         dead_phi,
         dead_positions,
     };
+    check_limits(&r.limits, &check)?;
     let b_at = |phi: f64| -> Result<Vec2, SynthesisError> {
         let pts = points_at(&m, phi + off_a)?;
         Ok(pts.iter().find(|(x, _)| x == "B").map_or(Vec2::ZERO, |(_, p)| *p))
