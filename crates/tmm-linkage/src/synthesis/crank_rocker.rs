@@ -181,18 +181,14 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
     };
     Ok(Synthesis {
         kind: Kind::CrankRocker,
-        given: vec![
-            ("k".into(), r.k),
-            ("rocker".into(), l3),
-            ("swing".into(), psi),
-            (
-                field.into(),
-                match r.condition {
-                    RockerCondition::Crank(x) | RockerCondition::Frame(x) | RockerCondition::FrameAngle(x) => x,
-                    RockerCondition::Optimum => 0.0,
-                },
-            ),
-        ],
+        given: {
+            let mut g = vec![("k".into(), r.k), ("rocker".into(), l3), ("swing".into(), psi)];
+            match r.condition {
+                RockerCondition::Crank(x) | RockerCondition::Frame(x) | RockerCondition::FrameAngle(x) => g.push((field.into(), x)),
+                RockerCondition::Optimum => {}
+            }
+            g
+        },
         lengths: vec![
             ("OA".into(), b.l1),
             ("AB".into(), b.l2),

@@ -300,16 +300,13 @@ pub fn synthesize(r: &CrankSliderRequest) -> Result<Synthesis, SynthesisError> {
             }
         }
     };
-    let given = vec![
-        ("stroke".into(), h),
-        ("k".into(), r.k),
-        match r.condition {
-            SliderCondition::Lambda(x) => ("lambda".into(), x),
-            SliderCondition::Offset(x) => ("offset".into(), x),
-            SliderCondition::MaxPressure(x) => ("max_pressure".into(), x),
-            SliderCondition::Optimum => ("optimum".into(), 0.0),
-        },
-    ];
+    let mut given = vec![("stroke".into(), h), ("k".into(), r.k)];
+    match r.condition {
+        SliderCondition::Lambda(x) => given.push(("lambda".into(), x)),
+        SliderCondition::Offset(x) => given.push(("offset".into(), x)),
+        SliderCondition::MaxPressure(x) => given.push(("max_pressure".into(), x)),
+        SliderCondition::Optimum => {}
+    }
     build(
         Kind::CrankSlider,
         given,
