@@ -310,3 +310,80 @@ fn six_bars_by_pressure_size_the_slider_coupler_by_the_closed_form() {
     }
     assert!(ok > 500, "{ok} of 1000");
 }
+
+#[test]
+fn infeasible_requests_of_every_kind_name_the_field_and_the_nearest_value() {
+    // slotted lever: a rotating lever's coupler must be longer than the arm EC
+    let r = SlottedRequest {
+        stroke: 0.4,
+        k: 1.5,
+        pivots: 0.05,
+        coupler: Coupler::Ratio(0.8),
+        lever: Lever::Rotating,
+        drive: Drive::default(),
+        limits: Limits::default(),
+    };
+    match slotted::synthesize(&r) {
+        Err(SynthesisError::Infeasible {
+            field, nearest: Some(n), ..
+        }) => {
+            assert_eq!(field, "coupler");
+            assert!((n - 0.2).abs() < 1e-6, "{n}");
+            assert!(
+                slotted::synthesize(&SlottedRequest {
+                    coupler: Coupler::Length(n * 1.01),
+                    ..r
+                })
+                .is_ok()
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    // knee press: a stroke beyond the knee's reach from δ (l = l_BF: 2l·cos δ)
+    let r = KneeRequest {
+        stroke: 0.5,
+        k: 1.12,
+        rocker: 0.22,
+        link: 0.22,
+        delta: 5f64.to_radians(),
+        pivot: KneePivot::Optimum,
+        drive: Drive::default(),
+        limits: Limits::default(),
+    };
+    match knee_press::synthesize(&r) {
+        Err(SynthesisError::Infeasible {
+            field, nearest: Some(n), ..
+        }) => {
+            assert_eq!(field, "stroke");
+            assert!((n - 0.44 * 5f64.to_radians().cos()).abs() < 1e-6, "{n}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // six-bar by inversion: the coupler must reach both E′ and the inverted E″
+    let r = InversionRequest {
+        k: 1.15,
+        travel: 0.36,
+        guide: -0.32,
+        start: 0.18,
+        coupler: 0.1,
+        swing: 70f64.to_radians(),
+        lever: 0.36,
+        pivot: PivotCondition::Optimum,
+        drive: Drive::default(),
+        limits: Limits::default(),
+    };
+    match six_bar::by_inversion(&r) {
+        Err(SynthesisError::Infeasible {
+            field, nearest: Some(n), ..
+        }) => {
+            assert_eq!(field, "coupler");
+            // half the distance from E′ to E″ turned by −γ about O3, computed here
+            let (c, s) = ((-70f64).to_radians().cos(), (-70f64).to_radians().sin());
+            let e2 = Vec2::new(0.54, -0.32);
+            let e2i = Vec2::new(c * e2.x - s * e2.y, s * e2.x + c * e2.y);
+            let half = 0.5 * (e2i - Vec2::new(0.18, -0.32)).hypot();
+            assert!((n - half).abs() < 1e-5 * half, "{n} vs {half}");
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -135,3 +135,23 @@ proptest! {
         }))?;
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+
+    /// Sweeps over any range of any name: typed errors or finite rows.
+    #[test]
+    fn sweeps(name in prop_oneof![Just("lambda"), Just("offset"), Just("k"), Just("stroke"), Just("nonsense")],
+              from in num(), to in num(), n in 0usize..4) {
+        let base = Request::CrankSlider(CrankSliderRequest {
+            stroke: 0.3, k: 1.2, condition: SliderCondition::Lambda(3.5), drive: Drive::default(), limits: Limits::default(),
+        });
+        if let Ok(rows) = tmm_linkage::synthesis::sweep::sweep(&base, name, 4.0 * from, 4.0 * to, n) {
+            for v in rows {
+                if let Ok(row) = v.outcome {
+                    prop_assert!(row.size.is_finite() && row.lengths.iter().all(|(_, x)| x.is_finite()));
+                }
+            }
+        }
+    }
+}
