@@ -8,6 +8,8 @@
 
 use std::f64::consts::{FRAC_PI_2, TAU};
 
+use tmm_geom::Vec2;
+
 use crate::cycle::{Cycle, OutputKind, Working, pressure_angles};
 use crate::mechanism::{Mechanism, Solution};
 use crate::model::MechanismDef;
@@ -179,3 +181,27 @@ pub fn check_limits(limits: &Limits, report: &CheckReport) -> Result<(), Synthes
 /// branch unambiguously and the scan for dead positions does not start on a
 /// root of ds/dφ.
 pub const ASSEMBLY_OFFSET: f64 = 0.1;
+
+/// The named point's positions at the two dead positions found by the core
+/// must be the construction's extreme positions (in either order) to 1e-9
+/// of their size.
+pub fn check_extremes(report: &CheckReport, name: &str, want: [Vec2; 2]) -> Result<(), SynthesisError> {
+    let got: Vec<Vec2> = report
+        .dead_positions
+        .iter()
+        .filter_map(|v| v.iter().find(|(n, _)| n == name).map(|(_, p)| *p))
+        .collect();
+    if got.len() != 2 {
+        return Err(SynthesisError::Check(format!("point {name} is not in the mechanism")));
+    }
+    let scale = want[0].hypot().max(want[1].hypot()).max(1.0);
+    let d = |a: Vec2, b: Vec2| (a - b).hypot();
+    let err = (d(got[0], want[0]).max(d(got[1], want[1]))).min(d(got[0], want[1]).max(d(got[1], want[0])));
+    if err > TOL * scale {
+        return Err(SynthesisError::Check(format!(
+            "the extreme positions of {name} found over the cycle, ({:.9}, {:.9}) and ({:.9}, {:.9}), are {err:.3e} m from the construction's",
+            got[0].x, got[0].y, got[1].x, got[1].y
+        )));
+    }
+    Ok(())
+}

@@ -13,7 +13,7 @@ use tmm_geom::Vec2;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef};
 
-use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -168,6 +168,7 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
         &format!("B {side} the frame line OC"),
     )?;
     check_limits(&r.limits, &check)?;
+    check_extremes(&check, "B", [place.point(c1), place.point(c2)])?;
     let construction = place.construction(Construction {
         point: "B".into(),
         extremes: [c1, c2],

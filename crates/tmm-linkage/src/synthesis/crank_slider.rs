@@ -26,7 +26,7 @@ use tmm_geom::root::brent;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -381,6 +381,9 @@ fn build(
         "B on the side of O's projection on the guide away from O (x > 0)",
     )?;
     check_limits(limits, &check)?;
+    if stroke.is_some() {
+        check_extremes(&check, "B", [b_fold, b_ext])?;
+    }
     let locus = if theta > 0.0 { Locus::new(b_fold, b_ext, theta).ok() } else { None };
     let side = if tmm_geom::cross(b_ext - b_fold, -b_fold) > 0.0 {
         1.0

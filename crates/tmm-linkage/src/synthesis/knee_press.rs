@@ -21,7 +21,7 @@ use tmm_geom::root::brent;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -184,6 +184,7 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
         "B on the side of the crank pivot, F below C",
     )?;
     check_limits(&r.limits, &check)?;
+    check_extremes(&check, "B", [b1, b2])?;
     Ok(Synthesis {
         kind: Kind::KneePress,
         given: vec![

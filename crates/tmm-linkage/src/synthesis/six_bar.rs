@@ -25,7 +25,7 @@ use tmm_geom::Vec2;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_limits};
+use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
 use super::error::{SynthesisError, finite, positive};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
@@ -187,6 +187,8 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
         "B, D and E near their extreme positions found by the construction",
     )?;
     check_limits(&r.limits, &check)?;
+    check_extremes(&check, "B", [b1, b2])?;
+    check_extremes(&check, "E", [e1, e2])?;
     Ok(Synthesis {
         kind: Kind::SixBar,
         given: vec![
@@ -349,6 +351,7 @@ pub fn by_pressure(r: &PressureRequest) -> Result<Synthesis, SynthesisError> {
         "B, C and D near their extreme positions found by the construction",
     )?;
     check_limits(&r.limits, &check)?;
+    check_extremes(&check, "B", [b1, b2])?;
     Ok(Synthesis {
         kind: Kind::SixBar,
         given: vec![

@@ -25,7 +25,7 @@ use tmm_geom::Vec2;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
-use super::check::{Expect, check_cycle, check_limits};
+use super::check::{Expect, check_cycle, check_extremes, check_limits};
 use super::error::{SynthesisError, positive};
 use super::limits::{Drive, Limits};
 use super::result::{Construction, FreeParameter, Kind, Stroke, Synthesis};
@@ -199,6 +199,12 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
         "C and D on the side of the ram's stroke given by the extreme positions",
     )?;
     check_limits(&r.limits, &check)?;
+    // the ram at the lever's two extreme angles
+    let d_other = match r.lever {
+        Lever::Rotating => Vec2::new(lcd - lec, 0.0),
+        Lever::Oscillating => Vec2::new(d_ext.x - 2.0 * c_ext.x, guide_y),
+    };
+    check_extremes(&check, "D", [d_ext, d_other])?;
     let pin = |p: f64| o + Vec2::new(p.cos(), p.sin()) * r1;
     let dp = &check.dead_phi;
     let (a1, a2) = (pin(dp.first().copied().unwrap_or(0.0)), pin(dp.get(1).copied().unwrap_or(0.0)));
