@@ -86,6 +86,14 @@ impl Limits {
 
     /// The allowed pressure angle on each stroke (working, return), combining
     /// the pressure limits with the transmission limit (ϑ = 90° − γ).
+    ///
+    /// ```
+    /// let l = tmm_linkage::synthesis::Limits { pressure_working: Some(0.5), pressure_return: None,
+    ///     transmission_min: Some(1.2) };
+    /// let (w, r) = l.pressure();
+    /// assert_eq!(w, Some(0.5));
+    /// assert!((r.unwrap() - (std::f64::consts::FRAC_PI_2 - 1.2)).abs() < 1e-15);
+    /// ```
     pub fn pressure(&self) -> (Option<f64>, Option<f64>) {
         let t = self.transmission_min.map(|g| std::f64::consts::FRAC_PI_2 - g);
         let both = |p: Option<f64>| match (p, t) {

@@ -17,6 +17,14 @@ pub struct Placement {
 
 impl Placement {
     /// Move a point.
+    ///
+    /// ```
+    /// use tmm_linkage::synthesis::placement::Placement;
+    /// use tmm_geom::Vec2;
+    /// let p = Placement { origin: Vec2::new(1.0, 1.0), angle: std::f64::consts::FRAC_PI_2 };
+    /// let q = p.point(Vec2::new(1.0, 3.0)); // 2 m along the placed x-axis
+    /// assert!((q.x - 2.0).abs() < 1e-15 && q.y.abs() < 1e-15);
+    /// ```
     pub fn point(&self, p: Vec2) -> Vec2 {
         let (s, c) = self.angle.sin_cos();
         let q = p - self.origin;

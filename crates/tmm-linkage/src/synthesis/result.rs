@@ -152,6 +152,15 @@ impl Synthesis {
     pub fn length(&self, name: &str) -> Option<f64> {
         self.lengths.iter().find(|(n, _)| n == name).map(|(_, v)| *v)
     }
+    /// Largest pressure angle on the working and return strokes found by the
+    /// check, rad.
+    pub fn pressure_angle_max(&self) -> (f64, f64) {
+        self.check.pressure_angle_max
+    }
+    /// Smallest transmission angle found by the check, rad.
+    pub fn transmission_angle_min(&self) -> f64 {
+        self.check.transmission_angle_min
+    }
     /// Overall size: the diagonal of the box holding every point at both dead
     /// positions and the frame points, m.
     pub fn overall_size(&self) -> f64 {
