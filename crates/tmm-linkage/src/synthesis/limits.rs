@@ -88,10 +88,10 @@ impl Limits {
     /// the pressure limits with the transmission limit (ϑ = 90° − γ).
     ///
     /// ```
-    /// let l = tmm_linkage::synthesis::Limits { pressure_working: Some(0.5), pressure_return: None,
+    /// let l = tmm_linkage::synthesis::Limits { pressure_working: Some(0.3), pressure_return: None,
     ///     transmission_min: Some(1.2) };
     /// let (w, r) = l.pressure();
-    /// assert_eq!(w, Some(0.5));
+    /// assert_eq!(w, Some(0.3)); // the stricter of 0.3 and 90° − 1.2
     /// assert!((r.unwrap() - (std::f64::consts::FRAC_PI_2 - 1.2)).abs() < 1e-15);
     /// ```
     pub fn pressure(&self) -> (Option<f64>, Option<f64>) {
