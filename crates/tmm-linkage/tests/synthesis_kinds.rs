@@ -178,6 +178,9 @@ fn knee_presses_reach_the_stroke_at_the_knee_angles() {
         let fs = [at(&s, 0, "F"), at(&s, 1, "F")];
         let bs = [at(&s, 0, "B"), at(&s, 1, "B")];
         let low = if fs[0].y < fs[1].y { 0 } else { 1 };
+        // the working (slower) stroke, which starts at the first dead
+        // position, is the pressing one: it starts with the slide at the top
+        assert_eq!(low, 1, "{i}: the working stroke lifts the slide");
         assert!((bs[low].x.atan2(-bs[low].y) - delta).abs() < 1e-7, "{i}");
         assert!(((fs[0].y - fs[1].y).abs() - h).abs() < 1e-9 * h.max(1.0));
         if lf == l {

@@ -11,7 +11,7 @@ use tmm_linkage::synthesis::knee_press::{self, KneePivot, KneeRequest};
 use tmm_linkage::synthesis::pivot::PivotCondition;
 use tmm_linkage::synthesis::six_bar::{self, InversionRequest, PressureRequest};
 use tmm_linkage::synthesis::slotted::{self, Coupler, Lever, SlottedRequest};
-use tmm_linkage::synthesis::{Drive, Limits, Synthesis};
+use tmm_linkage::synthesis::{Drive, Limits, Rotation, Synthesis};
 
 fn deg(x: f64) -> f64 {
     x.to_radians()
@@ -78,7 +78,10 @@ fn seed_002_example_2_knee_press() {
         link: 0.22,
         delta: deg(5.0),
         pivot: KneePivot::Horizontal(0.28),
-        drive: Drive::default(),
+        drive: Drive {
+            rotation: Rotation::Cw,
+            omega: 1.0,
+        },
         limits: Limits::default(),
     })
     .unwrap();

@@ -97,14 +97,14 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
         ),
         RockerCondition::Optimum => (PivotCondition::Optimum, "optimum", "optimum"),
     };
-    let choice = match choose(locus, d, sg, cond, &r.limits, field) {
+    let choice = match choose(locus, d, sg, cond, &r.limits, field, None) {
         Ok(c) => c,
         Err(e) => {
             // when no pivot at all works, K is too large for this swing
             let any = |k: f64| {
                 theta_from_k(k)
                     .and_then(|t| Locus::new(c1, c2, t))
-                    .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), field))
+                    .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), field, None))
                     .is_ok()
             };
             if !any(r.k) && any(1.0) {

@@ -8,7 +8,8 @@
 //! F(δ) − F(β″) = H_F (closed form for l_CB = l_BF: cos β″ = cos δ − H/(2l)).
 //! Stage 2: the crank pivot on the inscribed-angle locus of B′B″ at θ
 //! ([`super::pivot`]) fixed by its horizontal distance from C (the seed's
-//! l^x_CO) or any other pivot condition.
+//! l^x_CO) or any other pivot condition, among the pivots whose slower
+//! (working) stroke is the pressing one, ending with the slide at the bottom.
 //!
 //! Placement: C at the origin, the guide vertical, F below C, B to the right
 //! (β from the downward vertical towards +x). Names: crank OA (1), coupler
@@ -124,7 +125,7 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
         KneePivot::Frame(f) => (PivotCondition::FrameDistance(positive("pivot.frame", f)?), "pivot.frame"),
         KneePivot::Optimum => (PivotCondition::Optimum, "pivot.optimum"),
     };
-    let choice = match choose(locus, c, omega.signum(), cond, &r.limits, field) {
+    let choice = match choose(locus, c, omega.signum(), cond, &r.limits, field, Some(b1)) {
         Err(SynthesisError::Infeasible { field, condition, nearest }) if matches!(r.pivot, KneePivot::Horizontal(_)) => {
             // the nearest line offset along (−1, 0) → the nearest x
             let x0 = if let KneePivot::Horizontal(x) = r.pivot { x } else { 0.0 };

@@ -82,6 +82,8 @@ pub struct FourBar {
     pub pressure: (f64, f64),
     /// Which side of the chord C1C2 the pivot is on (±1).
     pub side: f64,
+    /// The extreme position at which the working (slower) stroke ends.
+    pub work_end: Vec2,
 }
 
 /// The result of the pivot choice.
@@ -160,14 +162,27 @@ pub fn evaluate(locus: &Locus, d: Vec2, o: Vec2, sg: f64) -> Option<FourBar> {
         } else {
             -1.0
         },
+        work_end: c_ext,
     };
     // working stroke: the slower one
     let t_fe = (sg * (phi_ext - phi_fold)).rem_euclid(TAU);
     let (ws, wl) = if t_fe >= PI { (phi_fold, t_fe) } else { (phi_ext, TAU - t_fe) };
+    b.work_end = if t_fe >= PI { c_ext } else { c_fold };
     let w = stroke_pressure(&b, sg, ws, wl);
     let r = stroke_pressure(&b, sg, ws + sg * wl, TAU - wl);
     b.pressure = (w, r);
     Some(b)
+}
+
+/// [`evaluate`], keeping only a four-bar whose working stroke ends at
+/// `work_end` when one is asked for (a press's working stroke ends at the
+/// bottom).
+pub fn evaluate_ending(locus: &Locus, d: Vec2, o: Vec2, sg: f64, work_end: Option<Vec2>) -> Option<FourBar> {
+    let b = evaluate(locus, d, o, sg)?;
+    match work_end {
+        Some(w) if (b.work_end - w).hypot() > 1e-9 * locus.h => None,
+        _ => Some(b),
+    }
 }
 
 /// The value a condition constrains, at a pivot `o`.
@@ -182,12 +197,12 @@ fn value_of(cond: &PivotCondition, b: &FourBar) -> f64 {
 }
 
 /// The nearest value of the constrained quantity that some valid pivot has.
-fn nearest(locus: &Locus, d: Vec2, sg: f64, cond: &PivotCondition, target: f64) -> Option<f64> {
+fn nearest(locus: &Locus, d: Vec2, sg: f64, work_end: Option<Vec2>, cond: &PivotCondition, target: f64) -> Option<f64> {
     let mut best: Option<(f64, f64, f64)> = None; // (|g − target|, side, w)
     let (lo, hi) = locus.domain();
     for side in [1.0, -1.0] {
         let r = maximize(
-            |w| match evaluate(locus, d, locus.point(side, w), sg) {
+            |w| match evaluate_ending(locus, d, locus.point(side, w), sg, work_end) {
                 Some(b) => -(value_of(cond, &b) - target).abs(),
                 None => f64::NAN,
             },
@@ -202,13 +217,22 @@ fn nearest(locus: &Locus, d: Vec2, sg: f64, cond: &PivotCondition, target: f64) 
         }
     }
     let (_, side, w) = best?;
-    evaluate(locus, d, locus.point(side, w), sg).map(|b| value_of(cond, &b))
+    evaluate_ending(locus, d, locus.point(side, w), sg, work_end).map(|b| value_of(cond, &b))
 }
 
 /// Choose the crank pivot. `field` names the condition's field in errors;
 /// for [`PivotCondition::OnLine`] the error's nearest value is the signed
 /// offset (along the line's left normal) of the nearest line that works.
-pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Limits, field: &str) -> Result<PivotChoice, SynthesisError> {
+pub fn choose(
+    locus: Locus,
+    d: Vec2,
+    sg: f64,
+    cond: PivotCondition,
+    limits: &Limits,
+    field: &str,
+    work_end: Option<Vec2>,
+) -> Result<PivotChoice, SynthesisError> {
+    let ev = |o: Vec2| evaluate_ending(&locus, d, o, sg, work_end);
     // margin first; among equal margins the more compact four-bar
     let score = |b: &FourBar| limits.margin(b.pressure.0, b.pressure.1) - 1e-9 * (b.l2 + b.frame) / b.l3;
     let mut cands: Vec<FourBar> = Vec::new();
@@ -229,14 +253,14 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
                         Some(locus.h),
                     ));
                 }
-                return choose(locus, d, sg, PivotCondition::Optimum, limits, field);
+                return choose(locus, d, sg, PivotCondition::Optimum, limits, field, work_end);
             }
             let s = l1 * (0.5 * locus.theta).cos() / locus.h;
             if s < 1.0 {
                 let w = s.asin();
                 for side in [1.0, -1.0] {
                     for ww in [w, -w] {
-                        if let Some(b) = evaluate(&locus, d, locus.point(side, ww), sg) {
+                        if let Some(b) = ev(locus.point(side, ww)) {
                             cands.push(b);
                         }
                     }
@@ -247,7 +271,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
             what = format!("the frame distance |OD| = {f:.6} m");
             for side in [1.0, -1.0] {
                 for o in locus.meet_circle(side, d, f) {
-                    if let Some(b) = evaluate(&locus, d, o, sg) {
+                    if let Some(b) = ev(o) {
                         cands.push(b);
                     }
                 }
@@ -257,7 +281,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
             what = "the line given for the crank pivot".to_string();
             for side in [1.0, -1.0] {
                 for o in locus.meet_line(side, point, dir) {
-                    if let Some(b) = evaluate(&locus, d, o, sg) {
+                    if let Some(b) = ev(o) {
                         cands.push(b);
                     }
                 }
@@ -267,7 +291,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
             what = format!("the largest pressure angle {:.4}°", p.to_degrees());
             let n = 720;
             for side in [1.0, -1.0] {
-                let f = |w: f64| evaluate(&locus, d, locus.point(side, w), sg).map_or(f64::NAN, |b| b.pressure.0.max(b.pressure.1) - p);
+                let f = |w: f64| ev(locus.point(side, w)).map_or(f64::NAN, |b| b.pressure.0.max(b.pressure.1) - p);
                 let h = (hi - lo) / (n + 1) as f64;
                 let mut prev = (lo + h, f(lo + h));
                 for k in 2..=n {
@@ -275,7 +299,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
                     let v = f(w);
                     if prev.1.is_finite() && v.is_finite() && prev.1.signum() != v.signum() {
                         if let Some(root) = tmm_geom::root::brent(f, prev.0, w, 1e-15) {
-                            if let Some(b) = evaluate(&locus, d, locus.point(side, root), sg) {
+                            if let Some(b) = ev(locus.point(side, root)) {
                                 cands.push(b);
                             }
                         }
@@ -293,7 +317,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
                     let dir = Vec2::new(co * v.x - s * v.y, s * v.x + co * v.y);
                     for side in [1.0, -1.0] {
                         for o in locus.meet_line(side, c, dir) {
-                            if let Some(b) = evaluate(&locus, d, o, sg) {
+                            if let Some(b) = ev(o) {
                                 cands.push(b);
                             }
                         }
@@ -304,14 +328,9 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
         PivotCondition::Optimum => {
             let mut best: Option<FourBar> = None;
             for side in [1.0, -1.0] {
-                let r = maximize(
-                    |w| evaluate(&locus, d, locus.point(side, w), sg).map_or(f64::NAN, |b| score(&b)),
-                    lo,
-                    hi,
-                    360,
-                );
+                let r = maximize(|w| ev(locus.point(side, w)).map_or(f64::NAN, |b| score(&b)), lo, hi, 360);
                 if let Some((w, _)) = r {
-                    if let Some(b) = evaluate(&locus, d, locus.point(side, w), sg) {
+                    if let Some(b) = ev(locus.point(side, w)) {
                         if best.is_none_or(|x| score(&b) > score(&x)) {
                             best = Some(b);
                         }
@@ -365,7 +384,7 @@ pub fn choose(locus: Locus, d: Vec2, sg: f64, cond: PivotCondition, limits: &Lim
                 "no crank pivot on the locus of K (θ = {:.4}°) gives a crank-rocker with {what} (the crank must be the shortest link, turn fully by Grashof's condition, and both extreme positions must lie on one assembly branch)",
                 locus.theta.to_degrees()
             ),
-            nearest(&locus, d, sg, &cond, target),
+            nearest(&locus, d, sg, work_end, &cond, target),
         ));
     };
     let reason = if n > 1 {

@@ -151,7 +151,7 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
     let b1 = d1 * (-lb / rho);
     let b2 = d2 * (-lb / rho);
     let locus = Locus::new(b1, b2, theta)?;
-    let choice = choose(locus, Vec2::ZERO, omega.signum(), r.pivot, &r.limits, "pivot")?;
+    let choice = choose(locus, Vec2::ZERO, omega.signum(), r.pivot, &r.limits, "pivot", None)?;
     let b = choice.bar;
     let (d_ext, e_ext) = if (b.c_ext - b1).hypot() < (b.c_ext - b2).hypot() {
         (d1, e1)
@@ -317,7 +317,7 @@ pub fn by_pressure(r: &PressureRequest) -> Result<Synthesis, SynthesisError> {
         PivotCondition::ExtremePressure(x) => PivotCondition::ExtremePressure(finite("pivot.extreme_pressure", x)?),
         other => other,
     };
-    let choice = choose(locus, Vec2::ZERO, omega.signum(), pivot, &r.limits, "pivot")?;
+    let choice = choose(locus, Vec2::ZERO, omega.signum(), pivot, &r.limits, "pivot", None)?;
     let b = choice.bar;
     let c_of = |bb: Vec2| polar(bb.atan2() + arm) * lc;
     let c_ext = c_of(b.c_ext);
