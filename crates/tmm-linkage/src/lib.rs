@@ -32,6 +32,7 @@ pub mod model;
 pub mod plans;
 pub mod state;
 pub mod structure;
+pub mod synthesis;
 
 pub use error::LinkageError;
 pub use mechanism::{Mechanism, Solution};
