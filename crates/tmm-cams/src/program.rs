@@ -271,13 +271,32 @@ impl Program {
                 "the rises add up to {rises} but the returns to {returns} (m, or rad for an oscillating follower): the follower must come back to its lowest position, so the sums must be equal"
             )));
         }
-        Ok(Program {
+        let prog = Program {
             stroke: default.filter(|_| top <= 0.0).unwrap_or(top),
             phases,
             starts,
             levels,
             heights,
-        })
+        };
+        // s′ = h·y′/β, s″ = h·y″/β², s‴ = h·y‴/β³ must be finite numbers
+        for (k, ph) in prog.phases.iter().enumerate() {
+            let ok = (0..=32).all(|i| {
+                let m = prog.eval_phase(k, ph.angle * i as f64 / 32.0, false);
+                let l = prog.eval_phase(k, ph.angle * i as f64 / 32.0, true);
+                [m.s, m.v, m.a, m.j, l.v, l.a, l.j].iter().all(|v| v.is_finite())
+            });
+            if !ok || !prog.stroke.is_finite() {
+                return Err(CamError::Phase {
+                    text: format!("phase {} ({})", k + 1, ph.kind.name()),
+                    reason: format!(
+                        "its stroke {} over its angle {:.4}° gives analogs (h/β, h/β², h/β³) that are not finite numbers; give a realistic stroke",
+                        prog.heights[k],
+                        ph.angle.to_degrees()
+                    ),
+                });
+            }
+        }
+        Ok(prog)
     }
 
     /// The stroke h (ход толкателя): the highest displacement over the cycle,
