@@ -265,8 +265,60 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
 /// out to the form radius `r_form`, then the root circle. A ring is cut by a
 /// shaper cutter, not a rack, so it is drawn from the involute's closed form
 /// `ψ(r) = s/d − inv α + inv α_r` (docs/gears.md §Internal).
+///
+/// Invalid input (z = 0, a module outside [`crate::spec::check_module`], a
+/// radius that is not finite and positive, a non-finite result) gives an
+/// empty profile; [`ring_profile_checked`] says why.
 #[allow(clippy::too_many_arguments)]
 pub fn ring_profile(z: u32, m: f64, s: f64, rack: &BasicRack, ra: f64, rf: f64, r_form: f64, samples: usize) -> ToothProfile {
+    ring_profile_checked(z, m, s, rack, ra, rf, r_form, samples).unwrap_or(ToothProfile {
+        z,
+        ring: true,
+        half: Vec::new(),
+        ra,
+        rf,
+        fillet_radius: 0.0,
+        fillet_reduced: false,
+    })
+}
+
+/// [`ring_profile`] with the reason when the input is invalid.
+///
+/// ```
+/// use tmm_gears::{BasicRack, generate::ring_profile_checked};
+/// let r = BasicRack::default();
+/// assert!(ring_profile_checked(0, 0.002, 0.003, &r, 0.05, 0.06, 0.058, 16).is_err());
+/// assert!(ring_profile_checked(60, 0.002, 0.003, &r, 0.058, 0.0625, 0.062, 16).is_ok());
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn ring_profile_checked(
+    z: u32,
+    m: f64,
+    s: f64,
+    rack: &BasicRack,
+    ra: f64,
+    rf: f64,
+    r_form: f64,
+    samples: usize,
+) -> Result<ToothProfile, GearError> {
+    rack.validate()?;
+    crate::spec::check_module(m)?;
+    if z == 0 {
+        return Err(GearError::TooFewTeeth { wheel: 2, z, min: 1 });
+    }
+    let pos = |v: f64| v.is_finite() && v > 0.0;
+    if !(pos(ra) && pos(rf) && pos(r_form) && s.is_finite()) {
+        return Err(GearError::NonFinite("ring radius or tooth thickness"));
+    }
+    let p = ring_profile_raw(z, m, s, rack, ra, rf, r_form, samples.clamp(8, 100_000));
+    if p.half.iter().any(|q| !(q.r.is_finite() && q.psi.is_finite())) {
+        return Err(GearError::NonFinite("ring profile"));
+    }
+    Ok(p)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn ring_profile_raw(z: u32, m: f64, s: f64, rack: &BasicRack, ra: f64, rf: f64, r_form: f64, samples: usize) -> ToothProfile {
     let n = samples.max(8);
     let d = z as f64 * m;
     let rb = d / 2.0 * rack.alpha.cos();

@@ -52,7 +52,8 @@ impl Pair {
 
     /// `n ≥ 2` points evenly spaced over the real active line, ends included;
     /// an end that lies on N1 or N2 (where ϑ is infinite) is moved half a
-    /// step inward, so every value is finite.
+    /// step inward, so every value is finite. Empty when the real active line
+    /// is empty (no involute contact at all).
     ///
     /// ```
     /// use tmm_gears::{Pair, PairSpec};
@@ -62,7 +63,11 @@ impl Pair {
     /// assert!(t[0].s > 0.0 && t.iter().all(|q| q.theta1.is_finite() && q.theta1 < 1.0));
     /// ```
     pub fn sliding_table(&self, n: usize) -> Vec<SlidingPoint> {
-        let n = n.max(2);
+        let n = n.clamp(2, 1_000_000);
+        if self.s_end <= self.s_start {
+            // no real active line (the pair has no involute contact at all)
+            return Vec::new();
+        }
         let step = (self.s_end - self.s_start) / (n - 1) as f64;
         let (mut a, mut b) = (self.s_start, self.s_end);
         if a <= 0.0 {

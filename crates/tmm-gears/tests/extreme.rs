@@ -99,6 +99,8 @@ proptest! {
             prop_assert!(t.half.iter().all(|p| p.r.is_finite() && p.psi.is_finite()));
             prop_assert!(t.fillet_radius.is_finite());
         }
+        let ring = tmm_gears::generate::ring_profile(z, m, x, &rack, ra, ra * 1.1, ra * 1.05, 16);
+        prop_assert!(ring.half.iter().all(|p| p.r.is_finite() && p.psi.is_finite()));
     }
 }
 
