@@ -340,7 +340,7 @@ impl Pair {
     /// εα = (s_end − s_start) / pb (GOST 16532-70 t.4 as a length over the base
     /// pitch; the same quantity as [`Pair::eps_alpha`]).
     pub fn eps_alpha_by_length(&self) -> f64 {
-        (self.s_end - self.s_start) / self.pb
+        ((self.s_end - self.s_start) / self.pb).max(0.0)
     }
 
     /// The radius of curvature of wheel 2's involute at the contact point that
