@@ -3,7 +3,7 @@
 
 use crate::mechanism::{Mechanism, Rotation};
 use crate::profile::{Profile, flat_rho, over_pieces, pitch_curvature, pressure_extremes};
-use crate::program::Program;
+use crate::program::{JumpKind, Program, Stroke};
 use crate::sizing;
 use crate::spec::Limits;
 use crate::{CamError, positive};
@@ -149,10 +149,11 @@ fn check_len(field: &'static str, v: f64, allow_zero: bool) -> Result<(), CamErr
 }
 
 impl CamTask {
-    /// Size the cam, choose or check the roller, build the profile.
-    pub fn solve(&self) -> Result<CamDesign, CamError> {
+    /// Check what every solution needs: ω, margins, points, the strokes' kind
+    /// (lengths for a translating follower, angles for an oscillating one),
+    /// and that ω, ω², ω³ times the analogs stay finite.
+    fn check_common(&self) -> Result<Limits, CamError> {
         let prog = &self.program;
-        let sigma = self.rotation.sign();
         let limits = self.limits.check()?;
         if !positive(self.omega) {
             return Err(CamError::Dimension {
@@ -181,7 +182,185 @@ impl CamTask {
                 reason: "an oscillating follower's stroke is its swing angle, below 180°".into(),
             });
         }
-        let (mut mech, given_roller) = match self.follower {
+        let osc = self.follower.oscillating();
+        for (i, ph) in prog.phases().iter().enumerate() {
+            match (ph.stroke, osc) {
+                (Some(Stroke::Length(_)), true) => {
+                    return Err(CamError::Dimension {
+                        field: "stroke",
+                        reason: format!("phase {}: an oscillating follower's stroke is an angle, write e.g. `15°`", i + 1),
+                    });
+                }
+                (Some(Stroke::Angle(_)), false) => {
+                    return Err(CamError::Dimension {
+                        field: "stroke",
+                        reason: format!("phase {}: a translating follower's stroke is a length, write e.g. `20mm`", i + 1),
+                    });
+                }
+                _ => {}
+            }
+        }
+        // v = ω s′, a = ω² s″, j = ω³ s‴ must stay finite (and the analogs themselves)
+        let w = self.omega;
+        let finite = prog
+            .diagram(720)
+            .iter()
+            .all(|(_, m)| (m.v * w).is_finite() && (m.a * w * w).is_finite() && (m.j * w * w * w).is_finite());
+        if !finite {
+            return Err(CamError::Dimension {
+                field: "omega",
+                reason: format!(
+                    "ω = {} rad/s makes the follower's velocity, acceleration or jerk (ω·s′, ω²·s″, ω³·s‴) overflow; give a realistic cam speed",
+                    self.omega
+                ),
+            });
+        }
+        Ok(limits)
+    }
+
+    /// Analyse a given cam instead of sizing one (the textbook problem "the
+    /// prime circle r₀ is given, find the pressure angle"): `r0` is the
+    /// smallest radius of the theoretical profile (the lowest roller centre,
+    /// or the base circle of a flat face). The rest comes from the follower:
+    /// the offset e of a translating follower (None: 0), the pivot distance a
+    /// and the arm l of an oscillating roller, the pivot distance of an
+    /// oscillating flat face. The pressure angles are computed, not enforced:
+    /// compare [`CamDesign::pressure_max_rise`] with the limits. The roller is
+    /// chosen or checked as in [`CamTask::solve`].
+    ///
+    /// Placement (derived here, docs/cams.md §3a): a translating roller has
+    /// s₀ = √(r₀² − e²); an oscillating roller has its pivot at A = (a, 0) and
+    /// cos ψ₀ = (r₀² − a² − l²)/(2al), the roller moving outward on the rise;
+    /// of the two mirror placements (ψ₀ above or below OA) the one with the
+    /// smaller largest pressure angle relative to its limit is kept.
+    ///
+    /// ```
+    /// use tmm_cams::{design::{CamTask, FollowerSpec}, mechanism::Rotation, program::Program, spec};
+    /// let task = CamTask {
+    ///     program: Program::new(0.02, spec::parse_phases("rise 120 cosine; dwell 60; return 120 cosine; dwell 60").unwrap()).unwrap(),
+    ///     follower: FollowerSpec::TranslatingRoller { offset: None, roller: Some(0.0) },
+    ///     rotation: Rotation::Ccw,
+    ///     limits: spec::parse_limits("30", false).unwrap(),
+    ///     min_curvature: None, face_margin: 0.005, omega: 10.0, points: 720,
+    /// };
+    /// let d = task.solve_with_r0(0.05).unwrap();
+    /// // central follower, cosine law: tan ϑ = s′/(r₀ + s); s′ = (h/2)(π/β) sin(πφ/β)
+    /// let b = 120f64.to_radians();
+    /// let best = (0..=2000).map(|i| {
+    ///     let x = std::f64::consts::PI * i as f64 / 2000.0;
+    ///     (0.01 * std::f64::consts::PI / b * x.sin()).atan2(0.05 + 0.01 * (1.0 - x.cos()))
+    /// }).fold(0.0f64, f64::max);
+    /// assert!((d.pressure_max_rise - best).abs() < 1e-6);
+    /// ```
+    pub fn solve_with_r0(&self, r0: f64) -> Result<CamDesign, CamError> {
+        let prog = &self.program;
+        let sigma = self.rotation.sign();
+        let limits = self.check_common()?;
+        check_len("r0", r0, false)?;
+        let (mech, given_roller) = match self.follower {
+            FollowerSpec::TranslatingRoller { offset, roller } => {
+                let e = offset.unwrap_or(0.0);
+                if !e.is_finite() {
+                    return Err(CamError::Dimension {
+                        field: "offset",
+                        reason: "must be a finite length".into(),
+                    });
+                }
+                if e.abs() >= r0 {
+                    return Err(CamError::Dimension {
+                        field: "offset",
+                        reason: format!(
+                            "the offset |e| = {:.3} mm must be smaller than r0 = {:.3} mm",
+                            e.abs() * 1e3,
+                            r0 * 1e3
+                        ),
+                    });
+                }
+                if let Some(r) = roller {
+                    check_len("roller", r, true)?;
+                }
+                let s0 = (r0 - e.abs()).sqrt() * (r0 + e.abs()).sqrt();
+                (Mechanism::TranslatingRoller { e, s0, roller: 0.0 }, roller)
+            }
+            FollowerSpec::OscillatingRoller { arm, pivot, roller } => {
+                check_len("arm", arm, false)?;
+                if let Some(r) = roller {
+                    check_len("roller", r, true)?;
+                }
+                let a = pivot.ok_or_else(|| CamError::Dimension {
+                    field: "pivot",
+                    reason: "a given oscillating cam needs the pivot distance a = OA".into(),
+                })?;
+                check_len("pivot", a, false)?;
+                let c = (r0 * r0 - a * a - arm * arm) / (2.0 * a * arm);
+                if !(c.is_finite() && c.abs() < 1.0) {
+                    return Err(CamError::Dimension {
+                        field: "r0",
+                        reason: format!(
+                            "r0 = {:.3} mm cannot be reached by an arm of {:.3} mm from a pivot {:.3} mm away: it must lie between |a − l| and a + l",
+                            r0 * 1e3,
+                            arm * 1e3,
+                            a * 1e3
+                        ),
+                    });
+                }
+                let psi = c.acos();
+                let pivot_v = Vec2::new(a, 0.0);
+                // the roller moves outward on the rise: d|OB|²/ds = −2al·κ·sin ψ₀ > 0
+                let pick = |psi0: f64, kappa: f64| Mechanism::OscillatingRoller {
+                    pivot: pivot_v,
+                    arm,
+                    psi0,
+                    kappa,
+                    roller: 0.0,
+                };
+                let score = |m: &Mechanism| {
+                    let (r, t) = pressure_extremes(prog, m, sigma);
+                    (r / limits.rise).max(t / limits.ret)
+                };
+                let (m1, m2) = (pick(psi, -1.0), pick(-psi, 1.0));
+                let best = if score(&m2) < score(&m1) { m2 } else { m1 };
+                (best, roller)
+            }
+            FollowerSpec::TranslatingFlat { offset } => {
+                if !offset.is_finite() {
+                    return Err(CamError::Dimension {
+                        field: "offset",
+                        reason: "must be a finite length".into(),
+                    });
+                }
+                (Mechanism::TranslatingFlat { e: offset, r0 }, None)
+            }
+            FollowerSpec::OscillatingFlat { pivot } => {
+                check_len("pivot", pivot, false)?;
+                if r0 >= pivot {
+                    return Err(CamError::Dimension {
+                        field: "r0",
+                        reason: format!(
+                            "the base circle r0 = {:.3} mm must be smaller than the pivot distance {:.3} mm",
+                            r0 * 1e3,
+                            pivot * 1e3
+                        ),
+                    });
+                }
+                (
+                    Mechanism::OscillatingFlat {
+                        a: pivot,
+                        delta0: (r0 / pivot).asin(),
+                    },
+                    None,
+                )
+            }
+        };
+        self.finish(mech, given_roller)
+    }
+
+    /// Size the cam, choose or check the roller, build the profile.
+    pub fn solve(&self) -> Result<CamDesign, CamError> {
+        let prog = &self.program;
+        let sigma = self.rotation.sign();
+        let limits = self.check_common()?;
+        let (mech, given_roller) = match self.follower {
             FollowerSpec::TranslatingRoller { offset, roller } => {
                 if let Some(r) = roller {
                     check_len("roller", r, true)?;
@@ -216,6 +395,22 @@ impl CamTask {
                 )
             }
         };
+        self.finish(mech, given_roller)
+    }
+
+    /// Everything after the mechanism is placed: the roller, the pressure
+    /// angles, the curvature, the flat face's extent, the profile.
+    fn finish(&self, mut mech: Mechanism, given_roller: Option<f64>) -> Result<CamDesign, CamError> {
+        let prog = &self.program;
+        let sigma = self.rotation.sign();
+        if let Some(r) = self.min_curvature {
+            check_len("min-curvature", r, true)?;
+        }
+        if mech.is_flat() && prog.jumps().iter().any(|j| j.kind == JumpKind::Velocity) {
+            return Err(CamError::Infeasible(
+                "a flat face cannot follow a jump of velocity (constant velocity at a joint): its profile radius r₀ + s + s″ would have an infinite negative impulse; use a roller follower or a law without velocity jumps".into(),
+            ));
+        }
         let r0 = match mech {
             Mechanism::TranslatingRoller { e, s0, .. } => e.hypot(s0),
             Mechanism::TranslatingFlat { r0, .. } => r0,

@@ -1,6 +1,7 @@
 //! Motion laws of one rise (закон движения толкателя на фазе), normalized:
 //! the phase fraction `x ∈ [0, 1]` maps to the lift fraction `y ∈ [0, 1]`,
-//! with `y(0) = 0`, `y(1) = 1`, `y′(0) = y′(1) = 0`.
+//! with `y(0) = 0`, `y(1) = 1`, `y′(0) = y′(1) = 0` (constant velocity alone
+//! has `y′ = 1` throughout and jumps at the ends).
 //!
 //! A phase of angle β and stroke h then has `s = h·y`, `ds/dφ = h·y′/β`,
 //! `d²s/dφ² = h·y″/β²`, `d³s/dφ³ = h·y‴/β³`; a return runs the same law as
@@ -43,6 +44,12 @@ pub enum LawKind {
     /// The user's acceleration analog at equal steps over the phase, linear in
     /// between, integrated and scaled to the stroke.
     Table(Vec<f64>),
+    /// Constant velocity (равномерное движение, линейный закон): `y = x`,
+    /// `y′ = 1`, `y″ = 0` inside the phase. The velocity jumps at both ends,
+    /// so the acceleration has impulses there (жёсткий удар, rigid impact;
+    /// [`crate::program::Program::jumps`] lists them). The only law here with
+    /// `y′(0) = y′(1) = 1` instead of 0.
+    ConstVelocity,
 }
 
 /// A motion law ready to evaluate.
@@ -192,8 +199,20 @@ impl Law {
                     840.0 * x - 5040.0 * x2 + 8400.0 * x3 - 4200.0 * x4,
                 ]
             }
+            // constant velocity (Artobolevsky, ТММ, 1988, cam mechanisms: the linear law)
+            LawKind::ConstVelocity => [x, 1.0, 0.0, 0.0],
             // piecewise kinds always have pieces
             _ => [x, 1.0, 0.0, 0.0],
+        }
+    }
+
+    /// [`Law::eval`] from the left: at a joint inside a piecewise law, the
+    /// values of the piece that ends there.
+    #[inline]
+    pub fn eval_left(&self, x: f64) -> [f64; 4] {
+        match &self.pieces {
+            Some(p) => p.eval_left(x.clamp(0.0, 1.0)),
+            None => self.eval(x),
         }
     }
 
@@ -206,11 +225,13 @@ impl Law {
             .unwrap_or_default()
     }
 
-    /// The order of continuity at a joint with a dwell: 1 — velocity continuous
+    /// The order of continuity at a joint with a dwell: 0 — the velocity
+    /// jumps (acceleration impulses, "rigid impact"), 1 — velocity continuous
     /// (acceleration jumps, "soft impact"), 2 — acceleration continuous (jerk
     /// jumps), 3 — jerk continuous.
     pub fn continuity(&self) -> u8 {
         match &self.kind {
+            LawKind::ConstVelocity => 0,
             LawKind::ConstAccel { .. } | LawKind::Cosine | LawKind::LinearDecreasing => 1,
             LawKind::Sine | LawKind::Trapezoid | LawKind::ModTrapezoid | LawKind::ModSine | LawKind::Poly345 => 2,
             LawKind::Poly4567 => 3,
@@ -239,6 +260,7 @@ impl LawKind {
             LawKind::Poly345 => "poly345",
             LawKind::Poly4567 => "poly4567",
             LawKind::Table(_) => "table",
+            LawKind::ConstVelocity => "const-velocity",
         }
     }
 }
@@ -254,5 +276,4 @@ impl std::fmt::Display for LawKind {
 }
 
 /// The law names a phase list accepts, for messages.
-pub const LAW_NAMES: &str =
-    "const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …)";
+pub const LAW_NAMES: &str = "const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …), const-velocity";

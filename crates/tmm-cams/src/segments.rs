@@ -133,6 +133,19 @@ impl Pieces {
         [r[0] * self.scale, r[1] * self.scale, r[2] * self.scale, r[3] * self.scale]
     }
 
+    /// `[y, y′, y″, y‴]` just before `x` (the left-hand limit): at a piece
+    /// boundary the piece that ends there.
+    #[inline]
+    pub fn eval_left(&self, x: f64) -> [f64; 4] {
+        let mut k = 0;
+        while k + 1 < self.pieces.len() && x > self.pieces[k + 1].x0 {
+            k += 1;
+        }
+        let p = &self.pieces[k];
+        let r = p.eval(x - p.x0);
+        [r[0] * self.scale, r[1] * self.scale, r[2] * self.scale, r[3] * self.scale]
+    }
+
     /// The pieces' start fractions (where acceleration or jerk may jump).
     pub fn breaks(&self) -> impl Iterator<Item = f64> + '_ {
         self.pieces.iter().map(|p| p.x0)

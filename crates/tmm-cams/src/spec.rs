@@ -4,18 +4,25 @@
 
 use crate::CamError;
 use crate::law::{LAW_NAMES, Law, LawKind};
-use crate::program::{Phase, PhaseKind};
+use crate::program::{Phase, PhaseKind, Stroke};
 use tmm_geom::units::{self, Dim};
 
-/// Read a phase list: phases separated by `;`, each `KIND ANGLE [LAW]` where
-/// KIND is `rise`, `dwell` or `return` (also `upper-dwell`, `lower-dwell`),
-/// ANGLE takes a unit or is degrees, and LAW is one of [`LAW_NAMES`].
+/// Read a phase list: phases separated by `;`, each `KIND ANGLE [LAW [STROKE]]`
+/// where KIND is `rise`, `dwell` or `return` (also `upper-dwell`,
+/// `lower-dwell`), ANGLE takes a unit or is degrees, LAW is one of
+/// [`LAW_NAMES`] (rises and returns only), and STROKE, with its unit, is the
+/// phase's own stroke (`20mm`, or `15°` for an oscillating follower; without
+/// it the program's stroke). With strokes per phase the rises must add up to
+/// the returns ([`crate::program::Program::from_phases`]); docs/cams.md §2a.
 ///
 /// ```
 /// let p = tmm_cams::spec::parse_phases("rise 108 const-accel(u=1/3); dwell 15; return 108° sine; dwell 129").unwrap();
 /// assert_eq!(p.len(), 4);
 /// assert!((p[1].angle - 15f64.to_radians()).abs() < 1e-15);
 /// assert!(tmm_cams::spec::parse_phases("rise 108 bogus; dwell 252").is_err());
+/// let q = tmm_cams::spec::parse_phases("rise 90 cosine 20 mm; return 90 deg sine 20mm; dwell 180").unwrap();
+/// assert_eq!(q[0].stroke, Some(tmm_cams::program::Stroke::Length(0.020)));
+/// assert!(tmm_cams::spec::parse_phases("rise 90 cosine 20; return 90 sine 20mm; dwell 180").is_err());
 /// ```
 pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
     let mut out = Vec::new();
@@ -38,19 +45,40 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
             k => return Err(err(format!("`{k}` is not a phase; use rise, dwell or return"))),
         };
         let rest = rest.trim();
-        let (angle_txt, law) = if kind == PhaseKind::Dwell {
-            (rest, None)
+        let (angle_txt, law, stroke) = if kind == PhaseKind::Dwell {
+            (rest.to_string(), None, None)
         } else {
-            let cut = last_word_start(rest);
-            if cut == 0 {
-                return Err(err(format!(
-                    "give the angle and the law, e.g. `{kw} 108 cosine`; laws: {LAW_NAMES}"
-                )));
+            // KIND ANGLE LAW [STROKE]: the law is the first word that names one
+            let words = words_top(rest);
+            let found = words
+                .iter()
+                .position(|w| !matches!(parse_law(w), Err(CamError::UnknownLaw { .. })))
+                .filter(|&i| i > 0);
+            if found.is_none() {
+                // name the unknown law: the word after the longest prefix that reads as an angle
+                if let Some(i) = (1..words.len())
+                    .rev()
+                    .find(|&i| units::parse(&words[..i].join(" "), Dim::Angle).is_ok())
+                {
+                    parse_law(words[i])?;
+                }
             }
-            (rest[..cut].trim(), Some(parse_law(rest[cut..].trim())?))
+            let at = found.ok_or_else(|| {
+                err(format!(
+                    "give the angle and the law, e.g. `{kw} 108 cosine` or `{kw} 108 cosine 20mm`; laws: {LAW_NAMES}"
+                ))
+            })?;
+            let law = parse_law(words[at])?;
+            let stroke_txt = words[at + 1..].join(" ");
+            let stroke = if stroke_txt.is_empty() {
+                None
+            } else {
+                Some(parse_stroke(&stroke_txt).map_err(err)?)
+            };
+            (words[..at].join(" "), Some(law), stroke)
         };
-        let angle = units::parse(angle_txt, Dim::Angle).map_err(|e| err(e.to_string()))?;
-        out.push(Phase { kind, angle, law });
+        let angle = units::parse(&angle_txt, Dim::Angle).map_err(|e| err(e.to_string()))?;
+        out.push(Phase { kind, angle, law, stroke });
     }
     if out.is_empty() {
         return Err(CamError::Phase {
@@ -118,6 +146,7 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
         "mod-sine" | "modified-sine" => no_args(LawKind::ModSine)?,
         "poly345" | "3-4-5" => no_args(LawKind::Poly345)?,
         "poly4567" | "4-5-6-7" => no_args(LawKind::Poly4567)?,
+        "const-velocity" | "constant-velocity" | "linear" | "uniform" => no_args(LawKind::ConstVelocity)?,
         "table" => {
             let a = args.unwrap_or("");
             let vals: Result<Vec<f64>, CamError> = a
@@ -223,18 +252,44 @@ fn split_top(text: &str, sep: char) -> Vec<&str> {
     out
 }
 
-/// Byte index where the last whitespace-separated word (parentheses kept
-/// together) starts; 0 when there is only one word.
-fn last_word_start(text: &str) -> usize {
-    let mut depth = 0i32;
-    let mut last = 0;
+/// A phase's stroke with its unit: a length (`20mm`, `0.02 m`) or an angle
+/// (`15°`, `15 deg`, `0.2 rad`); a bare number is refused, since it could be
+/// read either way.
+fn parse_stroke(text: &str) -> Result<Stroke, String> {
+    let t = text.trim();
+    if t.ends_with(|c: char| c.is_ascii_digit() || c == '.') {
+        return Err(format!(
+            "give the stroke `{t}` with its unit: a length such as `20mm` (translating follower) or an angle such as `15°` (oscillating)"
+        ));
+    }
+    if let Ok(v) = units::parse(t, Dim::Length) {
+        return Ok(Stroke::Length(v));
+    }
+    units::parse(t, Dim::Angle)
+        .map(Stroke::Angle)
+        .map_err(|_| format!("`{t}` is neither a length (`20mm`) nor an angle (`15°`) for the phase's stroke"))
+}
+
+/// Whitespace-separated words, parentheses kept together.
+fn words_top(text: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, None);
     for (i, c) in text.char_indices() {
         match c {
             '(' => depth += 1,
             ')' => depth -= 1,
-            c if c.is_whitespace() && depth == 0 => last = i + c.len_utf8(),
             _ => {}
         }
+        if c.is_whitespace() && depth == 0 {
+            if let Some(s) = start.take() {
+                out.push(&text[s..i]);
+            }
+        } else if start.is_none() {
+            start = Some(i);
+        }
     }
-    last
+    if let Some(s) = start {
+        out.push(&text[s..]);
+    }
+    out
 }

@@ -17,11 +17,9 @@ use crate::{BasicRack, GearError, Kind};
 /// assert!(xs.abs() < 1e-12);
 /// ```
 pub fn shift_sum_for_aw(z1: u32, z2: u32, m: f64, aw: f64, rack: &BasicRack, kind: Kind) -> Result<f64, GearError> {
-    if !(m.is_finite() && m > 0.0) {
-        return Err(GearError::Module(m));
-    }
+    crate::spec::check_module(m)?;
     let zs = match kind {
-        Kind::External => (z1 + z2) as f64,
+        Kind::External => z1 as f64 + z2 as f64,
         Kind::Internal => z2 as f64 - z1 as f64,
     };
     if zs <= 0.0 {

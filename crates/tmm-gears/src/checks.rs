@@ -3,23 +3,36 @@
 
 use crate::{Kind, Pair};
 
+/// Least tip thickness for teeth of uniform (through-hardened) material,
+/// sa ≥ 0.3·m: GOST 16532-70 (quoted in seed 001, §IV: "ГОСТ 16532-70
+/// рекомендует иметь Sа ≥ 0,3m при однородной структуре материала зубьев").
+/// The default: a course pair is through-hardened unless stated otherwise.
+pub const SA_MIN_THROUGH_HARDENED: f64 = 0.3;
+
+/// Least tip thickness for surface-hardened (case-hardened, nitrided) teeth,
+/// sa ≥ 0.4·m: GOST 16532-70 (same place: "Sа ≥ 0,4m при поверхностном
+/// упрочнении зубьев").
+pub const SA_MIN_CASE_HARDENED: f64 = 0.4;
+
+/// Least contact ratio of a spur pair, εα ≥ 1.2 (GOST 16532-70; seed 001 §IV).
+pub const EPS_MIN: f64 = 1.2;
+
 /// The limits the checks compare with.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Limits {
-    /// Least tip thickness as a fraction of m (GOST 16532-70 recommends 0.3
-    /// for through-hardened teeth and 0.4 for case-hardened; 0.25 is the
-    /// usual course minimum).
+    /// Least tip thickness as a fraction of m: [`SA_MIN_THROUGH_HARDENED`]
+    /// (0.3, the default) or [`SA_MIN_CASE_HARDENED`] (0.4), GOST 16532-70.
     pub sa_min: f64,
     /// Least contact ratio εα (GOST 16532-70: ≥ 1.2 for spur pairs).
     pub eps_min: f64,
 }
 
 impl Default for Limits {
-    /// sa ≥ 0.25·m, εα ≥ 1.2.
+    /// sa ≥ 0.3·m (GOST 16532-70, uniform material), εα ≥ 1.2.
     fn default() -> Self {
         Limits {
-            sa_min: 0.25,
-            eps_min: 1.2,
+            sa_min: SA_MIN_THROUGH_HARDENED,
+            eps_min: EPS_MIN,
         }
     }
 }
@@ -29,7 +42,8 @@ impl Default for Limits {
 pub enum CheckKind {
     /// No undercut of wheel 1 or 2 by the rack: x ≥ xmin.
     Undercut(u8),
-    /// No interference: ρl ≤ ρp.
+    /// No interference: max(ρl, 0) ≤ ρp (the contact must not pass the
+    /// form point, nor N on the line of action).
     Interference(u8),
     /// No interference at a ring: its contact with the pinion tip stays inside
     /// its generated involute, ρp2 ≤ ρl2.
@@ -40,6 +54,9 @@ pub enum CheckKind {
     ContactRatio,
     /// Internal pair: tip interference margin ≥ 0.
     TipInterference,
+    /// Internal pair: trimming (radial assembly) margin ≥ 0; a pair that fails
+    /// runs, but can only be assembled by sliding the pinion in axially.
+    Trimming,
 }
 
 impl CheckKind {
@@ -52,6 +69,7 @@ impl CheckKind {
             CheckKind::Pointing(w) => format!("pointing{w}"),
             CheckKind::ContactRatio => "contact_ratio".into(),
             CheckKind::TipInterference => "tip_interference".into(),
+            CheckKind::Trimming => "trimming".into(),
         }
     }
 
@@ -59,12 +77,12 @@ impl CheckKind {
     pub fn describe(&self) -> String {
         match self {
             CheckKind::Undercut(w) => format!("no undercut of wheel {w}: x{w} ≥ xmin{w}"),
-            CheckKind::Interference(1) => "no interference at wheel 1: ρl1 ≤ ρp1".into(),
-            CheckKind::Interference(w) => format!("no interference at wheel {w}: ρl{w} ≤ ρp{w}"),
+            CheckKind::Interference(w) => format!("no interference at wheel {w}: max(ρl{w}, 0) ≤ ρp{w}"),
             CheckKind::RingInterference => "no interference at the ring: ρp2 ≤ ρl2".into(),
             CheckKind::Pointing(w) => format!("no tip pointing of wheel {w}: sa{w} ≥ sa_min"),
             CheckKind::ContactRatio => "contact ratio εα ≥ εmin".into(),
             CheckKind::TipInterference => "no tip interference of the internal pair: margin ≥ 0".into(),
+            CheckKind::Trimming => "radial assembly without trimming (else the pinion goes in axially only): margin ≥ 0".into(),
         }
     }
 }
@@ -82,10 +100,10 @@ pub struct Check {
     pub pass: bool,
 }
 
-/// Up to eight checks, without allocation.
+/// Up to ten checks, without allocation.
 #[derive(Debug, Clone, Copy)]
 pub struct Checks {
-    items: [Check; 8],
+    items: [Check; 10],
     len: usize,
 }
 
@@ -122,7 +140,10 @@ impl Pair {
             limit: 0.0,
             pass: true,
         };
-        let mut out = Checks { items: [blank; 8], len: 0 };
+        let mut out = Checks {
+            items: [blank; 10],
+            len: 0,
+        };
         let internal = self.spec.kind == Kind::Internal;
         let m = self.spec.m;
         for (i, w) in [(1u8, &self.w1), (2u8, &self.w2)] {
@@ -135,11 +156,14 @@ impl Pair {
                 });
             }
         }
+        // Below ρl < 0 (undercut) the involute still ends at the base circle,
+        // ρ = 0 (N on the line of action): compare with max(ρl, 0).
+        let limit1 = self.w1.rho_l.max(0.0);
         out.push(Check {
             kind: CheckKind::Interference(1),
             value: self.w1.rho_p,
-            limit: self.w1.rho_l,
-            pass: self.w1.rho_l <= self.w1.rho_p,
+            limit: limit1,
+            pass: limit1 <= self.w1.rho_p,
         });
         if internal {
             out.push(Check {
@@ -149,11 +173,12 @@ impl Pair {
                 pass: self.w2.rho_p <= self.w2.rho_l,
             });
         } else {
+            let limit2 = self.w2.rho_l.max(0.0);
             out.push(Check {
                 kind: CheckKind::Interference(2),
                 value: self.w2.rho_p,
-                limit: self.w2.rho_l,
-                pass: self.w2.rho_l <= self.w2.rho_p,
+                limit: limit2,
+                pass: limit2 <= self.w2.rho_p,
             });
         }
         for (i, w) in [(1u8, &self.w1), (2u8, &self.w2)] {
@@ -174,6 +199,14 @@ impl Pair {
         if let Some(t) = self.tip_interference {
             out.push(Check {
                 kind: CheckKind::TipInterference,
+                value: t,
+                limit: 0.0,
+                pass: t >= 0.0,
+            });
+        }
+        if let Some(t) = self.trimming {
+            out.push(Check {
+                kind: CheckKind::Trimming,
                 value: t,
                 limit: 0.0,
                 pass: t >= 0.0,

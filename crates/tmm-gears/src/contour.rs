@@ -1,7 +1,7 @@
 //! The blocking contour (блокирующий контур) of a pair in the x1–x2 plane,
 //! computed numerically for any tooth numbers and basic rack: the region where
 //! the teeth are neither undercut nor pointed, the pair has no interference and
-//! εα ≥ 1, with the quality lines (sa = 0.25m, 0.4m, εα = 1.2, equal specific
+//! εα ≥ 1, with the quality lines (sa = 0.3m, 0.4m, εα = 1.2, equal specific
 //! sliding) inside it.
 //!
 //! Method (derived here, docs/gears.md §Blocking contour): every boundary is
@@ -23,7 +23,7 @@ use crate::{GearError, Kind, Pair, PairSpec};
 pub enum Boundary {
     /// Undercut of wheel i: `ρl_i = 0`, i.e. `x_i − xmin_i = 0`.
     Undercut(u8),
-    /// Interference at wheel i: `ρp_i − ρl_i = 0` (ring: `ρl2 − ρp2 = 0`).
+    /// Interference at wheel i: `ρp_i − max(ρl_i, 0) = 0` (ring: `ρl2 − ρp2 = 0`).
     Interference(u8),
     /// Tip thickness of wheel i equal to `k·m` (`k = 0`: the pointed tip).
     TipThickness(u8, f64),
@@ -48,7 +48,7 @@ impl Boundary {
                 if i == 2 && p.spec.kind == Kind::Internal {
                     (wh.rho_l - wh.rho_p) / m
                 } else {
-                    (wh.rho_p - wh.rho_l) / m
+                    (wh.rho_p - wh.rho_l.max(0.0)) / m
                 }
             }
             Boundary::TipThickness(i, k) => w(i).sa / m - k,
@@ -172,7 +172,7 @@ impl Default for ContourOptions {
             n: 121,
             x1: None,
             x2: None,
-            sa_lines: vec![0.25, 0.4],
+            sa_lines: vec![crate::checks::SA_MIN_THROUGH_HARDENED, crate::checks::SA_MIN_CASE_HARDENED],
             eps_lines: vec![1.2],
         }
     }

@@ -13,8 +13,10 @@ pub enum GearError {
         /// The smallest tooth number that can be cut.
         min: u32,
     },
-    /// The module is not a positive finite length.
-    #[error("the module must be a positive length, got {} mm", .0 * 1e3)]
+    /// The module is not a positive length inside the plausible range
+    /// [`crate::spec::MODULE_MIN`] … [`crate::spec::MODULE_MAX`] (0.05 … 100 mm,
+    /// the span of GOST 9563-60's series).
+    #[error("the module must be a length between 0.05 mm and 100 mm (the span of the GOST 9563-60 series), got {} mm{}", .0 * 1e3, crate::error::unit_hint(*.0))]
     Module(f64),
     /// A basic-rack parameter is out of range.
     #[error("basic rack: {msg}")]
@@ -40,15 +42,22 @@ pub enum GearError {
         /// Root diameter, m.
         df: f64,
     },
-    /// The tip circle is inside the base circle: no involute at the tip.
-    #[error("wheel {wheel}: the tip circle (d = {:.4} mm) lies inside the base circle (d = {:.4} mm), so the tip has no involute", .da * 1e3, .db * 1e3)]
+    /// The tip circle does not reach the involute: it lies inside the base
+    /// circle, or (for a wheel cut by the rack) at or below the circle where the
+    /// generated involute begins, so the whole tooth is the cutter's fillet.
+    #[error("{}", crate::error::tip_inside_text(*.wheel, *.da, *.db, *.form))]
     TipInsideBase {
-        /// 1 or 2.
+        /// 1 or 2 (0: a lone wheel generated outside a pair).
         wheel: u8,
         /// Tip diameter, m.
         da: f64,
-        /// Base diameter, m.
+        /// Diameter where the involute begins, m: the base circle, or with
+        /// `form` the form circle of the rack's straight flank.
         db: f64,
+        /// `true` when `db` is the form circle (the tip lies below the start of
+        /// the generated involute: lower the shift); `false` for the base
+        /// circle (raise the shift).
+        form: bool,
     },
     /// The shift sum gives no operating pressure angle (inv αw < 0).
     #[error("the shift sum {x_sum:.4} is too negative: inv αw = {inv_aw:.6} < 0 has no operating pressure angle")]
@@ -72,7 +81,76 @@ pub enum GearError {
     /// No shift split satisfies every check.
     #[error("no x1, x2 inside the blocking contour satisfies every check{0}")]
     NoFeasibleSplit(String),
-    /// A result is not finite (guard against NaN and infinity).
-    #[error("the calculation gave a non-finite {0}")]
+    /// A result is not finite (guard against NaN and infinity): names the quantity.
+    #[error("the calculation gave a non-finite {0}; the input is out of any practical range")]
     NonFinite(&'static str),
+}
+
+impl GearError {
+    /// What the user can do about it, in words (for the edge to print under
+    /// the message).
+    ///
+    /// ```
+    /// use tmm_gears::GearError;
+    /// let e = GearError::TipInsideBase { wheel: 1, da: 0.115, db: 0.159, form: true };
+    /// assert!(e.help().contains("lower x1"));
+    /// ```
+    pub fn help(&self) -> String {
+        match self {
+            GearError::TooFewTeeth { min, .. } => {
+                format!("use at least {min} teeth (fewer cannot be cut by the rack without undercut or a pointed tip)")
+            }
+            GearError::Module(m) => format!(
+                "give the module with its unit, e.g. \"5 mm\"; the GOST 9563-60 series spans 0.05 mm to 100 mm{}",
+                unit_hint(*m)
+            ),
+            GearError::Rack { .. } => "the default rack is α = 20°, ha* = 1, c* = 0.25, hl* = 2 (GOST 13755-81)".into(),
+            GearError::Shift { .. } => "a shift is a plain number such as 0.3".into(),
+            GearError::TipBelowRoot { wheel, .. } => format!(
+                "lower the shift sum (its tip shortening Δy eats the tooth) or x{wheel}; `tmm gear contour` shows the allowed region"
+            ),
+            GearError::TipInsideBase { wheel, form: true, .. } => format!(
+                "lower x{wheel} (or the shift sum): the rack's straight flank then cuts the involute below the tip; `tmm gear contour` shows the allowed region"
+            ),
+            GearError::TipInsideBase { wheel, form: false, .. } => {
+                format!("raise x{wheel}: the tip circle then moves out past the base circle")
+            }
+            GearError::ShiftSum { .. } => "raise x1 + x2 (x2 − x1 for an internal pair)".into(),
+            GearError::CentreDistance { min, .. } => format!("give aw above {:.4} mm", min * 1e3),
+            GearError::InternalAssembly(_) => "see the message for the condition that fails and what to change".into(),
+            GearError::NoFeasibleSplit(_) => "try another criterion, relax sa_min or eps_min, or change the tooth numbers".into(),
+            GearError::NonFinite(_) => "check the magnitudes of the input (module, shifts, tooth numbers)".into(),
+        }
+    }
+}
+
+/// A hint when a module looks like a length given in the wrong unit.
+pub(crate) fn unit_hint(m: f64) -> String {
+    if (0.05..=100.0).contains(&m) {
+        format!(" — did you mean {} mm? (a number without a unit is read in metres)", m)
+    } else {
+        String::new()
+    }
+}
+
+/// The message of [`GearError::TipInsideBase`].
+pub(crate) fn tip_inside_text(wheel: u8, da: f64, db: f64, form: bool) -> String {
+    let who = if wheel == 0 {
+        "the wheel".to_string()
+    } else {
+        format!("wheel {wheel}")
+    };
+    if form {
+        format!(
+            "{who}: the tip circle (d = {:.4} mm) lies inside the circle where the involute cut by the rack's straight flank begins (d = {:.4} mm): the tooth has no involute, it is all fillet",
+            da * 1e3,
+            db * 1e3
+        )
+    } else {
+        format!(
+            "{who}: the tip circle (d = {:.4} mm) lies inside the base circle (d = {:.4} mm), so the tip has no involute",
+            da * 1e3,
+            db * 1e3
+        )
+    }
 }

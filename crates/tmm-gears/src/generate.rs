@@ -64,6 +64,11 @@ pub struct ToothProfile {
     pub ra: f64,
     /// Root radius, m.
     pub rf: f64,
+    /// The cutter's tip fillet radius used, m (0 for a ring): the largest that
+    /// fits when the rack's own did not ([`BasicRack::fit_fillet`]).
+    pub fillet_radius: f64,
+    /// `true` when the rack's fillet did not fit and a smaller one was used.
+    pub fillet_reduced: bool,
 }
 
 impl ToothProfile {
@@ -107,7 +112,10 @@ impl ToothProfile {
 }
 
 /// Generate an external wheel's tooth with the rack cutter of `rack`, module
-/// `m`, shift `x`, tip radius `ra`; `samples` points per cutter part (≥ 8).
+/// `m`, shift `x`, tip radius `ra`; `samples` points per cutter part (8 …
+/// 100 000). When the rack's tip fillet does not fit on the cutter's tooth
+/// (e.g. α = 25° with hl* = 2) the largest that fits is used
+/// ([`BasicRack::fit_fillet`]) and reported in [`ToothProfile::fillet_radius`].
 ///
 /// ```
 /// use tmm_gears::{BasicRack, generate::{generate, Part}};
@@ -118,11 +126,11 @@ impl ToothProfile {
 /// assert!(t.half.iter().any(|p| p.part == Part::Involute));
 /// ```
 pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usize) -> Result<ToothProfile, GearError> {
-    rack.validate()?;
-    if !(m.is_finite() && m > 0.0) {
-        return Err(GearError::Module(m));
-    }
-    let n = samples.max(8);
+    crate::spec::check_module(m)?;
+    // The largest fillet that fits on the cutter's tip (docs/gears.md §Rack).
+    let fit = rack.fit_fillet()?;
+    let rack = &fit.rack;
+    let n = samples.clamp(8, 100_000);
     let r = z as f64 * m / 2.0;
     let al = rack.alpha;
     let (sa, ca, ta) = (al.sin(), al.cos(), al.tan());
@@ -130,12 +138,13 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
     let tip = -(rack.ha + rack.c) * m;
     let eta_c = tip + rho;
     let xi_c = PI * m / 4.0 + eta_c * ta - rho / ca;
-    if xi_c < 0.0 || rho < 0.0 {
+    if xi_c < -1e-12 * m || rho < 0.0 {
         return Err(GearError::Rack {
             param: "hl",
             msg: "the cutter's tip fillet does not fit on its tip (check hl*, c*)",
         });
     }
+    let xi_c = xi_c.max(0.0);
     let rf = r + x * m + tip;
     if ra <= rf {
         return Err(GearError::TipBelowRoot {
@@ -180,10 +189,15 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
     let eta1 = match eta_top {
         Some(e) => e,
         None => {
+            // The flank's lowest point already envelops a radius above the tip
+            // (the tooth is all fillet), or the tip is inside the base circle.
+            let r_form = flank_at(eta0).0;
+            let form = r_form >= ra && r_form > r * ca;
             return Err(GearError::TipInsideBase {
                 wheel: 0,
                 da: 2.0 * ra,
-                db: 2.0 * r * ca,
+                db: if form { 2.0 * r_form } else { 2.0 * r * ca },
+                form,
             });
         }
     };
@@ -242,6 +256,8 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
         half,
         ra,
         rf,
+        fillet_radius: rho,
+        fillet_reduced: fit.reduced,
     })
 }
 
@@ -249,8 +265,60 @@ pub fn generate(z: u32, m: f64, x: f64, rack: &BasicRack, ra: f64, samples: usiz
 /// out to the form radius `r_form`, then the root circle. A ring is cut by a
 /// shaper cutter, not a rack, so it is drawn from the involute's closed form
 /// `ψ(r) = s/d − inv α + inv α_r` (docs/gears.md §Internal).
+///
+/// Invalid input (z = 0, a module outside [`crate::spec::check_module`], a
+/// radius that is not finite and positive, a non-finite result) gives an
+/// empty profile; [`ring_profile_checked`] says why.
 #[allow(clippy::too_many_arguments)]
 pub fn ring_profile(z: u32, m: f64, s: f64, rack: &BasicRack, ra: f64, rf: f64, r_form: f64, samples: usize) -> ToothProfile {
+    ring_profile_checked(z, m, s, rack, ra, rf, r_form, samples).unwrap_or(ToothProfile {
+        z,
+        ring: true,
+        half: Vec::new(),
+        ra,
+        rf,
+        fillet_radius: 0.0,
+        fillet_reduced: false,
+    })
+}
+
+/// [`ring_profile`] with the reason when the input is invalid.
+///
+/// ```
+/// use tmm_gears::{BasicRack, generate::ring_profile_checked};
+/// let r = BasicRack::default();
+/// assert!(ring_profile_checked(0, 0.002, 0.003, &r, 0.05, 0.06, 0.058, 16).is_err());
+/// assert!(ring_profile_checked(60, 0.002, 0.003, &r, 0.058, 0.0625, 0.062, 16).is_ok());
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn ring_profile_checked(
+    z: u32,
+    m: f64,
+    s: f64,
+    rack: &BasicRack,
+    ra: f64,
+    rf: f64,
+    r_form: f64,
+    samples: usize,
+) -> Result<ToothProfile, GearError> {
+    rack.validate()?;
+    crate::spec::check_module(m)?;
+    if z == 0 {
+        return Err(GearError::TooFewTeeth { wheel: 2, z, min: 1 });
+    }
+    let pos = |v: f64| v.is_finite() && v > 0.0;
+    if !(pos(ra) && pos(rf) && pos(r_form) && s.is_finite()) {
+        return Err(GearError::NonFinite("ring radius or tooth thickness"));
+    }
+    let p = ring_profile_raw(z, m, s, rack, ra, rf, r_form, samples.clamp(8, 100_000));
+    if p.half.iter().any(|q| !(q.r.is_finite() && q.psi.is_finite())) {
+        return Err(GearError::NonFinite("ring profile"));
+    }
+    Ok(p)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn ring_profile_raw(z: u32, m: f64, s: f64, rack: &BasicRack, ra: f64, rf: f64, r_form: f64, samples: usize) -> ToothProfile {
     let n = samples.max(8);
     let d = z as f64 * m;
     let rb = d / 2.0 * rack.alpha.cos();
@@ -293,5 +361,7 @@ pub fn ring_profile(z: u32, m: f64, s: f64, rack: &BasicRack, ra: f64, rf: f64, 
         half,
         ra,
         rf,
+        fillet_radius: 0.0,
+        fillet_reduced: false,
     }
 }

@@ -37,5 +37,5 @@ pub mod spec;
 pub use checks::{Check, CheckKind, Checks, Limits};
 pub use error::GearError;
 pub use pair::{Pair, Wheel};
-pub use rack::BasicRack;
+pub use rack::{BasicRack, FilletFit};
 pub use spec::{Kind, PairSpec};

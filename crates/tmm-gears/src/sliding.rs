@@ -31,27 +31,54 @@ impl Pair {
         1.0 - self.u * s / self.rho2_at(s)
     }
 
-    /// The largest |ϑ1| on the active line (it is at the pinion's lower active
-    /// point, the start of the active line); `None` when that point lies at or
-    /// beyond N1 (interference).
+    /// The largest |ϑ1| on the real active line. ϑ1 rises monotonically along
+    /// N1N2 (from −∞ at N1 to 1 at N2: dϑ1/ds = ρ2(N1)/(u s²) > 0 with
+    /// ρ2 = g ∓ s), so the largest magnitude lies at one of the line's ends —
+    /// usually the start (the pinion's lower active point), but the end when
+    /// the whole line lies near the pole; both ends are compared. `None` when
+    /// the line starts at N1 (ϑ1 infinite there).
     pub fn theta1_max(&self) -> Option<f64> {
         let s = self.s_start;
         (s > 0.0).then(|| self.theta1_at(s).abs().max(self.theta1_at(self.s_end).abs()))
     }
 
-    /// The largest |ϑ2| on the active line (at wheel 2's lower active point,
-    /// the end of the active line); `None` when that point lies beyond N2.
+    /// The largest |ϑ2| on the real active line: ϑ2 falls monotonically
+    /// (to −∞ at N2), so again one of the ends, usually wheel 2's lower active
+    /// point (the end of the line); `None` when the line ends at N2.
     pub fn theta2_max(&self) -> Option<f64> {
         let s = self.s_end;
         (self.rho2_at(s) > 0.0).then(|| self.theta2_at(s).abs().max(self.theta2_at(self.s_start).abs()))
     }
 
-    /// `n ≥ 2` points evenly spaced over the active line, ends included.
+    /// `n ≥ 2` points evenly spaced over the real active line, ends included;
+    /// an end that lies on N1 or N2 (where ϑ is infinite) is moved half a
+    /// step inward, so every value is finite. Empty when the real active line
+    /// is empty (no involute contact at all).
+    ///
+    /// ```
+    /// use tmm_gears::{Pair, PairSpec};
+    /// // z1 = 10 unshifted is undercut and its line of action runs past N1.
+    /// let p = Pair::new(&PairSpec::external(10, 60, 0.001, 0.0, 0.0)).unwrap();
+    /// let t = p.sliding_table(11);
+    /// assert!(t[0].s > 0.0 && t.iter().all(|q| q.theta1.is_finite() && q.theta1 < 1.0));
+    /// ```
     pub fn sliding_table(&self, n: usize) -> Vec<SlidingPoint> {
-        let n = n.max(2);
+        let n = n.clamp(2, 1_000_000);
+        if self.s_end <= self.s_start {
+            // no real active line (the pair has no involute contact at all)
+            return Vec::new();
+        }
+        let step = (self.s_end - self.s_start) / (n - 1) as f64;
+        let (mut a, mut b) = (self.s_start, self.s_end);
+        if a <= 0.0 {
+            a += step / 2.0;
+        }
+        if self.rho2_at(b) <= 0.0 {
+            b -= step / 2.0;
+        }
         (0..n)
             .map(|i| {
-                let s = self.s_start + (self.s_end - self.s_start) * i as f64 / (n - 1) as f64;
+                let s = a + (b - a) * i as f64 / (n - 1) as f64;
                 SlidingPoint {
                     s,
                     rho2: self.rho2_at(s),

@@ -51,12 +51,11 @@ impl PairSpec {
         }
     }
 
-    /// Check everything that does not need the geometry.
+    /// Check everything that does not need the geometry (the module by
+    /// [`check_module`]).
     pub fn validate(&self) -> Result<(), GearError> {
         self.rack.validate()?;
-        if !(self.m.is_finite() && self.m > 0.0) {
-            return Err(GearError::Module(self.m));
-        }
+        check_module(self.m)?;
         if !self.x1.is_finite() {
             return Err(GearError::Shift { wheel: 1 });
         }
@@ -94,6 +93,34 @@ impl PairSpec {
     }
 }
 
+/// The smallest module accepted, 0.05 mm: the first value of GOST 9563-60's
+/// series of modules (Модули, ряды 1 и 2, 0.05 … 100 mm).
+pub const MODULE_MIN: f64 = 0.05e-3;
+
+/// The largest module accepted, 100 mm: the last value of GOST 9563-60's
+/// series. Anything outside 0.05 … 100 mm is far more likely a unit slip (a
+/// module of 5 typed without "mm" and read as 5 m) than a real gear.
+pub const MODULE_MAX: f64 = 100e-3;
+
+/// Refuse a module that is not a finite length inside
+/// [`MODULE_MIN`] … [`MODULE_MAX`] (the span of GOST 9563-60); the message of
+/// [`GearError::Module`] suggests the unit when the number looks like
+/// millimetres read as metres.
+///
+/// ```
+/// use tmm_gears::spec::check_module;
+/// assert!(check_module(0.005).is_ok());
+/// assert!(check_module(5.0).is_err()); // "5" read as 5 m: da would be 88.9 m
+/// assert!(check_module(1e-5).is_err() && check_module(f64::NAN).is_err());
+/// ```
+pub fn check_module(m: f64) -> Result<(), GearError> {
+    if m.is_finite() && (MODULE_MIN * (1.0 - 1e-12)..=MODULE_MAX * (1.0 + 1e-12)).contains(&m) {
+        Ok(())
+    } else {
+        Err(GearError::Module(m))
+    }
+}
+
 /// The least shift that avoids undercut by the rack,
 /// `xmin = (hl* − ha*) − z·sin²α / 2` (seed 001, sheet 2, §IV.1; GOST 16532-70
 /// writes `ha* − z·sin²α/2` for the standard rack where hl* − ha* = ha*).
@@ -111,8 +138,12 @@ pub fn xmin(z: u32, rack: &BasicRack) -> f64 {
 
 /// Tip thickness of a lone external wheel with shift `x` and no tip shortening,
 /// in modules: `sa/m = (da/m)·(s/d + inv α − inv αa)` (GOST 16532-70, table 4).
-/// Returns `None` when the tip circle is inside the base circle.
+/// Returns `None` when the tip circle is inside the base circle, and for
+/// `z = 0` or a result that is not finite.
 pub fn lone_tip_thickness(z: u32, x: f64, rack: &BasicRack) -> Option<f64> {
+    if z == 0 {
+        return None;
+    }
     let zf = z as f64;
     let d = zf;
     let da = d + 2.0 * (rack.ha + x);
@@ -122,7 +153,8 @@ pub fn lone_tip_thickness(z: u32, x: f64, rack: &BasicRack) -> Option<f64> {
     }
     let aa = (db / da).acos();
     let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
-    Some(da * (s / d + inv(rack.alpha) - inv(aa)))
+    let sa = da * (s / d + inv(rack.alpha) - inv(aa));
+    sa.is_finite().then_some(sa)
 }
 
 /// The smallest tooth number a rack can cut with neither undercut nor a pointed

@@ -51,7 +51,10 @@ fn q(z1: f64, z2: f64, x1: f64, x2: f64) -> Q {
     let rho_p1 = g - rb2 * aa2.tan();
     let rho_p2 = g - rb1 * aa1.tan();
     let u = z2 / z1;
-    let (sa_, sb_) = (rho_p1, rb1 * aa1.tan());
+    let rho_l1 = z1 / 2.0 * al.sin() - (1.0 - x1) * m / al.sin();
+    let rho_l2 = z2 / 2.0 * al.sin() - (1.0 - x2) * m / al.sin();
+    // The real active line: the involutes exist only beyond N1, N2 and their form points.
+    let (sa_, sb_) = (rho_p1.max(rho_l1).max(0.0), (rb1 * aa1.tan()).min(g - rho_l2.max(0.0)));
     Q {
         x1,
         x2,
@@ -59,11 +62,12 @@ fn q(z1: f64, z2: f64, x1: f64, x2: f64) -> Q {
         xmin2: 1.0 - z2 * al.sin().powi(2) / 2.0,
         rho_p1,
         rho_p2,
-        rho_l1: z1 / 2.0 * al.sin() - (1.0 - x1) * m / al.sin(),
-        rho_l2: z2 / 2.0 * al.sin() - (1.0 - x2) * m / al.sin(),
+        rho_l1,
+        rho_l2,
         sa1: 2.0 * ra1 * ((PI / 2.0 + 2.0 * x1 * al.tan()) / z1 + inv(al) - inv(aa1)),
         sa2: 2.0 * ra2 * ((PI / 2.0 + 2.0 * x2 * al.tan()) / z2 + inv(al) - inv(aa2)),
-        eps: (z1 * aa1.tan() + z2 * aa2.tan() - (z1 + z2) * aw_a.tan()) / (2.0 * PI),
+        // the length of the real active line over the base pitch π m cos α
+        eps: (sb_ - sa_) / (PI * m * al.cos()),
         th1: (g - sa_) / (u * sa_) - 1.0,
         th2: u * sb_ / (g - sb_) - 1.0,
     }
@@ -89,8 +93,8 @@ fn boundary_points_satisfy_their_equations() {
                     let resid = match line.boundary {
                         Boundary::Undercut(1) => v.x1 - v.xmin1,
                         Boundary::Undercut(_) => v.x2 - v.xmin2,
-                        Boundary::Interference(1) => v.rho_p1 - v.rho_l1,
-                        Boundary::Interference(_) => v.rho_p2 - v.rho_l2,
+                        Boundary::Interference(1) => v.rho_p1 - v.rho_l1.max(0.0),
+                        Boundary::Interference(_) => v.rho_p2 - v.rho_l2.max(0.0),
                         Boundary::TipThickness(1, k) => v.sa1 - k,
                         Boundary::TipThickness(_, k) => v.sa2 - k,
                         Boundary::ContactRatio(e) => v.eps - e,
