@@ -430,3 +430,135 @@ fn a_vec2_is_not_printed_in_near_hint_errors() {
     }];
     assert!(Mechanism::new(&d).is_ok());
 }
+
+#[test]
+fn double_parallelogram_is_refused_with_its_rank_count() {
+    // frame A(0,0), D(0.4,0); cranks AB, DC and FE of 0.1 m, all parallel;
+    // coupler B–E–C of 0.4 m: W = 3·4 − 2·6 = 0, yet it moves (q = 1)
+    let coupler = LinkDef {
+        name: "2".into(),
+        points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.4, 0.0)), ("E".into(), v(0.2, 0.0))],
+        mass_center: v(0.2, 0.0),
+    };
+    let phi: f64 = 0.5;
+    let def = MechanismDef {
+        fixed: vec![("A".into(), v(0.0, 0.0)), ("D".into(), v(0.4, 0.0)), ("F".into(), v(0.2, 0.0))],
+        links: vec![
+            LinkDef::bar("1", "A", "B", 0.1),
+            coupler,
+            LinkDef::bar("3", "D", "C", 0.1),
+            LinkDef::bar("4", "F", "E", 0.1),
+        ],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "A".into(),
+            pin: "B".into(),
+            omega: 1.0,
+            epsilon: 0.0,
+        }),
+        hints: vec![AssemblyHint {
+            point: "C".into(),
+            kind: HintKind::Near(v(0.4 + 0.1 * phi.cos(), 0.1 * phi.sin())),
+        }],
+        assembly_angle: phi,
+        ..Default::default()
+    };
+    let e = Mechanism::new(&def).unwrap_err();
+    match e {
+        LinkageError::Redundant {
+            w,
+            dof,
+            redundant,
+            passive,
+            ..
+        } => assert_eq!((w, dof, redundant, passive), (0, 1, 1, 0)),
+        other => panic!("{other}"),
+    }
+    let msg = Mechanism::new(&def).unwrap_err().to_string();
+    assert!(msg.contains("W = 3n − 2p5 = 3·4 − 2·6 = 0") && msg.contains("mobility 1"), "{msg}");
+    // without the third crank the same motion is analysed
+    let mut d3 = def.clone();
+    d3.links.pop();
+    d3.fixed.pop();
+    let m = Mechanism::new(&d3).unwrap();
+    assert_eq!((m.structure.dof, m.structure.dof_rank, m.structure.redundant), (1, 1, 0));
+}
+
+#[test]
+fn a_joint_never_defined_on_its_other_link_is_named() {
+    let mut d = common_fourbar();
+    d.links[2] = LinkDef::bar("3", "D", "X", 0.38);
+    let e = Mechanism::new(&d).unwrap_err().to_string();
+    assert!(e.contains("`X` (on link `3`)") && e.contains("`C` (on link `2`)"), "{e}");
+    assert!(e.contains("3·3 − 2·3"), "{e}");
+}
+
+#[test]
+fn a_triple_rocker_is_analysed_over_its_range_when_asked() {
+    use tmm_linkage::ranges::PartialCycle;
+    // crank 0.3, coupler 0.25, rocker 0.2, frame 0.4 (s + l = 0.6 > p + q = 0.55)
+    let def = MechanismDef {
+        fixed: vec![("O".into(), v(0.0, 0.0)), ("D".into(), v(0.4, 0.0))],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.3),
+            LinkDef::bar("2", "A", "C", 0.25),
+            LinkDef::bar("3", "D", "C", 0.2),
+        ],
+        input: input(2.0),
+        ..Default::default()
+    };
+    let m = Mechanism::new(&def).unwrap();
+    // a full turn is still refused, with the ranges
+    let e = Cycle::new(&m, Working::Slower).unwrap_err();
+    assert!(matches!(e, LinkageError::AssemblyRanges { .. }), "{e}");
+    // |OC|... the assembly limit: |AD|² = 0.25 − 0.24 cos φ ≤ (0.25 + 0.2)²
+    let lim = ((0.25f64 - 0.45 * 0.45) / 0.24).acos();
+    let p = PartialCycle::new(&m).unwrap();
+    assert_eq!(p.ranges.len(), 1);
+    assert_eq!(p.map.gaps.len(), 1);
+    let r = p.ranges[0].range;
+    assert!(
+        (r.from - (TAU - lim)).abs() < 1e-6 && (r.to - (TAU + lim)).abs() < 1e-6,
+        "{r:?} vs ±{lim}"
+    );
+    assert!((p.map.gaps[0].from - lim).abs() < 1e-6 && (p.map.gaps[0].to - (TAU - lim)).abs() < 1e-6);
+    // the rocker's dead positions inside: crank and coupler in line, |OC| = 0.55
+    assert!(!p.ranges[0].dead.is_empty());
+    let mut s = m.solution();
+    let c = m.point("C").unwrap();
+    for &d in &p.ranges[0].dead {
+        m.solve(d, &mut s).unwrap();
+        assert!((s.points[c].p.hypot() - 0.55).abs() < 1e-9, "{}", s.points[c].p.hypot());
+    }
+    // every listed position solves, ends included
+    for (_, phi) in p.positions(13) {
+        m.solve(phi, &mut s).unwrap();
+    }
+    assert!(p.ranges[0].s_max > p.ranges[0].s_min);
+    // a crank that turns fully gives one range of a whole turn
+    let p = PartialCycle::new(&Mechanism::new(&common_fourbar()).unwrap()).unwrap();
+    assert!(p.map.full_turn() && (p.ranges[0].range.span() - TAU).abs() < 1e-15);
+    assert_eq!(p.ranges[0].dead.len(), 2);
+}
+
+#[test]
+fn link_length_is_the_largest_distance_between_its_points() {
+    // seed 003's rocker E–B–C with B and C 0.6 m either side of E: |BC| = 1.2
+    let m = common::seed003();
+    assert!((tmm_linkage::forces::loads::link_length(&m, m.link("3").unwrap()) - 1.2).abs() < 1e-12);
+    assert!((tmm_linkage::forces::loads::link_length(&m, m.link("2").unwrap()) - 1.25).abs() < 1e-12);
+}
+
+#[test]
+fn block_centres_of_mass_are_exposed() {
+    let m = common::seed004();
+    let mut s = m.solution();
+    m.solve(0.7, &mut s).unwrap();
+    for name in ["3", "5"] {
+        let l = m.link(name).unwrap();
+        let joint = m.points.iter().position(|p| p.link == l).unwrap();
+        let sc = m.mass_center(&s, l);
+        assert!((sc.p - s.points[joint].p).hypot() < 1e-15);
+        assert!((sc.a - s.points[joint].a).hypot() < 1e-12);
+    }
+}
