@@ -238,6 +238,8 @@ impl Mechanism {
                     ));
                 }
             }
+            limits::coordinate(&format!("links.{}.mass_center.x", l.name), l.mass_center.x)?;
+            limits::coordinate(&format!("links.{}.mass_center.y", l.name), l.mass_center.y)?;
             if l.points.len() >= 2 && (l.points[1].1 - l.points[0].1).hypot() == 0.0 {
                 return Err(de(
                     format!("links.{}.length", l.name),

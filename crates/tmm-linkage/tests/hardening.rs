@@ -334,6 +334,9 @@ fn out_of_range_values_are_refused_with_the_field() {
     d.links[1].points.push(("K".into(), v(0.48 * 1e300, 0.0)));
     range(&d, "links.2.K.x");
     let mut d = common_fourbar();
+    d.links[1].mass_center = v(f64::NAN, 0.0);
+    range(&d, "links.2.mass_center.x");
+    let mut d = common_fourbar();
     d.assembly_angle = 1e300;
     range(&d, "assembly_angle");
     // solving at a crank angle out of range

@@ -174,3 +174,27 @@ fn class_iii_example_has_a_real_crank() {
     assert_eq!(c.dead.len(), 2);
     assert!(c.stroke > 5f64.to_radians(), "the output swings {}°", c.stroke.to_degrees());
 }
+
+#[test]
+fn force_polygons_close_for_every_linkage_example_under_weights_and_inertia() {
+    // examples without a [forces] section: 5 kg per link, J = 0.05 kg·m², gravity
+    for file in linkage_examples() {
+        let l = tmm_report::linkage::load(&source(&file)).unwrap().unwrap();
+        let m = &l.mech;
+        let mut loads = tmm_linkage::forces::Loads::new(m);
+        loads.gravity = Vec2::new(0.0, -9.81);
+        for i in 1..m.link_names.len() {
+            loads.links[i].mass = 5.0;
+            loads.links[i].inertia = 0.05;
+        }
+        let mut k = Kinetostatics::new(m, loads).unwrap();
+        let (mut sol, mut f) = (m.solution(), k.result());
+        for j in 0..120 {
+            let phi = TAU * (j as f64 + 0.25) / 120.0;
+            k.solve_at(phi, &mut sol, &mut f).unwrap_or_else(|e| panic!("{file} at {phi}: {e}"));
+            for p in f.polygons(m) {
+                assert!(p.closure().hypot() <= 1e-9 * p.largest(), "{file} φ = {phi}: {:?}", p.group);
+            }
+        }
+    }
+}
