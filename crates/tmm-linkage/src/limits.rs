@@ -58,7 +58,7 @@ pub fn coordinate(field: &str, x: f64) -> Result<(), LinkageError> {
             field,
             format!("{x:e} m"),
             "−1e4 m … 1e4 m",
-            " (a lever mechanism from 1 µm to 10 km; give lengths in SI metres)",
+            " (a lever mechanism up to 10 km across; give lengths in SI metres)",
         ))
     }
 }
