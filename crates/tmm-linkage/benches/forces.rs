@@ -1,7 +1,10 @@
 //! Kinetostatics of the seed-003 six-bar over one revolution of 3600
 //! positions: the reactions of all groups, the balancing torque and the
-//! Zhukovsky check at each, from precomputed kinematics; and the same with
-//! the kinematics solved in the loop.
+//! Zhukovsky check at each, from precomputed kinematics; the same with the
+//! kinematics solved in the loop; and the kinematics alone, in the same run,
+//! so that `scripts/bench-ratios.sh` can print what the forces cost relative
+//! to the kinematics measured side by side (a ratio a busy machine cannot
+//! distort the way it distorts absolute times).
 
 use std::f64::consts::TAU;
 
@@ -71,6 +74,20 @@ fn kinematics_and_reactions_3600_positions(bencher: divan::Bencher) {
         for i in 0..N {
             k.solve_at(TAU * i as f64 / N as f64, &mut sol, &mut f).unwrap();
             acc += f.balancing_moment;
+        }
+        black_box(acc)
+    });
+}
+
+#[divan::bench]
+fn kinematics_3600_positions(bencher: divan::Bencher) {
+    let m = common::seed003();
+    let mut sol = m.solution();
+    bencher.bench_local(|| {
+        let mut acc = 0.0;
+        for i in 0..N {
+            m.solve(TAU * i as f64 / N as f64, &mut sol).unwrap();
+            acc += sol.links[5].a.x;
         }
         black_box(acc)
     });

@@ -131,6 +131,24 @@ pub fn assemble(pairs: &[&Pair], unknown: &[usize], links: &[LinkState], mode: M
     row
 }
 
+/// Multiply the angle columns (every third, from the third) of a rows×cols
+/// row-major matrix by `f`: with `f = 1/L` the unknown angle θ becomes the arc
+/// length θ·L, so every column is a length and relative pivot tests do not
+/// depend on the unit of length (L the size of the mechanism).
+///
+/// ```
+/// let mut j = [1.0, 0.0, 2.0, 0.0, 1.0, 4.0];
+/// tmm_linkage::constraints::scale_angle_columns(&mut j, 2, 3, 0.5);
+/// assert_eq!(j, [1.0, 0.0, 1.0, 0.0, 1.0, 2.0]);
+/// ```
+pub fn scale_angle_columns(jac: &mut [f64], rows: usize, cols: usize, f: f64) {
+    for r in 0..rows {
+        for c in (2..cols).step_by(3) {
+            jac[r * cols + c] *= f;
+        }
+    }
+}
+
 /// Solve the square system `a·x = b` (n×n, row-major) in place by Gaussian
 /// elimination with partial pivoting; the solution is left in `b`. Returns
 /// `false` when a pivot is below `tol` times the largest entry.
@@ -224,10 +242,17 @@ pub fn newton(pairs: &[&Pair], unknown: &[usize], links: &mut [LinkState], jac: 
     for it in 0..60 {
         let rows = assemble(pairs, unknown, links, Mode::Position, jac, rhs);
         debug_assert_eq!(rows, n);
-        let res = rhs[..n].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        if res < 1e-14 * scale.max(1.0) && it > 0 {
+        // residual as lengths: a prismatic pair's angle row times the size
+        let mut res = 0.0f64;
+        for (k, p) in pairs.iter().enumerate() {
+            let w = if matches!(p, Pair::P { .. }) { scale } else { 1.0 };
+            res = res.max(rhs[2 * k].abs()).max(rhs[2 * k + 1].abs() * w);
+        }
+        if res < 1e-14 * scale && it > 0 {
             return Some(it);
         }
+        // unknown angles as arc lengths θ·scale (see `scale_angle_columns`)
+        scale_angle_columns(&mut jac[..n * n], n, n, 1.0 / scale);
         if !solve_dense(&mut jac[..n * n], &mut rhs[..n], n, 1e-13) {
             return None;
         }
@@ -238,13 +263,13 @@ pub fn newton(pairs: &[&Pair], unknown: &[usize], links: &mut [LinkState], jac: 
             let s = &mut links[l];
             s.o.x += f * rhs[3 * k];
             s.o.y += f * rhs[3 * k + 1];
-            let dt = f * rhs[3 * k + 2];
+            let dt = f * rhs[3 * k + 2] / scale;
             let (sn, cs) = dt.sin_cos();
             s.u = rot(s.u, Vec2::new(cs, sn));
             let norm = s.u.hypot();
             s.u *= 1.0 / norm;
         }
-        if step * f < 1e-15 * scale.max(1.0) {
+        if step * f < 1e-15 * scale {
             return Some(it);
         }
     }

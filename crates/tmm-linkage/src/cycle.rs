@@ -153,6 +153,75 @@ pub struct Cycle {
     pub work_sign: f64,
 }
 
+/// Two strokes whose crank angles differ by less than this fraction of a turn
+/// take the same time (Kv = 1): which one is "slower" is round-off.
+pub const KV_TIE: f64 = 1e-9;
+
+/// The error for `working = slower` when Kv = 1.
+pub fn kv_tie(up: f64, down: f64) -> LinkageError {
+    LinkageError::desc(
+        "working",
+        format!(
+            "both strokes take the same crank angle ({:.6}° and {:.6}°, Kv = 1), so neither is the slower one; \
+             say which stroke works: `increasing` or `decreasing` (the output coordinate on the working stroke)",
+            up.to_degrees(),
+            down.to_degrees()
+        ),
+    )
+}
+
+/// The zeros of a periodic function of the crank angle at which it changes
+/// sign, over one turn from `phi0` in the direction `sg` (±1): sampled at `n`
+/// equal steps, the last step closing the turn onto the first sample, each
+/// sign change refined by Brent's method to 1e-13 rad. A sample that is
+/// exactly zero is a root when the nearest non-zero samples on either side
+/// differ in sign. Non-finite samples (positions that do not assemble) break
+/// the scan there. So a root on a grid point — the start included — is found
+/// once, wherever the scan starts. Returned in order of crank travel.
+///
+/// ```
+/// // cos φ changes sign at 90° and 270°; the scan starts on a root of sin φ
+/// let r = tmm_linkage::cycle::periodic_roots(0.0, 1.0, 720, |x| x.cos());
+/// assert_eq!(r.len(), 2);
+/// assert!((r[0] - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+/// let r = tmm_linkage::cycle::periodic_roots(0.0, -1.0, 720, |x| x.sin());
+/// assert_eq!(r.len(), 2);
+/// assert!(r[0].abs() < 1e-12 && (r[1] + std::f64::consts::PI).abs() < 1e-12);
+/// ```
+pub fn periodic_roots(phi0: f64, sg: f64, n: usize, mut f: impl FnMut(f64) -> f64) -> Vec<f64> {
+    let n = n.max(4);
+    let at = |k: usize| phi0 + sg * TAU * k as f64 / n as f64;
+    let v: Vec<f64> = (0..n).map(|k| f(at(k))).collect();
+    let ok = |x: f64| x.is_finite();
+    let mut roots = Vec::new();
+    for k in 0..n {
+        let (a, b) = (v[k], v[(k + 1) % n]);
+        if a == 0.0 {
+            // only the first of a run of zeros; compare the signs around the run
+            let before = (1..n).map(|j| v[(k + n - j) % n]).find(|x| *x != 0.0);
+            if v[(k + n - 1) % n] == 0.0 {
+                continue;
+            }
+            let after = (1..n).map(|j| v[(k + j) % n]).find(|x| *x != 0.0);
+            if let (Some(p), Some(q)) = (before, after) {
+                if ok(p) && ok(q) && p.signum() != q.signum() {
+                    roots.push(at(k));
+                }
+            }
+        } else if b != 0.0 && ok(a) && ok(b) && a.signum() != b.signum() {
+            // the last step ends exactly on the first sample's angle (one turn
+            // back), so that the bracket's end is the very value sampled there
+            let (x0, x1) = if k + 1 == n { (at(k) - sg * TAU, phi0) } else { (at(k), at(k + 1)) };
+            let r = root::brent(&mut f, x0.min(x1), x0.max(x1), 1e-13)
+                // a re-evaluation that disagrees in sign with the sample (a root
+                // within round-off of the bracket's end): the end nearer zero
+                .unwrap_or(if a.abs() <= b.abs() { x0 } else { x1 });
+            roots.push(r);
+        }
+    }
+    roots
+}
+
 /// Direction of crank rotation: +1 counter-clockwise, −1 clockwise.
 fn dir(m: &Mechanism) -> f64 {
     m.crank.omega.signum()
@@ -237,27 +306,17 @@ impl Cycle {
                 Err(_) => f64::NAN,
             }
         };
-        let n = 720;
         let phi0 = m.assembly_angle;
-        let mut roots = Vec::new();
-        let mut prev = f(phi0, &mut sol);
-        for k in 1..=n {
-            let a = phi0 + sg * TAU * (k - 1) as f64 / n as f64;
-            let b = phi0 + sg * TAU * k as f64 / n as f64;
-            let fb = f(b, &mut sol);
-            if prev == 0.0 {
-                roots.push(a);
-            } else if prev.signum() != fb.signum() && fb != 0.0 && prev.is_finite() && fb.is_finite() {
-                let mut s2 = m.solution();
-                if let Some(r) = root::brent(|x| f(x, &mut s2), a.min(b), a.max(b), 1e-13) {
-                    roots.push(r);
-                }
-            }
-            prev = fb;
-        }
+        let roots = periodic_roots(phi0, sg, 720, |x| f(x, &mut sol));
+        // an angle is read continuous about its value at the assembly angle, so
+        // that a swing across ±180° is not cut in two
+        let reference = match m.solve(phi0, &mut sol) {
+            Ok(()) => output.read(&sol, 0.0).s,
+            Err(_) => 0.0,
+        };
         let stroke_and = |phi: f64, sol: &mut Solution| -> f64 {
             let _ = m.solve(phi, sol);
-            output.read(sol, 0.0).s
+            output.read(sol, reference).s
         };
         if roots.len() < 2 || output.kind == OutputKind::Angular && rotates_fully(m, &output) {
             let s = stroke_and(phi0, &mut sol);
@@ -287,6 +346,9 @@ impl Cycle {
             Working::Increasing => (pmin, up, down, 1.0),
             Working::Decreasing => (pmax, down, up, -1.0),
             Working::Slower => {
+                if (up - down).abs() <= KV_TIE * TAU {
+                    return Err(kv_tie(up, down));
+                }
                 if up >= down {
                     (pmin, up, down, 1.0)
                 } else {

@@ -34,8 +34,14 @@ pub enum DyadFail {
     CircleLine { h: f64, r: f64 },
     /// Two guide lines are parallel.
     Parallel,
-    /// The velocity equations are singular (the group's links are aligned).
-    Singular,
+    /// The velocity equations are singular or nearly so: `sine` is the sine of
+    /// the angle between the two columns of the group's 2×2 Jacobian (its
+    /// determinant over the product of the columns' lengths), below
+    /// [`MIN_SINE`].
+    Singular {
+        /// |det J| / (|J₁|·|J₂|), 0 … 1.
+        sine: f64,
+    },
     /// Newton's method found no closure of a larger group near the guess.
     NoClosure,
 }
@@ -59,14 +65,51 @@ impl std::fmt::Display for DyadFail {
                 }
             }
             DyadFail::CircleLine { h, r } => write!(f, "the joint is {h:.6} m from the guide line, more than the link length {r:.6} m"),
-            DyadFail::Parallel => write!(f, "the two guide lines are parallel"),
-            DyadFail::Singular => write!(f, "the links of the group are aligned (dead centre)"),
+            DyadFail::Parallel => write!(
+                f,
+                "the two guide lines are parallel or within {:.4}° of it",
+                MIN_SINE.asin().to_degrees()
+            ),
+            DyadFail::Singular { sine } if !sine.is_finite() => write!(
+                f,
+                "the group's velocity equations are singular (a pivot below 1e-11 of the largest entry, lengths scaled by the size of the mechanism): it is at or next to a dead centre, where velocities grow without bound"
+            ),
+            DyadFail::Singular { sine } => write!(
+                f,
+                "the group is at or within {:.2e}° of its dead centre (the sine of the angle between the columns of its velocity equations is {sine:.1e}, below {MIN_SINE:.0e}): velocities and accelerations there grow without bound",
+                sine.clamp(0.0, 1.0).asin().to_degrees()
+            ),
             DyadFail::NoClosure => write!(
                 f,
                 "the group's loop does not close near the previous position (Newton's method did not converge)"
             ),
         }
     }
+}
+
+/// The smallest sine of the angle between the two columns of a dyad's velocity
+/// equations (its links, or a link and a guide, this far from alignment) at
+/// which the dyad is solved. Below it the group is at or next to its dead
+/// centre: velocities grow as 1/sin and accelerations as 1/sin³, and round-off
+/// in the position (relative 1e-16/sin²) stops being negligible. At 1e-4 (the
+/// links 0.0057° from alignment) the relative round-off of the velocities is
+/// still about 1e-8. Dimensionless, so it does not depend on the size of the
+/// mechanism.
+pub const MIN_SINE: f64 = 1e-4;
+
+/// The sine of the angle between two columns `c1`, `c2` (0 when either is 0).
+#[inline(always)]
+fn sine(c1: Vec2, c2: Vec2) -> f64 {
+    let d = (c1.x * c2.y - c1.y * c2.x).abs();
+    let n = c1.hypot() * c2.hypot();
+    if n > 0.0 { d / n } else { 0.0 }
+}
+
+/// `solve2` with the relative test: `Err(Singular)` when the columns are
+/// within [`MIN_SINE`] of parallel.
+#[inline(always)]
+fn solve2_rel(c1: Vec2, c2: Vec2, r: Vec2, n1: f64, n2: f64) -> Result<(f64, f64), DyadFail> {
+    solve2(c1, c2, r, MIN_SINE * n1 * n2).ok_or(DyadFail::Singular { sine: sine(c1, c2) })
 }
 
 /// An outer revolute joint: a point of a known link.
@@ -297,8 +340,11 @@ impl DyadGeom {
                 let cb = b - pc.p;
                 // ω1·(AB)⊥ − ω2·(CB)⊥ = V_C − V_A; its determinant is
                 // −cross(AB, CB) = −σ·β·|d|², so 1/det needs no division of its own
-                if !(beta * dd > 1e-10 * len1 * len2) {
-                    return Err(DyadFail::Singular);
+                // |cross(AB, CB)| / (l1·l2) = β|d|²/(l1·l2): the sine of the angle at B
+                if !(beta * dd > MIN_SINE * len1 * len2) {
+                    return Err(DyadFail::Singular {
+                        sine: (beta * dd / (len1 * len2)).min(1.0),
+                    });
                 }
                 let inv_det = -sign * beta * inv_b2 * inv_dd;
                 let (k1, k2) = (perp(ab), -perp(cb));
@@ -344,10 +390,9 @@ impl DyadGeom {
                 let (vg, ag) = gl.kin_at(b);
                 let c1 = perp(ab);
                 let c2v = -ug;
-                let tol = 1e-10 * len1;
-                let (w1, sd) = solve2(c1, c2v, vg - pa.v, tol).ok_or(DyadFail::Singular)?;
+                let (w1, sd) = solve2_rel(c1, c2v, vg - pa.v, len1, 1.0)?;
                 let r = ag + perp(ug) * (2.0 * gl.omega * sd) - pa.a + ab * (w1 * w1);
-                let (e1, _sdd) = solve2(c1, c2v, r, tol).ok_or(DyadFail::Singular)?;
+                let (e1, _sdd) = solve2_rel(c1, c2v, r, len1, 1.0)?;
                 let u1 = rot(ab * (1.0 / len1), conj(dir1));
                 links[l1] = LinkState::from_point(&pa, a1, u1, w1, e1);
                 let pbs = PointState {
@@ -386,10 +431,10 @@ impl DyadGeom {
                 let ugn = ug * (1.0 / ug.hypot());
                 let gdir = rot(ugn, dir);
                 let c1 = perp(yx);
-                let tol = 1e-10 * rho2.sqrt();
-                let (wg, sd) = solve2(c1, gdir, py.v - px.v, tol).ok_or(DyadFail::Singular)?;
+                let rho = rho2.sqrt();
+                let (wg, sd) = solve2_rel(c1, gdir, py.v - px.v, rho, 1.0)?;
                 let r = py.a - px.a + yx * (wg * wg) - perp(gdir) * (2.0 * wg * sd);
-                let (eg, _sdd) = solve2(c1, gdir, r, tol).ok_or(DyadFail::Singular)?;
+                let (eg, _sdd) = solve2_rel(c1, gdir, r, rho, 1.0)?;
                 links[g] = LinkState::from_point(&px, xg, ugn, wg, eg);
                 links[s] = LinkState::from_point(&py, ys, rot(ugn, rel), wg, eg);
                 Ok(())
@@ -414,13 +459,13 @@ impl DyadGeom {
                 let d2 = rot(k2.u, g2.dir);
                 let o1 = k1.pos(g1.through) + rot(u1, off1);
                 let o2 = k2.pos(g2.through) + rot(u2, off2);
-                let (s1, _s2) = solve2(d1, -d2, o2 - o1, 1e-12).ok_or(DyadFail::Parallel)?;
+                let (s1, _s2) = solve2(d1, -d2, o2 - o1, MIN_SINE).ok_or(DyadFail::Parallel)?;
                 let b = o1 + d1 * s1;
                 let (v1, a1) = k1.kin_at(b);
                 let (v2, a2) = k2.kin_at(b);
-                let (sd1, sd2) = solve2(d1, -d2, v2 - v1, 1e-12).ok_or(DyadFail::Singular)?;
+                let (sd1, sd2) = solve2_rel(d1, -d2, v2 - v1, 1.0, 1.0)?;
                 let r = a2 + perp(d2) * (2.0 * k2.omega * sd2) - a1 - perp(d1) * (2.0 * k1.omega * sd1);
-                let (sdd1, _) = solve2(d1, -d2, r, 1e-12).ok_or(DyadFail::Singular)?;
+                let (sdd1, _) = solve2_rel(d1, -d2, r, 1.0, 1.0)?;
                 let pb = PointState {
                     p: b,
                     v: v1 + d1 * sd1,
@@ -458,11 +503,11 @@ impl DyadGeom {
                     let o1 = o2_0 + rot(u2, pm) - rot(u1, qm);
                     (-rot(u1, dm), o1 + rot(u1, a1))
                 };
-                let (s2, _s1) = solve2(g, gm, pa.p - base, 1e-12).ok_or(DyadFail::Parallel)?;
+                let (s2, _s1) = solve2(g, gm, pa.p - base, MIN_SINE).ok_or(DyadFail::Parallel)?;
                 let (vk, ak) = k.kin_at(pa.p);
-                let (sd2, sd1) = solve2(g, gm, pa.v - vk, 1e-12).ok_or(DyadFail::Singular)?;
+                let (sd2, sd1) = solve2_rel(g, gm, pa.v - vk, 1.0, 1.0)?;
                 let r = pa.a - ak - (perp(g) * sd2 + perp(gm) * sd1) * (2.0 * k.omega);
-                let (sdd2, _sdd1) = solve2(g, gm, r, 1e-12).ok_or(DyadFail::Singular)?;
+                let (sdd2, _sdd1) = solve2_rel(g, gm, r, 1.0, 1.0)?;
                 links[l1] = LinkState::from_point(&pa, a1, u1, k.omega, k.eps);
                 let o2 = o2_0 + g * s2;
                 let (vo, ao) = k.kin_at(o2);

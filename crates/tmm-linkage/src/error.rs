@@ -31,6 +31,29 @@ pub enum LinkageError {
         /// Extra explanation.
         detail: String,
     },
+    /// The mechanism moves, but some of its constraints repeat others
+    /// (redundant constraints, избыточные связи) or its rank-based mobility
+    /// differs from Chebyshev's W: found by the rank of the constraint
+    /// equations at an assembled position.
+    #[error(
+        "Chebyshev's W = 3n − 2p5 = 3·{n} − 2·{p5} = {w}, but the rank of the constraint equations at an assembled position gives mobility {dof} with {redundant} redundant constraint(s) (избыточные связи) and {passive} passive freedom(s): the mechanism is statically indeterminate, which the Assur-group solution cannot handle ({detail}); remove the repeated link or pair (e.g. the third crank of a double parallelogram) and analyse the mechanism without it — its motion is the same"
+    )]
+    Redundant {
+        /// Chebyshev's W.
+        w: i64,
+        /// Moving links.
+        n: usize,
+        /// Lower pairs.
+        p5: usize,
+        /// Mobility from the rank.
+        dof: i64,
+        /// Redundant constraints q.
+        redundant: i64,
+        /// Passive freedoms.
+        passive: i64,
+        /// Which links do not form groups.
+        detail: String,
+    },
     /// The mechanism does not decompose into the input and Assur groups.
     #[error("structure: {0}")]
     Structure(String),
@@ -52,14 +75,38 @@ pub enum LinkageError {
         /// The first reason met.
         reason: String,
     },
-    /// The velocity (or acceleration) equations of a group are singular: the
-    /// group is at a dead centre (мёртвое положение группы).
-    #[error("singular velocity equations at φ = {phi_deg:.4}°: group {group} is at a dead centre (its links are aligned)")]
+    /// The velocity (or acceleration) equations of a group are singular or
+    /// nearly so: the group is at or next to a dead centre (мёртвое положение
+    /// группы), where its velocities grow without bound.
+    #[error("no finite velocities at φ = {phi_deg:.6}°: group {group}: {reason}")]
     Singular {
         /// Crank angle, degrees.
         phi_deg: f64,
         /// The group.
         group: String,
+        /// Why, with the relative measure (the sine of the angle between the
+        /// columns of the group's velocity equations).
+        reason: String,
+    },
+    /// A value given to the core lies outside its physically sensible range.
+    #[error("{field}: {value} is outside the accepted range {range}{why}")]
+    Range {
+        /// The quantity (`input.omega`, `links.2.C`, `phi`).
+        field: String,
+        /// The value as given, with its unit.
+        value: String,
+        /// The accepted range, with units.
+        range: String,
+        /// Why the range, or what to do.
+        why: String,
+    },
+    /// A result came out non-finite (an overflow the ranges did not prevent).
+    #[error("{what} is not a finite number at φ = {phi_deg:.6}°")]
+    NonFinite {
+        /// Crank angle, degrees.
+        phi_deg: f64,
+        /// Which quantity.
+        what: String,
     },
 }
 

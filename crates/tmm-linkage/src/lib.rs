@@ -27,12 +27,15 @@ pub mod dyad;
 pub mod dynamics;
 pub mod error;
 pub mod forces;
+pub mod limits;
 pub mod mechanism;
 pub mod model;
 pub mod plans;
+pub mod ranges;
 pub mod state;
 pub mod structure;
 pub mod synthesis;
+pub mod whole;
 
 pub use error::LinkageError;
 pub use mechanism::{Mechanism, Solution};

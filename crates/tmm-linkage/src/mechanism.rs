@@ -11,6 +11,7 @@ use tmm_geom::{Vec2, perp};
 use crate::constraints::{self, Mode};
 use crate::dyad::{DyadFail, DyadGeom, KnownGuide, KnownPoint};
 use crate::error::LinkageError;
+use crate::limits;
 use crate::model::{FRAME, HintKind, MechanismDef};
 use crate::state::{LinkState, PointState, conj, rot};
 use crate::structure::{self, GroupInfo, PairKind, PairLink, Structure, roman};
@@ -185,6 +186,14 @@ pub struct Solution {
     warm: Option<f64>,
 }
 
+/// One assembly found while choosing branches: its score, the branch signs,
+/// the link states and every point's position.
+type Found = (f64, Vec<f64>, Vec<LinkState>, Vec<Vec2>);
+
+/// The penalty of a violated side hint, in sizes of the mechanism (far more
+/// than any `near` distance).
+const VIOLATION: f64 = 1e6;
+
 fn de(field: impl Into<String>, message: impl Into<String>) -> LinkageError {
     LinkageError::desc(field, message)
 }
@@ -220,9 +229,8 @@ impl Mechanism {
                 return Err(de(format!("links.{}", l.name), "a link needs at least one point"));
             }
             for (k, (pn, p)) in l.points.iter().enumerate() {
-                if !(p.x.is_finite() && p.y.is_finite()) {
-                    return Err(de(format!("links.{}.{pn}", l.name), "coordinates must be finite"));
-                }
+                limits::coordinate(&format!("links.{}.{pn}.x", l.name), p.x)?;
+                limits::coordinate(&format!("links.{}.{pn}.y", l.name), p.y)?;
                 if l.points[..k].iter().any(|(q, _)| q == pn) {
                     return Err(de(
                         format!("links.{}.{pn}", l.name),
@@ -230,7 +238,9 @@ impl Mechanism {
                     ));
                 }
             }
-            if l.points.len() >= 2 && (l.points[1].1 - l.points[0].1).hypot() <= 1e-12 {
+            limits::coordinate(&format!("links.{}.mass_center.x", l.name), l.mass_center.x)?;
+            limits::coordinate(&format!("links.{}.mass_center.y", l.name), l.mass_center.y)?;
+            if l.points.len() >= 2 && (l.points[1].1 - l.points[0].1).hypot() == 0.0 {
                 return Err(de(
                     format!("links.{}.length", l.name),
                     format!(
@@ -251,9 +261,8 @@ impl Mechanism {
             if pidx.contains_key(name) {
                 return Err(de(format!("fixed.{name}"), format!("duplicate fixed point `{name}`")));
             }
-            if !(p.x.is_finite() && p.y.is_finite()) {
-                return Err(de(format!("fixed.{name}"), "coordinates must be finite"));
-            }
+            limits::coordinate(&format!("fixed.{name}.x"), p.x)?;
+            limits::coordinate(&format!("fixed.{name}.y"), p.y)?;
             pidx.insert(name.clone(), points.len());
             points.push(NamedPoint {
                 name: name.clone(),
@@ -318,9 +327,10 @@ impl Mechanism {
             let ps = def.links[slider - 1]
                 .point(&s.point)
                 .ok_or_else(|| de(f("point"), format!("unknown point `{}` on link `{}`", s.point, s.slider)))?;
-            if !(s.angle.is_finite() && s.angle_on_slider.is_finite() && s.through.x.is_finite() && s.through.y.is_finite()) {
-                return Err(de(f("guide"), "the guide must be finite"));
-            }
+            limits::coordinate(&f("guide.through.x"), s.through.x)?;
+            limits::coordinate(&f("guide.through.y"), s.through.y)?;
+            limits::angle(&f("guide.angle"), s.angle)?;
+            limits::angle(&f("angle_on_slider"), s.angle_on_slider)?;
             let dd = polar(s.angle);
             let rel = rot(dd, conj(polar(s.angle_on_slider)));
             pairs.push(Pair::P {
@@ -358,11 +368,16 @@ impl Mechanism {
             .map(|(_, p)| *p)
             .ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
         let radius = (pin_local - pivot_local).hypot();
-        if radius <= 1e-12 {
-            return Err(de("input", "zero crank length"));
-        }
-        if !(inp.omega.is_finite() && inp.omega != 0.0 && inp.epsilon.is_finite()) {
-            return Err(de("input.speed", "the crank speed must be finite and non-zero"));
+        limits::speed(inp.omega, inp.epsilon)?;
+        limits::angle("assembly_angle", def.assembly_angle)?;
+        // the size of the mechanism: the largest extent of a link, of the
+        // frame's points and of the guides' points; every tolerance is relative to it
+        let size = scale_of(def, radius);
+        limits::link_length("input (crank length)", radius, size)?;
+        for l in &def.links {
+            if l.points.len() >= 2 {
+                limits::link_length(&format!("links.{}.length", l.name), (l.points[1].1 - l.points[0].1).hypot(), size)?;
+            }
         }
         let crank = Crank {
             link: cl,
@@ -404,21 +419,88 @@ impl Mechanism {
             Ok(g) => g,
             Err(left) => {
                 let names: Vec<&str> = left.iter().map(|&l| link_names[l].as_str()).collect();
-                if w != 1 {
-                    return Err(LinkageError::Mobility {
+                // points of the leftover links that join nothing: often a joint
+                // whose other side was never defined
+                let lone: Vec<String> = occ
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, o)| {
+                        o.len() == 1
+                            && left.contains(&o[0].0)
+                            && !def.sliders.iter().any(|s| s.point == points[*k].name)
+                            && def.links[o[0].0 - 1].points.len() >= 2
+                    })
+                    .map(|(k, o)| format!("`{}` (on link `{}`)", points[k].name, link_names[o[0].0]))
+                    .collect();
+                let lone_text = if lone.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        "; the points {} are on no other link and are not fixed points, so they join nothing — if one is a joint, put it on its other link or among the fixed points",
+                        lone.join(", ")
+                    )
+                };
+                // the rank of the whole mechanism at an assembled position
+                let size = scale_of(def, radius);
+                let (sc, cc) = def.assembly_angle.sin_cos();
+                let u = crate::state::unrotate(Vec2::new(cc, sc), unit(pin_local - pivot_local));
+                let piv = PointState {
+                    p: pivot,
+                    v: Vec2::ZERO,
+                    a: Vec2::ZERO,
+                };
+                let mut st = vec![LinkState::default(); nl];
+                st[cl] = LinkState::from_point(&piv, pivot_local, u, inp.omega, inp.epsilon);
+                let near: Vec<(usize, Vec2, Vec2)> = def
+                    .hints
+                    .iter()
+                    .filter_map(|h| match h.kind {
+                        HintKind::Near(q) => {
+                            let k = *pidx.get(&h.point)?;
+                            Some(
+                                occ[k]
+                                    .iter()
+                                    .filter(|(l, _)| *l != 0)
+                                    .map(move |&(l, lp)| (l, lp, q))
+                                    .collect::<Vec<_>>(),
+                            )
+                        }
+                        _ => None,
+                    })
+                    .flatten()
+                    .collect();
+                let fixed: Vec<Vec2> = def.fixed.iter().map(|(_, p)| *p).collect();
+                let centre = fixed.iter().fold(Vec2::ZERO, |a, b| a + *b) * (1.0 / fixed.len().max(1) as f64);
+                let count = crate::whole::assemble_all(&pairs, &st, cl, &near, centre, size, 64)
+                    .map(|asm| crate::whole::rank_count(&pairs, nl, cl, &asm, size));
+                return Err(match count {
+                    Some(rc) if rc.redundant > 0 || rc.dof != w => LinkageError::Redundant {
+                        w,
+                        n,
+                        p5,
+                        dof: rc.dof,
+                        redundant: rc.redundant,
+                        passive: rc.passive,
+                        detail: format!(
+                            "links {} do not form Assur groups on the crank `{}`{lone_text}",
+                            names.join(", "),
+                            inp.link
+                        ),
+                    },
+                    _ if w != 1 => LinkageError::Mobility {
                         dof: w,
                         w,
                         n,
                         p5,
                         p4: 0,
-                        detail: format!("; links {} do not form Assur groups", names.join(", ")),
-                    });
-                }
-                return Err(LinkageError::Structure(format!(
-                    "links {} do not form Assur groups on the crank `{}`",
-                    names.join(", "),
-                    inp.link
-                )));
+                        detail: format!("; links {} do not form Assur groups{lone_text}", names.join(", ")),
+                    },
+                    _ => LinkageError::Structure(format!(
+                        "links {} do not form Assur groups on the crank `{}`{lone_text}",
+                        names.join(", "),
+                        inp.link
+                    )),
+                });
             }
         };
         let mut groups = Vec::new();
@@ -461,7 +543,7 @@ impl Mechanism {
                 .ok_or_else(|| de("output", format!("unknown link `{o}`")))?,
             None => default_output(&groups, &pairs, cl),
         };
-        let scale = points.iter().map(|p| p.local.hypot()).fold(radius, f64::max).max(1e-9);
+        let scale = size;
         let structure = Structure {
             dof: w,
             n,
@@ -514,6 +596,30 @@ impl Mechanism {
         self.points.iter().position(|p| p.name == name)
     }
 
+    /// The state of a link's centre of mass S (центр масс) in a solved
+    /// position: for every link, slider blocks included (whose S is at their
+    /// joint unless given otherwise). The frame's is at rest at the origin.
+    ///
+    /// ```
+    /// # use tmm_linkage::*; use tmm_geom::Vec2;
+    /// # let def = MechanismDef { fixed: vec![("A".into(), Vec2::ZERO), ("D".into(), Vec2::new(0.51, 0.0))],
+    /// #   links: vec![LinkDef::bar("1", "A", "B", 0.12), LinkDef::bar("2", "B", "C", 0.48), LinkDef::bar("3", "D", "C", 0.38)],
+    /// #   input: Some(InputDef { link: "1".into(), pivot: "A".into(), pin: "B".into(), omega: 10.0, epsilon: 0.0 }), ..Default::default() };
+    /// let m = Mechanism::new(&def).unwrap();
+    /// let mut s = m.solution();
+    /// m.solve(0.4, &mut s).unwrap();
+    /// let (b, c) = (s.points[m.point("B").unwrap()], s.points[m.point("C").unwrap()]);
+    /// let s2 = m.mass_center(&s, 2); // mid-way on BC
+    /// assert!((s2.p - (b.p + c.p) * 0.5).hypot() < 1e-15);
+    /// assert!((s2.a - (b.a + c.a) * 0.5).hypot() < 1e-12);
+    /// ```
+    pub fn mass_center(&self, sol: &Solution, link: usize) -> PointState {
+        if link == 0 || link >= self.link_names.len() {
+            return PointState::default();
+        }
+        sol.links[link].point(self.mass_centers[link])
+    }
+
     /// A fresh solution buffer for this mechanism.
     pub fn solution(&self) -> Solution {
         let n = 3 * self.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(2);
@@ -545,8 +651,9 @@ impl Mechanism {
     }
 
     /// Solve positions, velocities and accelerations of every link and point at
-    /// crank angle `phi` (rad). Allocates nothing.
+    /// crank angle `phi` (rad; |φ| ≤ [`limits::MAX_ANGLE`]). Allocates nothing.
     pub fn solve(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
+        limits::angle("phi", phi)?;
         if self.has_general {
             // Newton groups follow their branch from the nearest solved angle.
             let from = sol.warm.unwrap_or_else(|| {
@@ -591,6 +698,8 @@ impl Mechanism {
         sol: &mut Solution,
         mut f: impl FnMut(usize, &Solution),
     ) -> Result<(), LinkageError> {
+        limits::angle("phi0", phi0)?;
+        limits::angle("phi0 + n·dphi", phi0 + dphi * n as f64)?;
         if self.has_general {
             for k in 0..n {
                 self.solve(phi0 + dphi * k as f64, sol)?;
@@ -656,6 +765,20 @@ impl Mechanism {
         for &(i, l, local) in &self.offset_points {
             sol.points[i] = links[l].point(local);
         }
+        // one sum catches any overflow (inside the ranges of `limits` none
+        // occurs): a non-finite position or velocity makes the accelerations
+        // non-finite too, so only they are summed — one short dependency chain
+        let mut sum = 0.0;
+        for l in links {
+            sum += (l.a.x + l.a.y) + l.eps;
+        }
+        if !sum.is_finite() {
+            sol.warm = None;
+            return Err(LinkageError::NonFinite {
+                phi_deg: phi.to_degrees(),
+                what: "the positions, velocities or accelerations".into(),
+            });
+        }
         if self.has_general {
             sol.warm = Some(phi);
         }
@@ -664,9 +787,10 @@ impl Mechanism {
 
     fn fail(&self, g: &Group, phi: f64, e: DyadFail) -> LinkageError {
         match e {
-            DyadFail::Singular => LinkageError::Singular {
+            DyadFail::Singular { .. } => LinkageError::Singular {
                 phi_deg: phi.to_degrees(),
                 group: g.label(),
+                reason: e.to_string(),
             },
             _ => LinkageError::Assembly {
                 phi_deg: phi.to_degrees(),
@@ -683,18 +807,22 @@ impl Mechanism {
         constraints::newton(&prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::NoClosure)?;
         for mode in [Mode::Velocity, Mode::Acceleration] {
             constraints::assemble(&prs, unknown, &sol.links, mode, &mut sol.jac, &mut sol.rhs);
+            // angles as arc lengths at the size of the mechanism, so that the
+            // pivot test does not depend on the unit of length
+            constraints::scale_angle_columns(&mut sol.jac[..n * n], n, n, 1.0 / self.scale);
             if !constraints::solve_dense(&mut sol.jac[..n * n], &mut sol.rhs[..n], n, 1e-11) {
-                return Err(DyadFail::Singular);
+                return Err(DyadFail::Singular { sine: f64::NAN });
             }
             for (k, &l) in unknown.iter().enumerate() {
                 let s = &mut sol.links[l];
                 let x = Vec2::new(sol.rhs[3 * k], sol.rhs[3 * k + 1]);
+                let t = sol.rhs[3 * k + 2] / self.scale;
                 if mode == Mode::Velocity {
                     s.v = x;
-                    s.omega = sol.rhs[3 * k + 2];
+                    s.omega = t;
                 } else {
                     s.a = x;
-                    s.eps = sol.rhs[3 * k + 2];
+                    s.eps = t;
                 }
             }
         }
@@ -722,7 +850,8 @@ impl Mechanism {
             .filter(|&g| self.groups[g].dyad().is_some_and(|d| d.has_branches()))
             .collect();
         let phi = self.assembly_angle;
-        let mut best: Option<(f64, Vec<f64>, Vec<LinkState>)> = None;
+        // every assembly found: (score, branch signs, links, point positions)
+        let mut found: Vec<Found> = Vec::new();
         let mut first_err = None;
         let general_starts = if self.has_general { 48 } else { 1 };
         for combo in 0..(1usize << branchy.len()) {
@@ -736,10 +865,9 @@ impl Mechanism {
                 }
                 match self.solve_once(phi, &mut sol) {
                     Ok(()) => {
-                        let score = self.score(def, &sol);
-                        if best.as_ref().is_none_or(|b| score < b.0 - 1e-12) {
-                            best = Some((score, self.groups.iter().map(|g| g.sign).collect(), sol.links.clone()));
-                        }
+                        let score = self.score(def, &sol)?;
+                        let pts: Vec<Vec2> = sol.points.iter().map(|p| p.p).collect();
+                        found.push((score, self.groups.iter().map(|g| g.sign).collect(), sol.links.clone(), pts));
                     }
                     Err(e) => {
                         if first_err.is_none() {
@@ -749,11 +877,13 @@ impl Mechanism {
                 }
             }
         }
-        let Some((score, signs, links)) = best else {
+        // the best score; the first found wins among equal ones when no hint is given
+        let Some(bi) = (0..found.len()).min_by(|&i, &j| found[i].0.total_cmp(&found[j].0)) else {
             return Err(first_err.unwrap_or_else(|| LinkageError::Structure("no assembly found".into())));
         };
-        if score >= 1e6 {
-            let h: Vec<String> = def.hints.iter().map(|h| format!("{} {:?}", h.point, h.kind)).collect();
+        let score = found[bi].0;
+        if score >= VIOLATION * self.scale {
+            let h: Vec<String> = def.hints.iter().map(|h| h.to_string()).collect();
             return Err(LinkageError::desc(
                 "assembly",
                 format!(
@@ -763,6 +893,38 @@ impl Mechanism {
                 ),
             ));
         }
+        if !def.hints.is_empty() {
+            // another assembly, different in position, that the hints rate as well
+            let tol = 1e-6 * self.scale;
+            let tie = found
+                .iter()
+                .find(|f| (f.0 - score).abs() <= 1e-9 * self.scale && f.3.iter().zip(&found[bi].3).any(|(p, q)| (*p - *q).hypot() > tol));
+            if let Some(t) = tie {
+                let differ: Vec<String> =
+                    t.3.iter()
+                        .zip(&found[bi].3)
+                        .enumerate()
+                        .filter(|(i, (p, q))| self.points[*i].link != 0 && (**p - **q).hypot() > tol)
+                        .map(|(i, (p, q))| {
+                            format!(
+                                "{} at ({:.6}, {:.6}) m or ({:.6}, {:.6}) m",
+                                self.points[i].name, q.x, q.y, p.x, p.y
+                            )
+                        })
+                        .collect();
+                let h: Vec<String> = def.hints.iter().map(|h| h.to_string()).collect();
+                return Err(LinkageError::desc(
+                    "assembly",
+                    format!(
+                        "the hints ({}) do not choose one assembly at φ = {:.3}°: two assemblies satisfy them equally well ({}); add a hint that tells them apart, e.g. on the side of a line",
+                        h.join("; "),
+                        phi.to_degrees(),
+                        differ.join("; ")
+                    ),
+                ));
+            }
+        }
+        let (_, signs, links, _) = found.swap_remove(bi);
         for (g, s) in self.groups.iter_mut().zip(signs) {
             g.sign = s;
         }
@@ -770,43 +932,57 @@ impl Mechanism {
         Ok(())
     }
 
-    /// Score an assembly: 1e6 per violated side hint, plus distances to `near`.
-    fn score(&self, def: &MechanismDef, sol: &Solution) -> f64 {
+    /// Score an assembly: [`VIOLATION`]·size per violated side hint, plus
+    /// distances to `near`. A side hint about a line with no such side (a
+    /// vertical line for above/below, a horizontal one for left/right) is an
+    /// error.
+    fn score(&self, def: &MechanismDef, sol: &Solution) -> Result<f64, LinkageError> {
         let pos = |n: &str| self.point(n).map(|i| sol.points[i].p).unwrap_or(Vec2::ZERO);
         let mut s = 0.0;
-        for h in &def.hints {
+        for (i, h) in def.hints.iter().enumerate() {
             let p = pos(&h.point);
-            let side = |a: &str, b: &str| {
-                let (pa, pb) = (pos(a), pos(b));
-                (pa, pb)
-            };
             let ok = match &h.kind {
-                HintKind::Above(a, b) | HintKind::Below(a, b) => {
-                    let (pa, pb) = side(a, b);
-                    let dx = pb.x - pa.x;
-                    let yl = if dx.abs() < 1e-15 {
-                        f64::NAN
-                    } else {
-                        pa.y + (pb.y - pa.y) * (p.x - pa.x) / dx
-                    };
-                    if matches!(h.kind, HintKind::Above(..)) {
-                        p.y > yl
-                    } else {
-                        p.y < yl
+                HintKind::Above(a, b) | HintKind::Below(a, b) | HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
+                    let (pa, pb) = (pos(a), pos(b));
+                    let d = pb - pa;
+                    let len = d.hypot();
+                    let vertical = matches!(h.kind, HintKind::Above(..) | HintKind::Below(..));
+                    // the component that must not vanish: dx for above/below, dy for left/right
+                    let along = if vertical { d.x } else { d.y };
+                    if along.abs() <= 1e-9 * len || len == 0.0 {
+                        return Err(LinkageError::desc(
+                            format!("assembly[{i}]"),
+                            format!(
+                                "`{h}`: at φ = {:.3}° the line {a}–{b} is {}, so it has no {}; use {}",
+                                self.assembly_angle.to_degrees(),
+                                if len == 0.0 {
+                                    "not a line (the points coincide)"
+                                } else if vertical {
+                                    "vertical"
+                                } else {
+                                    "horizontal"
+                                },
+                                if vertical {
+                                    "\"above\" or \"below\""
+                                } else {
+                                    "\"left\" or \"right\""
+                                },
+                                if vertical {
+                                    "\"left of\" or \"right of\""
+                                } else {
+                                    "\"above\" or \"below\""
+                                }
+                            ),
+                        ));
                     }
-                }
-                HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
-                    let (pa, pb) = side(a, b);
-                    let dy = pb.y - pa.y;
-                    let xl = if dy.abs() < 1e-15 {
-                        f64::NAN
-                    } else {
-                        pa.x + (pb.x - pa.x) * (p.y - pa.y) / dy
-                    };
-                    if matches!(h.kind, HintKind::LeftOf(..)) {
-                        p.x < xl
-                    } else {
-                        p.x > xl
+                    // the side of P: cross(d, P − A) > 0 is to the left of A→B;
+                    // "above" is that side when B is to the right of A
+                    let c = tmm_geom::cross(d, p - pa);
+                    match h.kind {
+                        HintKind::Above(..) => c * d.x.signum() > 0.0,
+                        HintKind::Below(..) => c * d.x.signum() < 0.0,
+                        HintKind::LeftOf(..) => c * d.y.signum() > 0.0,
+                        _ => c * d.y.signum() < 0.0,
                     }
                 }
                 HintKind::Near(q) => {
@@ -815,10 +991,10 @@ impl Mechanism {
                 }
             };
             if !ok {
-                s += 1e6;
+                s += VIOLATION * self.scale;
             }
         }
-        s
+        Ok(s)
     }
 
     /// Starting guesses for Newton groups: a `near` hint places its point; other
@@ -867,29 +1043,11 @@ impl Mechanism {
     /// Rank of the constraint equations at the assembly: the true DOF,
     /// redundant constraints and passive freedoms.
     fn count_rank(&mut self) -> Result<(), LinkageError> {
-        let n = self.link_names.len() - 1;
-        let unknown: Vec<usize> = (1..=n).collect();
-        let prs: Vec<&Pair> = self.pairs.iter().collect();
-        let rows = 2 * prs.len();
-        let cols = 3 * n;
-        let mut jac = vec![0.0; (rows + 1) * cols];
-        let mut rhs = vec![0.0; rows + 1];
-        constraints::assemble(
-            &prs,
-            &unknown,
-            &self.init,
-            Mode::Velocity,
-            &mut jac[..rows * cols],
-            &mut rhs[..rows],
-        );
-        let r = constraints::rank(&jac[..rows * cols], rows, cols, 1e-9);
-        // hold the crank: θ_crank fixed
-        jac[rows * cols + 3 * (self.crank.link - 1) + 2] = 1.0;
-        let r_held = constraints::rank(&jac, rows + 1, cols, 1e-9);
+        let rc = crate::whole::rank_count(&self.pairs, self.link_names.len(), self.crank.link, &self.init, self.scale);
         let s = &mut self.structure;
-        s.dof_rank = cols as i64 - r as i64;
-        s.redundant = rows as i64 - r as i64;
-        s.passive = cols as i64 - r_held as i64;
+        s.dof_rank = rc.dof;
+        s.redundant = rc.redundant;
+        s.passive = rc.passive;
         if s.dof_rank != 1 {
             return Err(LinkageError::Mobility {
                 dof: s.dof_rank,
@@ -902,6 +1060,34 @@ impl Mechanism {
         }
         Ok(())
     }
+}
+
+/// The size of a described mechanism, m: the largest distance between two
+/// points of one link, between two fixed points, or between a fixed point and
+/// a frame guide's point. Scaling every coordinate by k scales it by k.
+fn mechanism_size(def: &MechanismDef) -> f64 {
+    let mut size = 0.0f64;
+    for l in &def.links {
+        for (i, (_, p)) in l.points.iter().enumerate() {
+            for (_, q) in &l.points[..i] {
+                size = size.max((*p - *q).hypot());
+            }
+        }
+    }
+    let mut frame: Vec<Vec2> = def.fixed.iter().map(|(_, p)| *p).collect();
+    frame.extend(def.sliders.iter().filter(|s| s.guide_link == FRAME).map(|s| s.through));
+    for (i, p) in frame.iter().enumerate() {
+        for q in &frame[..i] {
+            size = size.max((*p - *q).hypot());
+        }
+    }
+    size
+}
+
+/// The size every tolerance is relative to: [`mechanism_size`], at least
+/// the crank radius.
+fn scale_of(def: &MechanismDef, radius: f64) -> f64 {
+    mechanism_size(def).max(radius)
 }
 
 /// The default output link: in the last group, a link with a pair to the frame;

@@ -67,16 +67,46 @@ pub struct InputDef {
 /// Where a point should be at assembly, to choose the branch (вариант сборки).
 #[derive(Debug, Clone, PartialEq)]
 pub enum HintKind {
-    /// Above the line through two points (larger y at the same x).
+    /// Above the line through two points: larger y than the line at the
+    /// same x, for any slope. A line within 1e-9 rad of vertical has no
+    /// "above": the hint is refused (use left of / right of).
     Above(String, String),
-    /// Below the line through two points.
+    /// Below the line through two points (smaller y at the same x).
     Below(String, String),
-    /// Left of the line through two points (smaller x at the same y).
+    /// Left of the line through two points: smaller x than the line at the
+    /// same y. A line within 1e-9 rad of horizontal has no "left": refused
+    /// (use above / below).
     LeftOf(String, String),
-    /// Right of the line through two points.
+    /// Right of the line through two points (larger x at the same y).
     RightOf(String, String),
     /// Near a global position (the closest assembly wins).
     Near(Vec2),
+}
+
+impl std::fmt::Display for HintKind {
+    /// As a task file writes it: `above line A–D`, `near (0.6, 0) m`.
+    ///
+    /// ```
+    /// use tmm_linkage::HintKind;
+    /// assert_eq!(HintKind::Below("A".into(), "D".into()).to_string(), "below line A–D");
+    /// assert_eq!(HintKind::Near(tmm_geom::Vec2::new(0.6, 0.0)).to_string(), "near (0.6, 0) m");
+    /// ```
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            HintKind::Above(a, b) => write!(f, "above line {a}–{b}"),
+            HintKind::Below(a, b) => write!(f, "below line {a}–{b}"),
+            HintKind::LeftOf(a, b) => write!(f, "left of line {a}–{b}"),
+            HintKind::RightOf(a, b) => write!(f, "right of line {a}–{b}"),
+            HintKind::Near(p) => write!(f, "near ({}, {}) m", p.x, p.y),
+        }
+    }
+}
+
+impl std::fmt::Display for AssemblyHint {
+    /// `C below line A–D`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} {}", self.point, self.kind)
+    }
 }
 
 /// An assembly hint for one point, evaluated at the assembly crank angle.

@@ -90,6 +90,14 @@ pub struct ForceSolution {
     pub balancing_force: f64,
     /// That force as a vector, N.
     pub balancing_force_vec: Vec2,
+    /// The crank pin, global, m (where P_b acts).
+    pub pin: Vec2,
+    /// The frame's reaction on the crank at its pivot when the drive applies
+    /// the balancing force P_b at the pin instead of the torque M_b:
+    /// `R₀₁(P_b) = R₀₁(M_b) − P_b` (crank equilibrium ΣF = 0, derived in
+    /// docs/forces.md). The reaction in [`ForceSolution::reactions`] is the
+    /// torque model's. N.
+    pub pivot_reaction_with_force: Vec2,
     /// The balancing torque by Zhukovsky's lever (virtual power), N·m.
     pub zhukovsky_moment: f64,
     acc: Vec<(Vec2, f64)>,
@@ -195,6 +203,8 @@ impl<'m> Kinetostatics<'m> {
             balancing_moment: 0.0,
             balancing_force: 0.0,
             balancing_force_vec: Vec2::ZERO,
+            pin: Vec2::ZERO,
+            pivot_reaction_with_force: Vec2::ZERO,
             zhukovsky_moment: 0.0,
             acc: vec![(Vec2::ZERO, 0.0); nl],
             q: vec![(Vec2::ZERO, 0.0); maxl],
@@ -321,6 +331,9 @@ impl<'m> Kinetostatics<'m> {
         let rl = r.hypot();
         out.balancing_force = out.balancing_moment / rl;
         out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
+        out.pin = pivot + r;
+        // with P_b at the pin the crank's ΣF = 0 changes: R₀₁ = −(f + P_b)
+        out.pivot_reaction_with_force = -f - out.balancing_force_vec;
         out.zhukovsky_moment = -power / sol.links[c].omega;
         // --- nothing non-finite leaves
         let bad = |what: &str| ForceError::NonFinite {

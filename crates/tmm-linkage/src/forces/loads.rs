@@ -127,8 +127,11 @@ pub fn inertia_k(k: f64, mass: f64, length: f64) -> f64 {
     k * mass * length * length
 }
 
-/// The length of a link: the distance between its first two points (the
-/// x-axis of its local frame), or 0 for a single-point slider block.
+/// The length of a link for its distributed weight and inertia: the largest
+/// distance between two of its points (its joints, wherever they are stored,
+/// and its other named points) — for a bar the distance between its two
+/// joints, for a three-joint rocker E–B–C with B and C on opposite sides of
+/// E the whole |BC|; 0 for a slider block whose only point is its joint.
 pub fn link_length(m: &Mechanism, link: usize) -> f64 {
     let mut pts = m.points.iter().filter(|p| p.link == link).map(|p| p.local);
     // points shared with earlier links are stored on the first link only;

@@ -98,21 +98,17 @@ impl Stroke {
             m.solve(phi, sol)?;
             Ok(coord_rate(coord, &sol.links[output]))
         };
-        let n = 720;
-        let phi0 = m.assembly_angle;
-        let step = dir * 2.0 * PI / n as f64;
-        let mut prev = rate(&mut sol, phi0)?;
-        let mut dead = Vec::new();
-        for k in 1..=n {
-            let phi = phi0 + step * k as f64;
-            let r = rate(&mut sol, phi)?;
-            if prev == 0.0 || prev.signum() != r.signum() && r != 0.0 {
-                let (a, b) = (phi - step, phi);
-                let mut s2 = sol.clone();
-                let root = tmm_geom::root::brent(|x| rate(&mut s2, x).unwrap_or(f64::NAN), a.min(b), a.max(b), 1e-13).unwrap_or(phi);
-                dead.push(root);
+        // a position that does not solve is an error here, not a gap
+        let mut failed = None;
+        let dead = crate::cycle::periodic_roots(m.assembly_angle, dir, 720, |x| match rate(&mut sol, x) {
+            Ok(v) => v,
+            Err(e) => {
+                failed.get_or_insert(e);
+                f64::NAN
             }
-            prev = r;
+        });
+        if let Some(e) = failed {
+            return Err(e);
         }
         let name = &m.link_names[output];
         if dead.len() != 2 {
@@ -135,7 +131,12 @@ impl Stroke {
         let span01 = wrap_2pi((dead[1] - dead[0]) * dir);
         let span10 = 2.0 * PI - span01;
         let first = match working {
-            Working::Slower => span01 >= span10,
+            Working::Slower => {
+                if (span01 - span10).abs() <= crate::cycle::KV_TIE * 2.0 * PI {
+                    return Err(crate::cycle::kv_tie(span01, span10).into());
+                }
+                span01 >= span10
+            }
             Working::Increasing => grow01 > 0.0,
             Working::Decreasing => grow01 < 0.0,
         };

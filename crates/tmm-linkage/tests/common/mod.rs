@@ -38,8 +38,8 @@ fn slider(link: &str, point: &str, through: Vec2, angle_deg: f64) -> SliderDef {
 }
 
 /// Seed 001 four-bar: A(0,0), D(0.51,0), AB 0.12, BC 0.48, DC 0.38 m, 900 rpm ccw, C below AD.
-pub fn seed001() -> Mechanism {
-    let def = MechanismDef {
+pub fn seed001_def() -> MechanismDef {
+    MechanismDef {
         fixed: vec![("A".into(), v(0.0, 0.0)), ("D".into(), v(0.51, 0.0))],
         links: vec![
             LinkDef::bar("1", "A", "B", 0.12),
@@ -53,18 +53,17 @@ pub fn seed001() -> Mechanism {
         }],
         assembly_angle: 15f64.to_radians(),
         ..Default::default()
-    };
-    Mechanism::new(&def).unwrap()
+    }
 }
 
 /// Seed 003 six-bar (examples/seed-003-sixbar.toml).
-pub fn seed003() -> Mechanism {
+pub fn seed003_def() -> MechanismDef {
     let rocker = LinkDef {
         name: "3".into(),
         points: vec![("E".into(), v(0.0, 0.0)), ("B".into(), v(0.6, 0.0)), ("C".into(), v(-0.6, 0.0))],
         mass_center: v(0.0, 0.0),
     };
-    let def = MechanismDef {
+    MechanismDef {
         fixed: vec![("O".into(), v(-1.25, 0.0)), ("E".into(), v(0.0, 0.0))],
         links: vec![
             LinkDef::bar("1", "O", "A", 0.27),
@@ -84,17 +83,16 @@ pub fn seed003() -> Mechanism {
         ],
         assembly_angle: 80f64.to_radians(),
         ..Default::default()
-    };
-    Mechanism::new(&def).unwrap()
+    }
 }
 
 /// Seed 004 six-bar with two sliders (examples/seed-004-two-sliders.toml).
-pub fn seed004() -> Mechanism {
+pub fn seed004_def() -> MechanismDef {
     let coupler = LinkDef {
         points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.09, 0.0)), ("E".into(), v(0.045, 0.0))],
         ..LinkDef::bar("2", "B", "C", 0.09)
     };
-    let def = MechanismDef {
+    MechanismDef {
         fixed: vec![("A".into(), v(0.0, 0.0))],
         links: vec![
             LinkDef::bar("1", "A", "B", 0.03),
@@ -107,13 +105,12 @@ pub fn seed004() -> Mechanism {
         input: input("1", "A", "B", 40.82),
         hints: vec![near("C", 0.12, 0.0), near("D", 0.06, 0.12)],
         ..Default::default()
-    };
-    Mechanism::new(&def).unwrap()
+    }
 }
 
 /// Class-III mechanism (examples/class3-triad.toml): an equilateral base
 /// link B, C, D on links 2 (AB), 4 (CE), 5 (DF).
-pub fn triad() -> Mechanism {
+pub fn triad_def() -> MechanismDef {
     let a = 60f64.to_radians();
     let base = LinkDef {
         name: "3".into(),
@@ -124,26 +121,26 @@ pub fn triad() -> Mechanism {
         ],
         mass_center: v(0.15, 0.0866),
     };
-    let def = MechanismDef {
+    MechanismDef {
         fixed: vec![("O1".into(), v(0.0, 0.2)), ("E".into(), v(0.85, 0.05)), ("F".into(), v(0.25, 0.6))],
         links: vec![
-            LinkDef::bar("1", "O1", "A", 0.01),
-            LinkDef::bar("2", "A", "B", 0.3402),
+            LinkDef::bar("1", "O1", "A", 0.05),
+            LinkDef::bar("2", "A", "B", 0.4002),
             base,
             LinkDef::bar("4", "C", "E", 0.2583),
             LinkDef::bar("5", "D", "F", 0.2803),
         ],
         input: input("1", "O1", "A", 10.0),
         hints: vec![near("B", 0.35, 0.2134), near("C", 0.65, 0.2134), near("D", 0.5, 0.4732)],
+        assembly_angle: std::f64::consts::PI,
         ..Default::default()
-    };
-    Mechanism::new(&def).unwrap()
+    }
 }
 
 /// Slotted-link (кулисный) mechanism: crank OA, block on link 3 (the slotted
 /// link) pivoted at C: an RPR dyad.
-pub fn slotted() -> Mechanism {
-    let def = MechanismDef {
+pub fn slotted_def() -> MechanismDef {
+    MechanismDef {
         fixed: vec![("O".into(), v(0.0, 0.0)), ("C".into(), v(0.0, -0.3))],
         links: vec![
             LinkDef::bar("1", "O", "A", 0.1),
@@ -160,8 +157,7 @@ pub fn slotted() -> Mechanism {
         }],
         input: input("1", "O", "A", -7.0),
         ..Default::default()
-    };
-    Mechanism::new(&def).unwrap()
+    }
 }
 
 /// A tiny deterministic random generator for test loads.
@@ -176,4 +172,29 @@ impl Rng {
     pub fn sym(&mut self, a: f64) -> f64 {
         a * (2.0 * self.uniform() - 1.0)
     }
+}
+
+/// [`seed001_def`] compiled.
+pub fn seed001() -> Mechanism {
+    Mechanism::new(&seed001_def()).unwrap()
+}
+
+/// [`seed003_def`] compiled.
+pub fn seed003() -> Mechanism {
+    Mechanism::new(&seed003_def()).unwrap()
+}
+
+/// [`seed004_def`] compiled.
+pub fn seed004() -> Mechanism {
+    Mechanism::new(&seed004_def()).unwrap()
+}
+
+/// [`triad_def`] compiled.
+pub fn triad() -> Mechanism {
+    Mechanism::new(&triad_def()).unwrap()
+}
+
+/// [`slotted_def`] compiled.
+pub fn slotted() -> Mechanism {
+    Mechanism::new(&slotted_def()).unwrap()
 }
