@@ -33,17 +33,24 @@ impl TaskSource {
         }
     }
 
-    /// 1-based line and column of a byte offset.
+    /// 1-based line and column of a byte offset; the column counts
+    /// characters, so it is right on lines with Cyrillic text.
     ///
     /// ```
     /// let t = tmm_report::TaskSource::new("t.toml", "a = 1\nbb = 2\n");
     /// assert_eq!(t.line_col(8), (2, 3));
+    /// let t = tmm_report::TaskSource::new("t.toml", "title = \"Кривошип\" x");
+    /// assert_eq!(t.line_col(t.text.find('x').unwrap()), (1, 20));
     /// ```
     pub fn line_col(&self, offset: usize) -> (usize, usize) {
-        let off = offset.min(self.text.len());
+        let mut off = offset.min(self.text.len());
+        while !self.text.is_char_boundary(off) {
+            off -= 1;
+        }
         let before = &self.text[..off];
         let line = before.matches('\n').count() + 1;
-        let col = before.rfind('\n').map_or(off, |p| off - p - 1) + 1;
+        let start = before.rfind('\n').map_or(0, |p| p + 1);
+        let col = before[start..].chars().count() + 1;
         (line, col)
     }
 
@@ -55,7 +62,7 @@ impl TaskSource {
 
     /// A `toml` error as a located input error.
     pub fn toml_error(&self, section: &str, e: &toml::de::Error) -> Error {
-        let msg = e.message().trim().to_string();
+        let msg = plain_message(e.message().trim());
         match e.span() {
             Some(span) => Error::at(self, span, section, msg),
             None => Error::input(&format!("{}: {section}", self.name), msg),
@@ -77,13 +84,62 @@ impl TaskSource {
         Ok(table)
     }
 
+    /// Where a top-level key is written: a `[key…]` header or `key =` at the
+    /// start of a line, never inside a comment or a string.
     fn find_key(&self, key: &str) -> Option<Range<usize>> {
-        let needle = format!("[{key}");
-        self.text
-            .find(&needle)
-            .map(|p| p + 1..p + 1 + key.len())
-            .or_else(|| self.text.find(key).map(|p| p..p + key.len()))
+        let mut at = 0;
+        for line in self.text.split_inclusive('\n') {
+            let code = line.split('#').next().unwrap_or("");
+            let lead = code.len() - code.trim_start().len();
+            let rest = &code[lead..];
+            let (skip, name) = match rest.strip_prefix("[[").or_else(|| rest.strip_prefix('[')) {
+                Some(r) => (rest.len() - r.len(), r),
+                None => (0, rest),
+            };
+            let name = name.trim_start_matches('"');
+            if let Some(after) = name.strip_prefix(key) {
+                let end = after.trim_start().chars().next();
+                if matches!(end, Some('=' | ']' | '.' | '"')) {
+                    let p = at + lead + skip + (rest.len() - skip - name.len());
+                    return Some(p..p + key.len());
+                }
+            }
+            at += line.len();
+        }
+        None
     }
+}
+
+/// A `toml`/`serde` message in words for the user: no Rust type names.
+///
+/// ```
+/// let m = tmm_report::task::plain_message("data did not match any variant of untagged enum RawQty");
+/// assert!(m.contains("a number") && !m.contains("RawQty"));
+/// ```
+pub fn plain_message(msg: &str) -> String {
+    if let Some(name) = msg.strip_prefix("data did not match any variant of untagged enum ") {
+        return match name.trim() {
+            "RawQty" => "expected a number or a quantity with its unit, e.g. \"120 mm\" or 0.12".into(),
+            "HintSec" => {
+                "expected an assembly hint: a text such as \"C below line A-D\" or a table { point = \"C\", near = [\"0.4 m\", \"0.3 m\"] }"
+                    .into()
+            }
+            "Through" => "expected a point's name or its coordinates, e.g. \"O\" or [\"0 mm\", \"120 mm\"]".into(),
+            _ => "this value has the wrong form; see the section's description in docs/".into(),
+        };
+    }
+    let mut m = msg.replace("invalid type: ", "wrong kind of value: ");
+    for (rust, words) in [
+        ("expected f64", "expected a number"),
+        ("expected usize", "expected a whole number"),
+        ("expected u32", "expected a whole number"),
+        ("expected u64", "expected a whole number"),
+        ("expected i64", "expected a whole number"),
+        ("expected a string", "expected a text in quotes"),
+    ] {
+        m = m.replace(rust, words);
+    }
+    m
 }
 
 /// A quantity as written in a task file: a plain number or a string with a unit.

@@ -63,6 +63,9 @@ pub struct Args {
     /// Profile points over one turn (default 720)
     #[arg(long, allow_hyphen_values = true)]
     pub points: Option<String>,
+    /// Analyse a given cam: its base (prime) circle radius r0, e.g. "2 in" (with --offset for a translating follower, --pivot for an oscillating one), instead of sizing the smallest cam
+    #[arg(long, allow_hyphen_values = true)]
+    pub r0: Option<String>,
     /// Step of the position table, degrees
     #[arg(long, default_value_t = 15)]
     pub step: usize,
@@ -106,6 +109,7 @@ impl Args {
             pivot: t(&self.pivot),
             face_margin: t(&self.face_margin),
             points,
+            r0: t(&self.r0),
         })
     }
 
@@ -125,6 +129,7 @@ impl Args {
             (self.pivot.is_some(), "--pivot"),
             (self.face_margin.is_some(), "--face-margin"),
             (self.points.is_some(), "--points"),
+            (self.r0.is_some(), "--r0"),
         ]
         .into_iter()
         .find(|x| x.0)
@@ -146,8 +151,9 @@ pub fn run(a: &Args) -> Result<(), Error> {
                     .with_help("add a [cam] section (see `tmm run --print-default`) or give the options"));
             };
             let loc = input::file_locator(&src, &sec, span);
-            let task = input::build(&sec.raw(), &loc)?;
-            let d = cam_report::solve(&task, &loc)?;
+            let raw = sec.raw();
+            let task = input::build(&raw, &loc)?;
+            let d = cam_report::solve(&task, input::given_r0(&raw, &loc)?, &loc)?;
             (task, d)
         }
         None => {
@@ -158,7 +164,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
             }
             let loc = |f: Field, m: String| input::cli_locator(f, m);
             let task = input::build(&raw, &loc)?;
-            let d = cam_report::solve(&task, &loc)?;
+            let d = cam_report::solve(&task, input::given_r0(&raw, &loc)?, &loc)?;
             (task, d)
         }
     };

@@ -60,8 +60,8 @@ pub struct Common {
     /// Criterion for choosing x1, x2: equal-sliding (default), max-contact-ratio, balanced
     #[arg(long)]
     pub criterion: Option<String>,
-    /// Least tip thickness as a fraction of m (GOST 16532-70: 0.3 through-hardened, 0.4 case-hardened)
-    #[arg(long, default_value = "0.25", allow_hyphen_values = true)]
+    /// Least tip thickness as a fraction of m; the default 0.3 is GOST 16532-70's value for through-hardened teeth (use 0.4 for case-hardened)
+    #[arg(long, default_value = "0.3", allow_hyphen_values = true)]
     pub sa_min: String,
     /// Least contact ratio εα
     #[arg(long, default_value = "1.2", allow_hyphen_values = true)]

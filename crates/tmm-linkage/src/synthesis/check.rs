@@ -92,7 +92,13 @@ pub fn points_at(m: &Mechanism, phi: f64) -> Result<Vec<(String, tmm_geom::Vec2)
 /// Check a mechanism whose crank must turn fully: K, stroke, pressure angles.
 pub fn check_cycle(def: &MechanismDef, expect: &Expect, branch: &str) -> Result<CheckReport, SynthesisError> {
     let m = Mechanism::new(def)?;
-    let cycle = Cycle::new(&m, Working::Slower)?;
+    // K = 1 (an axial crank-slider, a centred yoke): both strokes take the
+    // same crank angle, so "the slower one" is undefined; the working stroke
+    // is then the one on which the output coordinate increases.
+    let cycle = match Cycle::new(&m, Working::Slower) {
+        Ok(c) => c,
+        Err(e) => Cycle::new(&m, Working::Increasing).map_err(|_| e)?,
+    };
     if cycle.dead.len() != 2 {
         return Err(SynthesisError::Check(
             "the output has no two dead positions: it does not oscillate".into(),

@@ -29,8 +29,9 @@ pub struct CamFile {
 pub struct CamSection {
     /// `translating-roller`, `translating-flat`, `oscillating-roller`, `oscillating-flat`.
     pub follower: toml::Spanned<String>,
-    /// Stroke h: a length, or an angle for an oscillating follower.
-    pub stroke: Qty,
+    /// Stroke h: a length, or an angle for an oscillating follower; may be
+    /// left out when every rise and return in `phases` carries its own.
+    pub stroke: Option<Qty>,
     /// Phase list, e.g. `"rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129"`.
     pub phases: toml::Spanned<String>,
     /// Allowed pressure angles: `"rise 15, return 30"` or one value.
@@ -55,6 +56,9 @@ pub struct CamSection {
     pub face_margin: Option<Qty>,
     /// Profile points over one turn (default 720).
     pub points: Option<toml::Spanned<i64>>,
+    /// A given base (prime) circle radius r0: analyse this cam instead of
+    /// sizing the smallest one.
+    pub r0: Option<Qty>,
 }
 
 /// The inputs of a cam task as written, from either source.
@@ -88,6 +92,8 @@ pub struct Raw {
     pub face_margin: Option<RawQty>,
     /// Profile points.
     pub points: Option<i64>,
+    /// A given base circle radius (analyse instead of size).
+    pub r0: Option<RawQty>,
 }
 
 /// A field of the cam task, for locating errors.
@@ -123,6 +129,8 @@ pub enum Field {
     FaceMargin,
     /// `points`.
     Points,
+    /// `r0`.
+    R0,
 }
 
 impl Field {
@@ -144,6 +152,7 @@ impl Field {
             Field::Pivot => "cam.pivot",
             Field::FaceMargin => "cam.face_margin",
             Field::Points => "cam.points",
+            Field::R0 => "cam.r0",
         }
     }
     /// The command-line option.
@@ -164,6 +173,7 @@ impl Field {
             Field::Pivot => "--pivot",
             Field::FaceMargin => "--face-margin",
             Field::Points => "--points",
+            Field::R0 => "--r0",
         }
     }
 }
@@ -180,7 +190,7 @@ impl CamSection {
         let q = |x: &Option<Qty>| x.as_ref().map(|v| v.get_ref().clone());
         Raw {
             follower: Some(self.follower.get_ref().clone()),
-            stroke: Some(self.stroke.get_ref().clone()),
+            stroke: q(&self.stroke),
             phases: Some(self.phases.get_ref().clone()),
             max_pressure: q(&self.max_pressure),
             min_transmission: q(&self.min_transmission),
@@ -193,6 +203,7 @@ impl CamSection {
             pivot: q(&self.pivot),
             face_margin: q(&self.face_margin),
             points: self.points.as_ref().map(|p| *p.get_ref()),
+            r0: q(&self.r0),
         }
     }
 
@@ -202,7 +213,7 @@ impl CamSection {
         let s = match f {
             Field::Section => None,
             Field::Follower => Some(self.follower.span()),
-            Field::Stroke => Some(self.stroke.span()),
+            Field::Stroke => q(&self.stroke),
             Field::Phases => Some(self.phases.span()),
             Field::MaxPressure => q(&self.max_pressure),
             Field::MinTransmission => q(&self.min_transmission),
@@ -215,6 +226,7 @@ impl CamSection {
             Field::Pivot => q(&self.pivot),
             Field::FaceMargin => q(&self.face_margin),
             Field::Points => self.points.as_ref().map(|p| p.span()),
+            Field::R0 => q(&self.r0),
         };
         s.unwrap_or(section)
     }
@@ -270,27 +282,51 @@ fn limits_of(raw: &RawQty, transmission: bool, f: Field, loc: &Locate<'_>) -> Re
     })
 }
 
+/// The given base circle radius r0 (`r0`), when the cam is to be analysed
+/// rather than sized.
+pub fn given_r0(raw: &Raw, loc: &Locate<'_>) -> Result<Option<f64>, Error> {
+    let r0 = quantity(&raw.r0, Dim::Length, Field::R0, loc)?;
+    if let Some(r) = r0 {
+        if !(r.is_finite() && r > 0.0 && r <= 10.0) {
+            return Err(loc(Field::R0, format!("the base circle radius must lie in (0, 10 m], got {r} m"))
+                .with_help("a length such as \"40 mm\" or \"2 in\""));
+        }
+    }
+    Ok(r0)
+}
+
 /// Build the cam task from the inputs; every error is located by `loc`.
 pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
     let follower_name = raw
         .follower
         .as_deref()
         .ok_or_else(|| loc(Field::Follower, "the follower kind is missing".into()).with_help(format!("one of {FOLLOWERS}")))?;
+    // The kind first: every later field (the stroke's unit above all) is read
+    // according to it, so a misspelt kind must be named, not a valid stroke.
+    const KINDS: [&str; 6] = [
+        "translating-roller",
+        "knife-edge",
+        "translating-knife",
+        "translating-flat",
+        "oscillating-roller",
+        "oscillating-flat",
+    ];
+    if !KINDS.contains(&follower_name) {
+        return Err(loc(Field::Follower, format!("`{follower_name}` is not a follower kind")).with_help(format!("one of {FOLLOWERS}")));
+    }
     let oscillating = follower_name.starts_with("oscillating");
     let stroke_dim = if oscillating { Dim::Angle } else { Dim::Length };
-    let stroke = quantity(&raw.stroke, stroke_dim, Field::Stroke, loc)?.ok_or_else(|| {
-        loc(Field::Stroke, "the stroke is missing".into()).with_help(if oscillating {
-            "the swing angle, e.g. \"20 deg\""
-        } else {
-            "a length, e.g. \"13 mm\""
-        })
-    })?;
+    let stroke = quantity(&raw.stroke, stroke_dim, Field::Stroke, loc)?;
     let phases_text = raw
         .phases
         .as_deref()
         .ok_or_else(|| loc(Field::Phases, "the phase list is missing".into()).with_help(PHASES_HELP))?;
     let phases = spec::parse_phases(phases_text).map_err(|e| cam_error(e, loc))?;
-    let program = Program::new(stroke, phases).map_err(|e| cam_error(e, loc))?;
+    let program = match stroke {
+        Some(h) => Program::new(h, phases),
+        None => Program::from_phases(phases),
+    }
+    .map_err(|e| cam_error(e, loc))?;
     let len = |r: &Option<RawQty>, f: Field| quantity(r, Dim::Length, f, loc);
     let offset = match &raw.offset {
         Some(RawQty::Text(t)) if t.trim().eq_ignore_ascii_case("auto") => None,
@@ -384,7 +420,9 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
         }
         (Some(p), None) => limits_of(p, false, Field::MaxPressure, loc)?,
         (None, Some(t)) => limits_of(t, true, Field::MinTransmission, loc)?,
-        (None, None) if flat => Limits {
+        // a flat face, or a given cam that is analysed, not sized: the
+        // pressure angles are results; the limit only bounds them loosely
+        (None, None) if flat || raw.r0.is_some() => Limits {
             rise: 89f64.to_radians(),
             ret: 89f64.to_radians(),
         },

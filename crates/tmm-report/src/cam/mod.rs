@@ -25,9 +25,14 @@ use crate::output::Documents;
 use crate::{Error, SectionOutput, TaskSource};
 use input::Locate;
 
-/// Design the cam, turning a core error into a located input error.
-pub fn solve(task: &CamTask, loc: &Locate<'_>) -> Result<CamDesign, Error> {
-    task.solve().map_err(|e| input::cam_error(e, loc))
+/// Design the cam — the smallest one, or the one with the given base circle
+/// radius `r0` — turning a core error into a located input error.
+pub fn solve(task: &CamTask, r0: Option<f64>, loc: &Locate<'_>) -> Result<CamDesign, Error> {
+    match r0 {
+        Some(r) => task.solve_with_r0(r),
+        None => task.solve(),
+    }
+    .map_err(|e| input::cam_error(e, loc))
 }
 
 /// The SVG drawings, as documents whose paths start with `dir`
@@ -58,8 +63,9 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
         return Ok(None);
     };
     let loc = input::file_locator(task, &sec, span);
-    let cam = input::build(&sec.raw(), &loc)?;
-    let d = solve(&cam, &loc)?;
+    let raw = sec.raw();
+    let cam = input::build(&raw, &loc)?;
+    let d = solve(&cam, input::given_r0(&raw, &loc)?, &loc)?;
     let mut docs = Documents::new();
     drawings(&cam, &d, "cam/", &mut docs)?;
     docs.add_bytes("cam/cam-profile.dxf", profile_dxf(&d)?)?;

@@ -211,6 +211,8 @@ pub struct Job {
     pub criterion: Option<Criterion>,
     /// Check limits.
     pub limits: Limits,
+    /// The cutter's tip fillet as fitted to the rack.
+    pub fillet: tmm_gears::rack::FilletFit,
 }
 
 impl Raw {
@@ -302,6 +304,10 @@ impl Raw {
             c: q(&self.c, Field::C, Dim::Ratio)?.unwrap_or(d.c),
             hl: q(&self.hl, Field::Hl, Dim::Ratio)?.unwrap_or(d.hl),
         };
+        // The largest cutter tip fillet that fits the rack (α = 25° does not
+        // take the 20° rack's fillet): the text says when it was reduced.
+        let fillet = rack.fit_fillet().map_err(|e| gear_error(o, &e))?;
+        let rack = fillet.rack;
         let x1 = q(&self.x1, Field::X1, Dim::Ratio)?;
         let x2 = q(&self.x2, Field::X2, Dim::Ratio)?;
         let aw = q(&self.aw, Field::Aw, Dim::Length)?;
@@ -365,47 +371,35 @@ impl Raw {
             mode,
             criterion,
             limits,
+            fillet,
         })
     }
 }
 
 /// A core error as a located input error, naming the field it comes from.
 pub fn gear_error(o: &Origin<'_>, e: &GearError) -> Error {
-    let (f, help): (Field, String) = match e {
-        GearError::TooFewTeeth { wheel, min, .. } => (
-            if *wheel == 1 { Field::Z1 } else { Field::Z2 },
-            format!("use at least {min} teeth (fewer cannot be cut by the rack without undercut or a pointed tip)"),
-        ),
-        GearError::Module(_) => (Field::Module, "give a positive module, e.g. \"5 mm\"".into()),
-        GearError::Rack { param, .. } => (
-            match *param {
-                "ha" => Field::Ha,
-                "c" => Field::C,
-                "hl" => Field::Hl,
-                _ => Field::Alpha,
-            },
-            "the default rack is α = 20°, ha* = 1, c* = 0.25, hl* = 2 (GOST 13755-81)".into(),
-        ),
-        GearError::Shift { wheel } => (
-            if *wheel == 1 { Field::X1 } else { Field::X2 },
-            "a shift is a plain number such as 0.3".into(),
-        ),
-        GearError::TipBelowRoot { wheel, .. } => (
-            if *wheel == 2 { Field::X2 } else { Field::X1 },
-            "raise the shifts or reduce their difference; see `tmm gear contour` for the allowed region".into(),
-        ),
-        GearError::TipInsideBase { wheel, .. } => (
-            if *wheel == 2 { Field::X2 } else { Field::X1 },
-            "raise the shift of that wheel".into(),
-        ),
-        GearError::ShiftSum { .. } => (Field::X1, "raise x1 + x2".into()),
-        GearError::CentreDistance { min, .. } => (Field::Aw, format!("give aw above {:.4} mm", min * 1e3)),
-        GearError::InternalAssembly(_) => (Field::Z2, "raise z2 − z1 (at least 8–10 for the 20° rack) or x2".into()),
-        GearError::NoFeasibleSplit(_) => (
-            Field::Criterion,
-            "try another criterion, relax sa_min or eps_min, or change the tooth numbers".into(),
-        ),
-        GearError::NonFinite(_) => (Field::Section, "check the input values".into()),
+    let wheel_field = |w: &u8| if *w == 2 { Field::X2 } else { Field::X1 };
+    let f = match e {
+        GearError::TooFewTeeth { wheel, .. } => {
+            if *wheel == 1 {
+                Field::Z1
+            } else {
+                Field::Z2
+            }
+        }
+        GearError::Module(_) => Field::Module,
+        GearError::Rack { param, .. } => match *param {
+            "ha" => Field::Ha,
+            "c" => Field::C,
+            "hl" => Field::Hl,
+            _ => Field::Alpha,
+        },
+        GearError::Shift { wheel } | GearError::TipBelowRoot { wheel, .. } | GearError::TipInsideBase { wheel, .. } => wheel_field(wheel),
+        GearError::ShiftSum { .. } => Field::X1,
+        GearError::CentreDistance { .. } => Field::Aw,
+        GearError::InternalAssembly(_) => Field::Z2,
+        GearError::NoFeasibleSplit(_) => Field::Criterion,
+        GearError::NonFinite(_) => Field::Section,
     };
-    o.err(f, e).with_help(help)
+    o.err(f, e).with_help(e.help())
 }

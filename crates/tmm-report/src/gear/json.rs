@@ -24,8 +24,8 @@ pub fn pair_json(s: &Solved, lim: &Limits, profiles: Option<(&ToothProfile, &Too
     o.insert("m".into(), num(sp.m));
     o.insert("x1".into(), num(sp.x1));
     o.insert("x2".into(), num(sp.x2));
-    o.insert("rack".into(), json!({"alpha": num(sp.rack.alpha), "ha": num(sp.rack.ha), "c": num(sp.rack.c), "hl": num(sp.rack.hl), "rho_f": num(sp.rack.fillet_radius() * sp.m)}));
-    let kv: [(&str, f64); 26] = [
+    o.insert("rack".into(), json!({"alpha": num(sp.rack.alpha), "ha": num(sp.rack.ha), "c": num(sp.rack.c), "hl": num(sp.rack.hl), "rho_f": num(sp.rack.fillet_radius() * sp.m), "rho_f_reduced": s.fillet.reduced}));
+    let kv: [(&str, f64); 27] = [
         ("a", p.a),
         ("inv_alpha_w", p.inv_alpha_w),
         ("aw", p.aw),
@@ -52,6 +52,7 @@ pub fn pair_json(s: &Solved, lim: &Limits, profiles: Option<(&ToothProfile, &Too
         ("sa1", p.w1.sa),
         ("sa2", p.w2.sa),
         ("eps_alpha", p.eps_alpha),
+        ("eps_alpha_gost", p.eps_alpha_gost),
     ];
     for (k, v) in kv {
         o.insert(k.into(), num(v));

@@ -19,6 +19,8 @@ pub struct Solved {
     pub reason: Option<String>,
     /// The required centre distance, when one was given.
     pub aw_required: Option<f64>,
+    /// The cutter's tip fillet as fitted to the rack.
+    pub fillet: tmm_gears::rack::FilletFit,
 }
 
 /// Compute the pair of a job.
@@ -31,6 +33,7 @@ pub fn solve(job: &Job, o: &Origin<'_>) -> Result<Solved, Error> {
                 criterion: None,
                 reason: None,
                 aw_required: None,
+                fillet: job.fillet,
             });
         }
         Mode::CentreDistance(aw) => {
@@ -55,5 +58,6 @@ pub fn solve(job: &Job, o: &Origin<'_>) -> Result<Solved, Error> {
         criterion: Some(crit),
         reason,
         aw_required,
+        fillet: job.fillet,
     })
 }

@@ -31,13 +31,20 @@ pub fn pair_text(s: &Solved, lim: &Limits) -> String {
     );
     let _ = writeln!(
         t,
-        "Basic rack: α = {:.3}°, ha* = {}, c* = {}, hl* = {}, ρf* = {:.3}",
+        "Basic rack: α = {:.3}°, ha* = {}, c* = {}, hl* = {:.4}, ρf* = {:.3}",
         sp.rack.alpha.to_degrees(),
         sp.rack.ha,
         sp.rack.c,
         sp.rack.hl,
         sp.rack.fillet_radius()
     );
+    if s.fillet.reduced {
+        let _ = writeln!(
+            t,
+            "  The nominal tip fillet ρf* = {:.3} does not fit this rack: the largest that fits, ρf* = {:.3}, is used (hl* = {:.3}).",
+            s.fillet.rho_f_nominal, s.fillet.rho_f, sp.rack.hl
+        );
+    }
     if let Some(c) = s.criterion {
         let _ = writeln!(
             t,
@@ -83,9 +90,16 @@ pub fn pair_text(s: &Solved, lim: &Limits) -> String {
     row(&mut t, "ϑmax (specific sliding)", th(p.theta1_max()), th(p.theta2_max()));
     let _ = writeln!(
         t,
-        "  εα = {:.5} (by the length of action: {:.5})",
+        "  εα = {:.5} over the real active line{}",
         p.eps_alpha,
-        p.eps_alpha_by_length()
+        if (p.eps_alpha - p.eps_alpha_gost).abs() > 1e-9 {
+            format!(
+                " (GOST 16532-70's tan formula gives {:.5}: it counts contact past N1/N2 or below the involute, which interference rules out)",
+                p.eps_alpha_gost
+            )
+        } else {
+            String::new()
+        }
     );
     let _ = writeln!(t, "\nQuality checks");
     for c in p.checks(lim).as_slice() {
