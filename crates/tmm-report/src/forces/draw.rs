@@ -26,51 +26,35 @@ struct Arrow {
     f: Vec2,
 }
 
-/// A free-body diagram with its force polygon, for the links `links`.
-fn free_body(l: &Loaded, r: &Row, links: &[usize], title: &str, balancing: bool) -> String {
+/// A free-body diagram with its force polygon, for the links `links`; the
+/// forces are the core's polygon number `which` (the groups in order, then
+/// the input link with the balancing force), so the drawn polygon is the one
+/// whose closure the core guarantees.
+fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str) -> String {
     let m = &l.mech;
     let f = &r.fs;
     let sol = &r.sol;
-    let mut arrows: Vec<Arrow> = Vec::new();
     let mut couples: Vec<(Vec2, f64, String)> = Vec::new();
     for &li in links {
         let lf = &f.links[li];
-        if lf.force.hypot() > 0.0 {
-            arrows.push(Arrow {
-                label: format!("F{}", m.link_names[li]),
-                at: lf.s,
-                f: lf.force,
-            });
-        }
         if lf.moment != 0.0 {
             couples.push((lf.s, lf.moment, format!("M{} = {:.2} N·m", m.link_names[li], lf.moment)));
         }
     }
-    for x in &f.reactions {
-        let on_in = links.contains(&x.on);
-        let from_in = links.contains(&x.from);
-        if on_in && !from_in {
-            arrows.push(Arrow {
-                label: format!("R{}{}", m.link_names[x.from], m.link_names[x.on]),
-                at: x.at,
-                f: x.force,
-            });
-        } else if from_in && !on_in {
-            arrows.push(Arrow {
-                label: format!("R{}{}", m.link_names[x.on], m.link_names[x.from]),
-                at: x.at,
-                f: -x.force,
-            });
-        }
-    }
-    if balancing {
-        let pin = sol.points[m.crank.pin].p;
-        arrows.push(Arrow {
-            label: "Pb".into(),
-            at: pin,
-            f: f.balancing_force_vec,
-        });
-    }
+    let polygons = f.polygons(m);
+    let arrows: Vec<Arrow> = polygons
+        .get(which)
+        .map(|p| {
+            p.forces
+                .iter()
+                .map(|x| Arrow {
+                    label: x.label.clone(),
+                    at: x.at,
+                    f: x.force,
+                })
+                .collect()
+        })
+        .unwrap_or_default();
     // the links: segments between every pair of their joints
     let mut segs: Vec<(Vec2, Vec2)> = Vec::new();
     let mut pts: Vec<Vec2> = Vec::new();
@@ -283,7 +267,7 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &str, docs: &mut
         );
         docs.add_text(
             format!("{dir}group-{}.svg", g + 1),
-            free_body(l, &a.detail, &grp.info.link_ids, &title, false),
+            free_body(l, &a.detail, &grp.info.link_ids, g, &title),
         )?;
     }
     let title = format!(
@@ -292,7 +276,7 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &str, docs: &mut
     );
     docs.add_text(
         format!("{dir}input-link.svg"),
-        free_body(l, &a.detail, &[m.crank.link], &title, true),
+        free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title),
     )?;
     docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a))?;
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
