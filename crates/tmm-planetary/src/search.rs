@@ -97,7 +97,14 @@ impl Request {
                 "the largest tooth number is 1 to 2000 (default 200)",
             );
         }
-        if l.zmin < 1 || l.zmin > l.zmax {
+        if l.zmin > l.zmax {
+            return bad(
+                "zmax",
+                format!("{} is below the smallest tooth number zmin = {}", l.zmax, l.zmin),
+                "raise zmax (default 200) or lower zmin",
+            );
+        }
+        if l.zmin < 1 {
             return bad(
                 "zmin",
                 format!("{} is out of range", l.zmin),
@@ -367,13 +374,27 @@ fn visit_set(req: &Request, t: Teeth, q: ModuleRatio, (ulo, uhi): (f64, f64), co
     });
 }
 
-/// The range of ratios a scheme can give, in words.
-fn reach(scheme: Scheme) -> &'static str {
+/// The range of ratios a scheme can give, in words, with the bound that the
+/// tooth-number limits put on it: z3 ≤ zmax and z1 ≥ zmin give
+/// u_1H = 1 + z3/z1 ≤ 1 + zmax/zmin for sun-planet-ring, and
+/// u_1H = 1 + z2·z3/(z1·z2') ≤ 1 + (zmax/zmin)² for ext-int.
+fn reach(scheme: Scheme, l: &Limits) -> String {
+    let q = l.zmax as f64 / l.zmin.max(1) as f64;
     match scheme {
-        Scheme::SunPlanetRing => "u_1H = 1 + z3/z1 with z3 = z1 + 2·z2, so u_1H > 2",
-        Scheme::ExtInt => "u_1H = 1 + z2·z3/(z1·z2'), so u_1H > 1",
-        Scheme::ExtExt => "u_1H = 1 − z2·z3/(z1·z2'), so u_1H < 1 (u_1H ≠ 0; with the carrier driving, u_H1 = 1/u_1H)",
-        Scheme::IntInt => "u_1H = 1 − z2·z3/(z1·z2'), so u_1H < 1 (u_1H ≠ 0; with the carrier driving, u_H1 = 1/u_1H)",
+        Scheme::SunPlanetRing => format!(
+            "u_1H = 1 + z3/z1 with z3 = z1 + 2·z2, so 2 < u_1H ≤ 1 + zmax/zmin = {:.4} with z from {} to {}",
+            1.0 + q,
+            l.zmin,
+            l.zmax
+        ),
+        Scheme::ExtInt => format!(
+            "u_1H = 1 + z2·z3/(z1·z2'), so 1 < u_1H ≤ 1 + (zmax/zmin)² = {:.4} with z from {} to {}",
+            1.0 + q * q,
+            l.zmin,
+            l.zmax
+        ),
+        Scheme::ExtExt => "u_1H = 1 − z2·z3/(z1·z2'), so u_1H < 1 (u_1H ≠ 0; with the carrier driving, u_H1 = 1/u_1H)".into(),
+        Scheme::IntInt => "u_1H = 1 − z2·z3/(z1·z2'), so u_1H < 1 (u_1H ≠ 0; with the carrier driving, u_H1 = 1/u_1H)".into(),
     }
 }
 
@@ -393,7 +414,7 @@ fn no_solution(req: &Request, c: &Counts) -> PlanetaryError {
                 "no coaxial set of tooth numbers up to zmax = {} gives u_1H = {u} {within}: the scheme {} has {}",
                 l.zmax,
                 req.scheme.name(),
-                reach(req.scheme)
+                reach(req.scheme, l)
             ),
             "choose a ratio the scheme can give, another scheme, or allow a tolerance (e.g. 0.02)".to_string(),
         )

@@ -39,8 +39,11 @@ pub fn run(a: &Args) -> Result<(), Error> {
         Some(t) => Some(arg_qty("--at", t, Dim::Angle)?),
         None => None,
     };
-    if a.positions == Some(0) || a.positions.is_some_and(|n| n > 100_000) {
-        return Err(Error::input("--positions", "must be from 1 to 100000"));
+    if a.positions == Some(0) || a.positions.is_some_and(|n| n > tmm_report::linkage::task::MAX_POSITIONS) {
+        return Err(Error::input(
+            "--positions",
+            format!("must be from 1 to {} (0.1° apart)", tmm_report::linkage::task::MAX_POSITIONS),
+        ));
     }
     let n = a.positions.unwrap_or(l.task.positions);
     let an = analyse(&l, &task, at, n)?;

@@ -354,8 +354,8 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
     };
     let points = match raw.points {
         None => 720,
-        Some(n) if (16..=1_000_000).contains(&n) => n as usize,
-        Some(n) => return Err(loc(Field::Points, format!("{n} profile points")).with_help("between 16 and 1000000")),
+        Some(n) if (16..=100_000).contains(&n) => n as usize,
+        Some(n) => return Err(loc(Field::Points, format!("{n} profile points")).with_help("between 16 and 100000 (0.0036° apart)")),
     };
     let not_for = |f: Field, present: bool| -> Result<(), Error> {
         if present {

@@ -274,9 +274,12 @@ impl Raw {
                 o.err(f, "is required")
                     .with_help(format!("give the tooth number, e.g. {} 17", f.option()))
             })?;
-            if !(1..=100_000).contains(&v) {
+            // The upper bound keeps the drawings (every tooth is drawn and
+            // generated) and their files bounded: 1000 teeth give a mesh.dxf
+            // of a few MB; no wheel of the course comes near it.
+            if !(1..=MAX_TEETH).contains(&v) {
                 return Err(o
-                    .err(f, format!("a tooth number must be a whole number from 8 up, got {v}"))
+                    .err(f, format!("a tooth number must be a whole number from 8 to {MAX_TEETH}, got {v}"))
                     .with_help("tooth numbers are positive integers, e.g. 17"));
             }
             Ok(v as u32)
@@ -375,6 +378,9 @@ impl Raw {
         })
     }
 }
+
+/// The largest tooth number tmm accepts (the drawings draw every tooth).
+pub const MAX_TEETH: i64 = 1000;
 
 /// A core error as a located input error, naming the field it comes from.
 pub fn gear_error(o: &Origin<'_>, e: &GearError) -> Error {

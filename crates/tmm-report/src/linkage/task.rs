@@ -121,6 +121,10 @@ enum HintSec {
     Near { point: String, near: Vec<RawQty> },
 }
 
+/// The most positions a table may have (0.1° apart): every position is
+/// solved, kept and written, so the bound keeps memory and files small.
+pub const MAX_POSITIONS: usize = 3600;
+
 /// The `[linkage]` section, read and checked.
 #[derive(Debug, Clone)]
 pub struct LinkageTask {
@@ -433,9 +437,9 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         None => 12,
         Some(p) => {
             let n = *p.get_ref();
-            if !(1..=100_000).contains(&n) {
+            if !(1..=MAX_POSITIONS as i64).contains(&n) {
                 return Err(Error::at(task, p.span(), "linkage.positions", format!("{n} positions"))
-                    .with_help("a number from 1 to 100000; the course uses 12"));
+                    .with_help(format!("a number from 1 to {MAX_POSITIONS}; the course uses 12")));
             }
             n as usize
         }

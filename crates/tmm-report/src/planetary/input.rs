@@ -227,18 +227,25 @@ pub fn from_task(task: &TaskSource) -> Result<Option<(Params, Origin)>, Error> {
 
 /// Check the values the core does not check (module, speed, efficiencies, top).
 pub fn check_extra(p: &Params, o: &Origin) -> Result<(), Error> {
-    if !p.module.is_finite() || p.module <= 0.0 {
+    if tmm_gears::spec::check_module(p.module).is_err() {
+        let mm = p.module * 1e3;
+        let hint = if (0.05..=100.0).contains(&p.module) {
+            format!(" — did you mean {} mm? (a number without a unit is read in metres)", p.module)
+        } else {
+            String::new()
+        };
         return Err(o.error(
             "module",
-            format!("{} m is not a module", p.module),
-            "a positive module, e.g. \"2 mm\"",
+            format!("{mm} mm lies outside the GOST 9563-60 series' 0.05 mm … 100 mm{hint}"),
+            "a module with its unit, e.g. \"2 mm\"",
         ));
     }
-    if !p.omega1.is_finite() || p.omega1 == 0.0 {
+    // 1e5 rad/s (about a million rpm) is beyond any gear train
+    if !p.omega1.is_finite() || p.omega1 == 0.0 || p.omega1.abs() > 1e5 {
         return Err(o.error(
             "omega1",
             format!("{} rad/s", p.omega1),
-            "a non-zero angular velocity of wheel 1, e.g. \"1450 rpm\" or \"150 rad/s\"",
+            "a non-zero angular velocity of wheel 1 up to 1e5 rad/s, e.g. \"1450 rpm\" or \"150 rad/s\"",
         ));
     }
     for (f, e) in [
