@@ -292,6 +292,12 @@ fn mutated_task_files() {
                 }
             }
         }
+        if case > 0 && case % 10_000 == 0 {
+            eprintln!(
+                "fuzz: {case} cases in {:.1} s: {ok} ran, {refused} refused, slowest {slowest:?}",
+                started.elapsed().as_secs_f64()
+            );
+        }
         if case % 25 == 0 {
             let file = work.join("task.toml");
             std::fs::write(&file, &bytes).unwrap();
