@@ -351,3 +351,24 @@ fn cam_analysis_and_per_phase_strokes() {
     assert_eq!(c, 0, "{e}");
     assert!(out.contains("20.0000 mm"), "{out}");
 }
+
+/// Item 17: a slider block tmm creates has its centre of mass in the JSON,
+/// at the block's joint (seed 004: block 3 at C on the guide through A,
+/// block 5 at D on the vertical guide 60 mm right of A).
+#[test]
+fn slider_blocks_have_their_mass_centre() {
+    let (c, out, e) = run(&["linkage", &example("seed-004-two-sliders.toml"), "--at", "40", "--json"]);
+    assert_eq!(c, 0, "{e}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let row = &v["positions"][0];
+    for (link, point) in [("3", "C"), ("5", "D")] {
+        let s = &row["links"][link]["mass_center"];
+        let p = &row["points"][point];
+        for k in ["x", "y", "vx", "vy"] {
+            let (a, b) = (s[k].as_f64().unwrap(), p[k].as_f64().unwrap());
+            assert!((a - b).abs() < 1e-12, "link {link} {k}: {a} vs {point} {b}");
+        }
+    }
+    assert!(row["links"]["3"]["mass_center"]["y"].as_f64().unwrap().abs() < 1e-12);
+    assert!((row["links"]["5"]["mass_center"]["x"].as_f64().unwrap() - 0.06).abs() < 1e-12);
+}

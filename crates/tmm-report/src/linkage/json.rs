@@ -18,9 +18,13 @@ fn row_json(l: &Loaded, r: &Row) -> Value {
     let mut links = Map::new();
     for (i, n) in m.link_names.iter().enumerate().skip(1) {
         let s = &r.sol.links[i];
+        // every link's centre of mass, slider blocks made by tmm included (the
+        // point the kinetostatics loads with m·a_S)
+        let c = m.mass_center(&r.sol, i);
         links.insert(
             n.clone(),
-            json!({"angle": num(s.angle()), "omega": num(s.omega), "epsilon": num(s.eps)}),
+            json!({"angle": num(s.angle()), "omega": num(s.omega), "epsilon": num(s.eps),
+                "mass_center": {"x": num(c.p.x), "y": num(c.p.y), "vx": num(c.v.x), "vy": num(c.v.y), "ax": num(c.a.x), "ay": num(c.a.y)}}),
         );
     }
     let mut pa = Map::new();
