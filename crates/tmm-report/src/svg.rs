@@ -264,8 +264,16 @@ impl Canvas {
         if !finite(&[a.0, a.1, b.0, b.1]) {
             return;
         }
-        let (x1, y1) = self.to_paper(a.0, a.1);
-        let (x2, y2) = self.to_paper(b.0, b.1);
+        let p1 = self.to_paper(a.0, a.1);
+        let p2 = self.to_paper(b.0, b.1);
+        self.arrow_paper(p1, p2, s, head_mm);
+    }
+
+    /// An arrow on paper coordinates (mm from the top-left corner).
+    pub fn arrow_paper(&mut self, (x1, y1): (f64, f64), (x2, y2): (f64, f64), s: Style, head_mm: f64) {
+        if !finite(&[x1, y1, x2, y2]) {
+            return;
+        }
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = (dx * dx + dy * dy).sqrt();
         let _ = writeln!(
@@ -382,6 +390,32 @@ pub struct Series<'a> {
 /// paper: the kinematic diagrams, the balancing torque over the cycle, the
 /// specific sliding, the motion laws.
 pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], width: f64, height: f64) -> String {
+    plot_with_impulses(title, xlabel, ylabel, series, &[], width, height)
+}
+
+/// An impulse (a Dirac δ of the plotted quantity) at `x`, as the course marks
+/// a jump of the next lower quantity: an arrow from the zero line to the edge
+/// of the plot, up for a positive weight, with its label.
+#[derive(Debug, Clone)]
+pub struct Impulse {
+    /// Where, in the x-axis' units.
+    pub x: f64,
+    /// The sign and size of the jump that causes it.
+    pub weight: f64,
+    /// The label, e.g. `Δa = +0.52 m/s²`.
+    pub label: String,
+}
+
+/// [`plot`] with impulses marked as arrows.
+pub fn plot_with_impulses(
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[Series<'_>],
+    impulses: &[Impulse],
+    width: f64,
+    height: f64,
+) -> String {
     let mut c = Canvas::new(width, height);
     let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     for s in series {
@@ -402,6 +436,14 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
     }
     if (xmax - xmin) < 1e-300 {
         xmax = xmin + 1.0;
+    }
+    // room for the impulses' arrows on their side of the zero line
+    let reach = ymax.abs().max(ymin.abs());
+    if impulses.iter().any(|i| i.weight < 0.0) {
+        ymin = ymin.min(-reach);
+    }
+    if impulses.iter().any(|i| i.weight > 0.0) {
+        ymax = ymax.max(reach);
     }
     let yt = Ticks::new(ymin, ymax, 6);
     let xt = Ticks::new(xmin, xmax, 8);
@@ -481,6 +523,21 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
             );
             c.text_paper((width - 40.0, ly), s.name, 2.8, Anchor::Start, "#000");
         }
+    }
+    for (k, imp) in impulses.iter().enumerate() {
+        if !(imp.x.is_finite() && imp.weight.is_finite()) || imp.weight == 0.0 {
+            continue;
+        }
+        let (xp, y0) = map(imp.x, 0.0f64.clamp(yt0, yt1));
+        let yend = if imp.weight > 0.0 { map(imp.x, yt1).1 } else { map(imp.x, yt0).1 };
+        c.arrow_paper((xp, y0), (xp, yend), Style::THIN.colored("#6a1b9a").widened(0.35), 2.0);
+        // labels alternate sides and heights so neighbours do not collide
+        let dy = if imp.weight > 0.0 {
+            3.0 + 3.2 * (k % 3) as f64
+        } else {
+            -1.0 - 3.2 * (k % 3) as f64
+        };
+        c.text_paper((xp + 1.0, yend + dy), &imp.label, 2.2, Anchor::Start, "#6a1b9a");
     }
     c.finish()
 }

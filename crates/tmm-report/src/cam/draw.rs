@@ -8,7 +8,9 @@ use tmm_cams::mechanism::Mechanism;
 use tmm_cams::sizing;
 use tmm_geom::Vec2;
 
-use crate::svg::{Anchor, Canvas, Series, Style, plot};
+use tmm_cams::program::{JumpKind, Motion};
+
+use crate::svg::{Anchor, Canvas, Impulse, Series, Style, plot, plot_with_impulses};
 
 /// Put several whole SVG documents one under another in one page.
 fn stack(docs: &[String], w: f64, h: f64) -> String {
@@ -30,21 +32,17 @@ fn stack(docs: &[String], w: f64, h: f64) -> String {
 }
 
 /// s, ds/dφ, d²s/dφ² over the cam angle (degrees; mm or degrees).
-pub fn analogs(task: &CamTask, d: &CamDesign) -> String {
+pub fn analogs(task: &CamTask) -> String {
     let osc = task.follower.oscillating();
     let k = if osc { 180.0 / std::f64::consts::PI } else { 1e3 };
     let u = if osc { "deg" } else { "mm" };
-    let p = &d.profile;
-    // one full turn: the first point again at 360°
-    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
-        (0..p.phi.len())
-            .map(|i| (p.phi[i].to_degrees(), f(i)))
-            .chain([(360.0, f(0))])
-            .collect()
-    };
-    let s = pts(&|i| p.motion[i].s * k);
-    let v = pts(&|i| p.motion[i].v * k);
-    let a = pts(&|i| p.motion[i].a * k);
+    // one closed turn with both sides of every jump, ending at 360° with the
+    // last phase's value (no false spike at the wrap)
+    let diag = task.program.diagram(720);
+    let pts = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> { diag.iter().map(|(phi, m)| (phi.to_degrees(), f(m))).collect() };
+    let s = pts(&|m| m.s * k);
+    let v = pts(&|m| m.v * k);
+    let a = pts(&|m| m.a * k);
     let (w, h) = (200.0, 80.0);
     stack(
         &[
@@ -91,23 +89,41 @@ pub fn analogs(task: &CamTask, d: &CamDesign) -> String {
 }
 
 /// s, v, a, jerk over time for the cam's ω.
-pub fn motion(task: &CamTask, d: &CamDesign) -> String {
+pub fn motion(task: &CamTask) -> String {
     let osc = task.follower.oscillating();
     let w = task.omega;
-    let p = &d.profile;
-    let turn = std::f64::consts::TAU / w * 1e3;
-    let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
-        (0..p.phi.len()).map(|i| (p.phi[i] / w * 1e3, f(i))).chain([(turn, f(0))]).collect()
-    };
-    let s = pts(&|i| p.motion[i].s * if osc { 1.0 } else { 1e3 });
-    let v = pts(&|i| p.motion[i].v * w);
-    let a = pts(&|i| p.motion[i].a * w * w);
-    let j = pts(&|i| p.motion[i].j * w * w * w);
+    let diag = task.program.diagram(720);
+    let ms = |phi: f64| phi / w * 1e3;
+    let pts = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> { diag.iter().map(|(phi, m)| (ms(*phi), f(m))).collect() };
+    let s = pts(&|m| m.s * if osc { 1.0 } else { 1e3 });
+    let v = pts(&|m| m.v * w);
+    let a = pts(&|m| m.a * w * w);
+    let j = pts(&|m| m.j * w * w * w);
     let (su, vu, au, ju) = if osc {
         ("rad", "rad/s", "rad/s²", "rad/s³")
     } else {
         ("mm", "m/s", "m/s²", "m/s³")
     };
+    // a jump of velocity is an impulse of acceleration (rigid impact), a jump
+    // of acceleration an impulse of jerk (soft impact): marked as the course does
+    let jumps = task.program.jumps();
+    let impulses = |kind: JumpKind, scale: f64, unit: &str| -> Vec<Impulse> {
+        jumps
+            .iter()
+            .filter(|x| x.kind == kind)
+            .map(|x| Impulse {
+                x: ms(x.phi),
+                weight: x.size(),
+                label: format!(
+                    "{} = {:+.3} {unit}",
+                    if kind == JumpKind::Velocity { "Δv" } else { "Δa" },
+                    x.size() * scale
+                ),
+            })
+            .collect()
+    };
+    let a_imp = impulses(JumpKind::Velocity, w, vu);
+    let j_imp = impulses(JumpKind::Acceleration, w * w, au);
     let (pw, ph) = (200.0, 70.0);
     stack(
         &[
@@ -135,8 +151,8 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
                 pw,
                 ph,
             ),
-            plot(
-                "Follower acceleration",
+            plot_with_impulses(
+                "Follower acceleration (arrows: impulses where the velocity jumps)",
                 "time t, ms",
                 &format!("a, {au}"),
                 &[Series {
@@ -144,11 +160,12 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
                     points: &a,
                     color: "#c62828",
                 }],
+                &a_imp,
                 pw,
                 ph,
             ),
-            plot(
-                "Follower jerk",
+            plot_with_impulses(
+                "Follower jerk (arrows: impulses where the acceleration jumps)",
                 "time t, ms",
                 &format!("j, {ju}"),
                 &[Series {
@@ -156,6 +173,7 @@ pub fn motion(task: &CamTask, d: &CamDesign) -> String {
                     points: &j,
                     color: "#6a1b9a",
                 }],
+                &j_imp,
                 pw,
                 ph,
             ),

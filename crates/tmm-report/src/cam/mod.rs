@@ -39,8 +39,8 @@ pub fn solve(task: &CamTask, r0: Option<f64>, loc: &Locate<'_>) -> Result<CamDes
 /// (`"cam/"` gives `cam/cam.svg`, …).
 pub fn drawings(task: &CamTask, d: &CamDesign, dir: &str, docs: &mut Documents) -> Result<(), Error> {
     docs.add_text(format!("{dir}cam.svg"), draw::cam(task, d))?;
-    docs.add_text(format!("{dir}cam-analogs.svg"), draw::analogs(task, d))?;
-    docs.add_text(format!("{dir}cam-motion.svg"), draw::motion(task, d))?;
+    docs.add_text(format!("{dir}cam-analogs.svg"), draw::analogs(task))?;
+    docs.add_text(format!("{dir}cam-motion.svg"), draw::motion(task))?;
     docs.add_text(format!("{dir}cam-pressure.svg"), draw::pressure(task, d))?;
     docs.add_text(format!("{dir}cam-sizing.svg"), draw::sizing_diagram(task, d))?;
     Ok(())
