@@ -372,3 +372,25 @@ fn slider_blocks_have_their_mass_centre() {
     assert!(row["links"]["3"]["mass_center"]["y"].as_f64().unwrap().abs() < 1e-12);
     assert!((row["links"]["5"]["mass_center"]["x"].as_f64().unwrap() - 0.06).abs() < 1e-12);
 }
+
+/// Items 9 and 15: an empty slider link and a speed out of range are located
+/// at the value the user wrote.
+#[test]
+fn linkage_values_are_located() {
+    let dir = tempdir("linkloc");
+    let f = dir.join("t.toml");
+    let text = std::fs::read_to_string(example("seed-004-two-sliders.toml")).unwrap();
+    let bad = text.replacen("link = \"3\"", "link = \"\"", 1);
+    let line = bad.lines().position(|l| l == "link = \"\"").unwrap() + 1;
+    std::fs::write(&f, &bad).unwrap();
+    let (c, _, e) = run(&["linkage", f.to_str().unwrap()]);
+    assert_eq!(c, 2);
+    assert!(e.contains(&format!("t.toml:{line}:8: linkage.sliders[0].link")), "{e}");
+    let bad = text.replacen("40.82 rad/s", "1e300 rpm", 1);
+    let line = bad.lines().position(|l| l.contains("1e300 rpm")).unwrap() + 1;
+    std::fs::write(&f, &bad).unwrap();
+    let (c, _, e) = run(&["linkage", f.to_str().unwrap()]);
+    assert_eq!(c, 2);
+    assert!(e.contains(&format!("t.toml:{line}:")) && e.contains("linkage.input.speed"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -30,21 +30,29 @@ pub struct Loaded {
 
 /// Turn a core error into a located input error.
 pub fn locate(src: &TaskSource, t: &LinkageTask, e: &LinkageError) -> Error {
-    let (field, span) = match e {
-        LinkageError::Description { field, .. } => {
+    // The core names the field of a description or range error; find where
+    // the user wrote it (the field, the field without `.length`, or its
+    // first two parts).
+    let core_field = match e {
+        LinkageError::Description { field, .. } | LinkageError::Range { field, .. } => Some(field.as_str()),
+        _ => None,
+    };
+    let (field, span) = match core_field {
+        Some(field) => {
             let key = field.trim_end_matches(".length");
             let span = t
                 .spans
-                .get(field.as_str())
+                .get(field)
                 .or_else(|| t.spans.get(key))
                 .or_else(|| t.spans.get(field.split('.').take(2).collect::<Vec<_>>().join(".").as_str()))
                 .cloned();
             (format!("linkage.{field}"), span)
         }
-        _ => ("linkage".to_string(), None),
+        None => ("linkage".to_string(), None),
     };
     let msg = match e {
         LinkageError::Description { message, .. } => message.clone(),
+        LinkageError::Range { value, range, why, .. } => format!("{value} is outside the accepted range {range}{why}"),
         other => other.to_string(),
     };
     let err = Error::at(src, span.unwrap_or(t.section.clone()), &field, msg);

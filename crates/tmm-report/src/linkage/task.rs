@@ -297,6 +297,12 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         spans.insert(format!("sliders[{i}].guide.link"), s.guide.get_ref().link.span());
         spans.insert(format!("sliders[{i}].guide"), s.guide.span());
         let sl = s.link.get_ref().clone();
+        if sl.trim().is_empty() {
+            return Err(
+                Error::at(task, s.link.span(), &format!("{field}.link"), "the slider's link needs a name")
+                    .with_help("the name of the slider block, e.g. link = \"3\" (a new block is made when no link has that name)"),
+            );
+        }
         if !def.links.iter().any(|l| l.name == sl) {
             def.links.push(LinkDef::block(&sl, s.point.get_ref()));
         }
