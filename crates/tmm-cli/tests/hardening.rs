@@ -386,7 +386,7 @@ fn linkage_values_are_located() {
     let (c, _, e) = run(&["linkage", f.to_str().unwrap()]);
     assert_eq!(c, 2);
     assert!(e.contains(&format!("t.toml:{line}:8: linkage.sliders[0].link")), "{e}");
-    let bad = text.replacen("40.82 rad/s", "1e300 rpm", 1);
+    let bad = text.replacen("speed = \"40.82 rad/s\"", "speed = \"1e300 rpm\"", 1);
     let line = bad.lines().position(|l| l.contains("1e300 rpm")).unwrap() + 1;
     std::fs::write(&f, &bad).unwrap();
     let (c, _, e) = run(&["linkage", f.to_str().unwrap()]);
