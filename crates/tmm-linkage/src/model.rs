@@ -64,6 +64,25 @@ pub struct InputDef {
     pub epsilon: f64,
 }
 
+impl InputDef {
+    /// A crank `link` turning uniformly about `pivot` at `omega` (rad/s,
+    /// > 0 counter-clockwise), its angle measured towards `pin`.
+    ///
+    /// ```
+    /// let i = tmm_linkage::InputDef::crank("1", "O", "A", 94.2);
+    /// assert_eq!((i.pin.as_str(), i.omega, i.epsilon), ("A", 94.2, 0.0));
+    /// ```
+    pub fn crank(link: &str, pivot: &str, pin: &str, omega: f64) -> Self {
+        InputDef {
+            link: link.into(),
+            pivot: pivot.into(),
+            pin: pin.into(),
+            omega,
+            epsilon: 0.0,
+        }
+    }
+}
+
 /// Where a point should be at assembly, to choose the branch (вариант сборки).
 #[derive(Debug, Clone, PartialEq)]
 pub enum HintKind {

@@ -143,13 +143,7 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
             LinkDef::bar("2", "A", "B", b.l2),
             LinkDef::bar("3", "C", "B", b.l3),
         ],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![AssemblyHint {
             point: "B".into(),
             kind: HintKind::Near(c_ext),

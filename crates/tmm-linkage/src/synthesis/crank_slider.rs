@@ -358,13 +358,7 @@ fn build(
             angle: 0.0,
             angle_on_slider: 0.0,
         }],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![AssemblyHint {
             point: "B".into(),
             kind: HintKind::Near(b_ext),
@@ -514,13 +508,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
             angle: 0.0,
             angle_on_slider: 0.0,
         }],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![AssemblyHint {
             point: "B".into(),
             kind: HintKind::Near(b_ext),

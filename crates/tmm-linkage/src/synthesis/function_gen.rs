@@ -134,13 +134,7 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
             LinkDef::bar("2", "A", "B", b),
             LinkDef::bar("3", "C", "B", lc),
         ],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![AssemblyHint {
             point: "B".into(),
             kind: HintKind::Near(b_first),

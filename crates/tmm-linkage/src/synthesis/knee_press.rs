@@ -156,13 +156,7 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
             angle: FRAC_PI_2,
             angle_on_slider: 0.0,
         }],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![
             AssemblyHint {
                 point: "B".into(),

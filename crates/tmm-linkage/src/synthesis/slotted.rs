@@ -170,13 +170,7 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
                 angle_on_slider: 0.0,
             },
         ],
-        input: Some(InputDef {
-            link: "1".into(),
-            pivot: "O".into(),
-            pin: "A".into(),
-            omega,
-            epsilon: 0.0,
-        }),
+        input: Some(InputDef::crank("1", "O", "A", omega)),
         hints: vec![
             AssemblyHint {
                 point: "C".into(),
