@@ -159,6 +159,26 @@ pub(crate) fn push_unit(s: &mut String, unit: &str) {
     s.push_str(unit);
 }
 
+/// A number as a fragment of typst math (for [`crate::Block::Formula`]):
+/// quoted as text, so the decimal comma is not read as math punctuation, and
+/// `"1,5" dot 10^(−7)` for a power of ten.
+///
+/// ```
+/// use tmm_note::{Lang, number::math_number};
+/// assert_eq!(math_number(12.3456, 4, Lang::Ru).unwrap(), "\"12,35\"");
+/// assert_eq!(math_number(1.5e-7, 2, Lang::En).unwrap(), "\"1.5\" dot 10^(\u{2212}7)");
+/// ```
+///
+/// # Errors
+/// As [`format_number`].
+pub fn math_number(value: f64, digits: u8, lang: Lang) -> Result<String, NoteError> {
+    let f = format_number(value, digits, lang)?;
+    Ok(match f.exponent {
+        None => format!("\"{}\"", f.mantissa),
+        Some(e) => format!("\"{}\" dot 10^({})", f.mantissa, e.to_string().replace('-', "\u{2212}")),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -169,8 +189,8 @@ mod tests {
 
     #[test]
     fn significant_digits_and_comma() {
-        assert_eq!(ru(3.14159265, 3), "3,14");
-        assert_eq!(ru(3.14159265, 1), "3");
+        assert_eq!(ru(3.14659, 3), "3,15");
+        assert_eq!(ru(3.14659, 1), "3");
         assert_eq!(ru(0.5, 3), "0,500");
         assert_eq!(ru(100.0, 3), "100");
         assert_eq!(ru(100.0, 4), "100,0");

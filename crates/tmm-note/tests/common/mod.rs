@@ -197,8 +197,9 @@ fn body_sections(lang: Lang, w: &Words, copies: usize) -> Vec<Section> {
         }
         let mut s2 = Section::new(w.kinematics);
         let mut s21 = Section::new(w.velocities);
+        let vb = tmm_note::number::math_number(12.3456, 4, lang).expect("a finite number");
         s21.blocks.push(Block::Formula {
-            typst_math: "v_B = omega_1 l_(O A) = 12.35 \"м/с\"".into(),
+            typst_math: format!("v_B = omega_1 l_(O A) = {vb} \"м/с\""),
             label: Some(tag("eq-vb")),
         });
         s21.blocks.push(Block::Paragraph(
@@ -276,7 +277,6 @@ fn body_sections(lang: Lang, w: &Words, copies: usize) -> Vec<Section> {
         sections.push(s1);
         sections.push(s2);
     }
-    let _ = lang;
     sections
 }
 
