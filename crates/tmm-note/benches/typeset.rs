@@ -1,4 +1,4 @@
-//! Typesetting speed of a ~30-page note (three copies of the sample's body
+//! Typesetting speed of a ~30-page note (eight copies of the sample's body
 //! sections, with the frame): the target is well under 2 s, so that a whole
 //! `tmm run` with its note stays under 3 s.
 
@@ -13,7 +13,7 @@ fn main() {
 
 #[divan::bench(sample_count = 5, sample_size = 1)]
 fn thirty_pages_ru_frame(bencher: divan::Bencher) {
-    let note = common::sample_note(Lang::Ru, true, 3);
+    let note = common::sample_note(Lang::Ru, true, 8);
     bencher.bench(|| {
         // Forget typst's memoized results: each run compiles from scratch, as
         // a one-shot `tmm run` does (only the fonts stay parsed).

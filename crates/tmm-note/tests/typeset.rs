@@ -266,3 +266,9 @@ fn the_output_is_reproducible() {
     let note = sample_note(Lang::Uk, true, 1);
     assert_eq!(typeset(&note).unwrap(), typeset(&note).unwrap());
 }
+
+#[test]
+fn the_benchmark_note_is_about_thirty_pages() {
+    let (_, pages) = strict(&sample_note(Lang::Ru, true, 8));
+    assert!((25..=40).contains(&pages), "{pages} pages");
+}

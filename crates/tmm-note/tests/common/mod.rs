@@ -281,7 +281,7 @@ fn body_sections(lang: Lang, w: &Words, copies: usize) -> Vec<Section> {
 }
 
 /// The sample note in `lang`; `copies` repeats the body sections (1 gives
-/// about 12 pages, 3 about 30).
+/// 8 pages, 8 about 30).
 pub fn sample_note(lang: Lang, frame: bool, copies: usize) -> Note {
     let w = words(lang);
     let mut appendix = Section::new(w.appendix);
