@@ -118,6 +118,28 @@ fn a_name_with_markup_characters_typesets_literally() {
     let text = pdf_text(&pdf);
     assert_contains(&text, &["O'Brien #1 *bold* $x$ _u_ @me <tag> [b] \\n"]);
     assert_eq!(TRICKY_NAME, "O'Brien #1 *bold* $x$ _u_ @me <tag> [b] \\n");
+    // The same characters in a heading, a caption, a table header, a list
+    // item and a source.
+    let mut s = Section::new(format!("H {TRICKY_NAME}"));
+    s.blocks.push(Block::Table {
+        caption: format!("C {TRICKY_NAME}"),
+        header: vec![format!("T {TRICKY_NAME}")],
+        rows: vec![vec![tmm_note::Cell::Text(Text::plain("= - + / ~ ` ' \" -- ..."))]],
+        units: vec![],
+        label: None,
+    });
+    s.blocks.push(Block::List(vec![Text::plain(format!("L {TRICKY_NAME}"))]));
+    let note = Note {
+        sections: vec![s],
+        sources: vec![format!("S {TRICKY_NAME}")],
+        ..Note::default()
+    };
+    let (pdf, _) = strict(&note);
+    let text = pdf_text(&pdf);
+    for prefix in ["H", "C", "T", "L", "S"] {
+        assert_contains(&text, &[&format!("{prefix} {TRICKY_NAME}")]);
+    }
+    assert_contains(&text, &["= - + / ~ ` ' \" -- ..."]);
 }
 
 #[test]
