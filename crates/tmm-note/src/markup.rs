@@ -1,0 +1,336 @@
+//! The generated typst source `/main.typ` of a [`Note`].
+//!
+//! The layout lives in `template.typ`; this module only writes calls to it
+//! and the content, with every caller string as a typst string literal
+//! ([`crate::escape::string_literal`]). Before writing, the note is checked:
+//! labels valid and unique, references and citations resolvable, numbers
+//! finite, tables rectangular, figure widths sane — so a bad note is a typed
+//! [`NoteError`], never a typst error message.
+
+use std::collections::HashSet;
+use std::fmt::Write as _;
+
+use crate::error::NoteError;
+use crate::escape::{check_label, check_math, string_literal};
+use crate::model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
+use crate::number::{format_number, push_unit};
+use crate::translation::Translation;
+
+/// The generated source and the virtual files it refers to.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Generated {
+    /// The text of `/main.typ`.
+    pub main: String,
+    /// The figures: (virtual path, SVG document).
+    pub figures: Vec<(String, String)>,
+}
+
+/// Writes `/main.typ` for `note` with the words of `tr`.
+///
+/// # Errors
+/// Any [`NoteError`] of the checks listed in the module's header.
+pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
+    let labels = collect_labels(note)?;
+    let letters = tr.appendix_letters().len();
+    if note.appendices.len() > letters {
+        return Err(NoteError::TooManyAppendices {
+            count: note.appendices.len(),
+            letters,
+        });
+    }
+    let mut w = Writer {
+        lang: note.lang,
+        labels: &labels,
+        sources: note.sources.len(),
+        out: String::new(),
+        figures: Vec::new(),
+    };
+    w.out.push_str("#import \"/template.typ\": note, sources, appendices, svg-figure\n");
+    w.out.push_str("#let tr = (\n");
+    for (k, v) in tr.iter() {
+        let _ = writeln!(w.out, "  {k}: {},", string_literal(v));
+    }
+    w.out.push_str(")\n");
+    w.out.push_str("#show: note.with(\n  tr: tr,\n");
+    let _ = writeln!(w.out, "  lang: {},", string_literal(note.lang.code()));
+    let _ = writeln!(w.out, "  frame: {},", note.frame);
+    write_project(&mut w.out, &note.project);
+    if !note.assignment.is_empty() {
+        w.out.push_str("  assignment: [\n");
+        for b in &note.assignment {
+            w.block(b)?;
+        }
+        w.out.push_str("  ],\n");
+    }
+    w.out.push_str(")\n\n");
+    for s in &note.sections {
+        w.section(s, 1)?;
+    }
+    if !note.sources.is_empty() {
+        w.out.push_str("#sources(tr, (\n");
+        for s in &note.sources {
+            let _ = writeln!(w.out, "  {},", string_literal(s));
+        }
+        w.out.push_str("))\n\n");
+    }
+    if !note.appendices.is_empty() {
+        w.out.push_str("#show: appendices.with(tr)\n\n");
+        for s in &note.appendices {
+            w.section(s, 1)?;
+        }
+    }
+    Ok(Generated {
+        main: w.out,
+        figures: w.figures,
+    })
+}
+
+fn write_project(out: &mut String, p: &ProjectInfo) {
+    out.push_str("  project: (\n");
+    let fields = [
+        ("university", &p.university),
+        ("department", &p.department),
+        ("student", &p.student),
+        ("group", &p.group),
+        ("teacher", &p.teacher),
+        ("variant", &p.variant),
+        ("city", &p.city),
+        ("year", &p.year),
+        ("title", &p.title),
+        ("designation", &p.designation),
+    ];
+    for (k, v) in fields {
+        let _ = writeln!(out, "    {k}: {},", string_literal(v));
+    }
+    out.push_str("  ),\n");
+}
+
+/// Every label of the note, checked for validity and uniqueness.
+fn collect_labels(note: &Note) -> Result<HashSet<String>, NoteError> {
+    fn blocks(bs: &[Block], set: &mut HashSet<String>) -> Result<(), NoteError> {
+        for b in bs {
+            let label = match b {
+                Block::Formula { label, .. } | Block::Table { label, .. } | Block::Figure { label, .. } => label,
+                _ => &None,
+            };
+            if let Some(l) = label {
+                check_label(l)?;
+                if !set.insert(l.clone()) {
+                    return Err(NoteError::DuplicateLabel { label: l.clone() });
+                }
+            }
+        }
+        Ok(())
+    }
+    fn sections(ss: &[Section], set: &mut HashSet<String>) -> Result<(), NoteError> {
+        for s in ss {
+            blocks(&s.blocks, set)?;
+            sections(&s.subsections, set)?;
+        }
+        Ok(())
+    }
+    let mut set = HashSet::new();
+    blocks(&note.assignment, &mut set)?;
+    sections(&note.sections, &mut set)?;
+    sections(&note.appendices, &mut set)?;
+    Ok(set)
+}
+
+struct Writer<'a> {
+    lang: Lang,
+    labels: &'a HashSet<String>,
+    sources: usize,
+    out: String,
+    figures: Vec<(String, String)>,
+}
+
+impl Writer<'_> {
+    fn section(&mut self, s: &Section, level: usize) -> Result<(), NoteError> {
+        let _ = writeln!(self.out, "#heading(level: {level}, {})\n", string_literal(&s.title));
+        for b in &s.blocks {
+            self.block(b)?;
+        }
+        for sub in &s.subsections {
+            self.section(sub, level + 1)?;
+        }
+        Ok(())
+    }
+
+    fn label(&mut self, label: &Option<String>) {
+        if let Some(l) = label {
+            let _ = write!(self.out, " <{l}>");
+        }
+        self.out.push_str("\n\n");
+    }
+
+    fn block(&mut self, b: &Block) -> Result<(), NoteError> {
+        match b {
+            Block::Paragraph(t) => {
+                self.text(t)?;
+                self.out.push_str("\n\n");
+            }
+            Block::Formula { typst_math, label } => {
+                check_math(typst_math)?;
+                let _ = write!(self.out, "$ {} $", typst_math.trim());
+                self.label(label);
+            }
+            Block::Table {
+                caption,
+                header,
+                rows,
+                units,
+                label,
+            } => {
+                self.table(caption, header, rows, units)?;
+                self.label(label);
+            }
+            Block::Figure {
+                caption,
+                svg,
+                width_mm,
+                label,
+            } => {
+                if !(width_mm.is_finite() && (1.0..=1000.0).contains(width_mm)) {
+                    return Err(NoteError::FigureWidth {
+                        caption: caption.clone(),
+                        width_mm: *width_mm,
+                    });
+                }
+                let path = format!("/fig-{}.svg", self.figures.len() + 1);
+                let _ = write!(
+                    self.out,
+                    "#svg-figure({}, {}mm, {})",
+                    string_literal(&path),
+                    width_mm,
+                    string_literal(caption)
+                );
+                self.figures.push((path, svg.clone()));
+                self.label(label);
+            }
+            Block::List(items) => {
+                self.out.push_str("#list(\n");
+                for item in items {
+                    self.out.push_str("  [");
+                    self.text(item)?;
+                    self.out.push_str("],\n");
+                }
+                self.out.push_str(")\n\n");
+            }
+        }
+        Ok(())
+    }
+
+    fn table(&mut self, caption: &str, header: &[String], rows: &[Vec<Cell>], units: &[String]) -> Result<(), NoteError> {
+        let n = header.len();
+        let shape = |what: String, found: usize| NoteError::TableShape {
+            caption: caption.to_owned(),
+            what,
+            found,
+            expected: n,
+        };
+        if !units.is_empty() && units.len() != n {
+            return Err(shape("units".into(), units.len()));
+        }
+        if let Some((i, r)) = rows.iter().enumerate().find(|(_, r)| r.len() != n) {
+            return Err(shape(format!("row {}", i + 1), r.len()));
+        }
+        let _ = write!(
+            self.out,
+            "#figure(kind: table, caption: {}, table(columns: {n},\n  table.header(",
+            string_literal(caption)
+        );
+        for (i, h) in header.iter().enumerate() {
+            let mut head = h.clone();
+            if let Some(u) = units.get(i).filter(|u| !u.is_empty()) {
+                head.push_str(", ");
+                head.push_str(u);
+            }
+            let _ = write!(self.out, "{}, ", string_literal(&head));
+        }
+        self.out.push_str("),\n");
+        for row in rows {
+            self.out.push_str("  ");
+            for c in row {
+                match c {
+                    Cell::Text(t) => {
+                        self.out.push('[');
+                        self.text(t)?;
+                        self.out.push_str("], ");
+                    }
+                    Cell::Number { value, digits } => {
+                        self.out.push('[');
+                        self.number(*value, *digits, "")?;
+                        self.out.push_str("], ");
+                    }
+                    Cell::Empty => self.out.push_str("[], "),
+                }
+            }
+            self.out.push('\n');
+        }
+        self.out.push_str("))");
+        Ok(())
+    }
+
+    fn number(&mut self, value: f64, digits: u8, unit: &str) -> Result<(), NoteError> {
+        let f = format_number(value, digits, self.lang)?;
+        let mut tail = String::new();
+        push_unit(&mut tail, unit);
+        match f.exponent {
+            None => {
+                let _ = write!(self.out, "#{}", string_literal(&(f.mantissa + &tail)));
+            }
+            Some(e) => {
+                let exp = e.to_string().replace('-', "\u{2212}");
+                let _ = write!(
+                    self.out,
+                    "#{}#super({})#{}",
+                    string_literal(&(f.mantissa + "·10")),
+                    string_literal(&exp),
+                    string_literal(&tail)
+                );
+            }
+        }
+        Ok(())
+    }
+
+    fn text(&mut self, t: &Text) -> Result<(), NoteError> {
+        for span in &t.0 {
+            match span {
+                Span::Plain(s) => {
+                    let _ = write!(self.out, "#{}", string_literal(s));
+                }
+                Span::Strong(s) => {
+                    let _ = write!(self.out, "#strong({})", string_literal(s));
+                }
+                Span::Emph(s) => {
+                    let _ = write!(self.out, "#emph({})", string_literal(s));
+                }
+                Span::Math(m) => {
+                    check_math(m)?;
+                    let m = m.trim();
+                    if !m.is_empty() {
+                        let _ = write!(self.out, "${m}$");
+                    }
+                }
+                Span::Number { value, digits, unit } => self.number(*value, *digits, unit)?,
+                Span::Ref(l) => {
+                    check_label(l)?;
+                    if !self.labels.contains(l) {
+                        return Err(NoteError::UnknownLabel { label: l.clone() });
+                    }
+                    let _ = write!(self.out, "#ref(<{l}>, supplement: none)");
+                }
+                Span::Cite(k) => {
+                    if *k == 0 || *k > self.sources {
+                        return Err(NoteError::UnknownSource {
+                            number: *k,
+                            count: self.sources,
+                        });
+                    }
+                    let _ = write!(self.out, "#\"[{k}]\"");
+                }
+            }
+        }
+        Ok(())
+    }
+}
