@@ -753,7 +753,20 @@ impl Mechanism {
             return Err(first_err.unwrap_or_else(|| LinkageError::Structure("no assembly found".into())));
         };
         if score >= 1e6 {
-            let h: Vec<String> = def.hints.iter().map(|h| format!("{} {:?}", h.point, h.kind)).collect();
+            let h: Vec<String> = def
+                .hints
+                .iter()
+                .map(|h| {
+                    let k = match &h.kind {
+                        HintKind::Above(a, b) => format!("above line {a}-{b}"),
+                        HintKind::Below(a, b) => format!("below line {a}-{b}"),
+                        HintKind::LeftOf(a, b) => format!("left of line {a}-{b}"),
+                        HintKind::RightOf(a, b) => format!("right of line {a}-{b}"),
+                        HintKind::Near(p) => format!("near ({:.6} m, {:.6} m)", p.x, p.y),
+                    };
+                    format!("{} {k}", h.point)
+                })
+                .collect();
             return Err(LinkageError::desc(
                 "assembly",
                 format!(

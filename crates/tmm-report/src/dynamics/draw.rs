@@ -245,9 +245,9 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
         false,
         xs,
     );
-    ch.hline(mo.omega_max, RED, &format!("ω_max = {:.4}", mo.omega_max));
-    ch.hline(mo.omega_mean, GREY, &format!("ω_m = {:.4}", mo.omega_mean));
-    ch.hline(mo.omega_min, BLUE, &format!("ω_min = {:.4}", mo.omega_min));
+    ch.hline(mo.omega_max, RED, &format!("ω_max = {:.4} rad/s", mo.omega_max));
+    ch.hline(mo.omega_mean, GREY, &format!("ω_m = {:.4} rad/s", mo.omega_mean));
+    ch.hline(mo.omega_min, BLUE, &format!("ω_min = {:.4} rad/s", mo.omega_min));
     ch.curve(&xy(&mo.omega), GREEN, "ω₁", None);
     docs.add_text(format!("{prefix}omega.svg"), ch.finish())?;
 
@@ -269,7 +269,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
         let xr = range(pts.iter().map(|p| p.0));
         let yr = range(pts.iter().map(|p| p.1));
         let mut ch = Chart::new("Run-up from rest with the motor: ω₁(t)", "t, s", "ω₁, rad/s", xr, yr, true, None);
-        ch.hline(r.steady.omega_mean, GREY, &format!("steady ω_m = {:.3}", r.steady.omega_mean));
+        ch.hline(r.steady.omega_mean, GREY, &format!("steady ω_m = {:.3} rad/s", r.steady.omega_mean));
         ch.curve(&pts, GREEN, "ω₁(t)", None);
         let (a, b) = (ch.map(r.time, ch.y0), ch.map(r.time, ch.y1));
         ch.c.line(a, b, Style::DASHED.colored(RED));
@@ -301,16 +301,18 @@ fn wittenbauer(d: &Dynamics) -> String {
     ch.curve(&pts, GREEN, "ΔT(I_II)", None);
     for (t, color, name) in [(&w.upper, RED, "ω_max²/2"), (&w.lower, BLUE, "ω_min²/2")] {
         if let Some(seg) = clip(t.slope, t.intercept, (ch.x0, ch.x1, ch.y0, ch.y1)) {
-            ch.curve(&[seg.0, seg.1], color, &format!("tangent, slope {name} = {:.1}", t.slope), None);
+            ch.curve(&[seg.0, seg.1], color, &format!("{name} = {:.1} s⁻²", t.slope), None);
         }
+        // the label on the side of the tangent away from the curve: above
+        // and left of the upper one, below and right of the lower one
         let up = std::ptr::eq(t, &w.upper);
         ch.mark(
             t.inertia,
             t.energy,
             &format!("φ = {:.1}°", t.phi.to_degrees()),
             color,
-            Anchor::Start,
-            if up { 1.5 } else { -4.0 },
+            if up { Anchor::End } else { Anchor::Start },
+            if up { 2.5 } else { -4.0 },
         );
     }
     ch.note(&format!("O′ = (−I_I, −T₀) = ({:.4}, {:.1})", -d.required.wittenbauer, -w.energy_start));
