@@ -209,7 +209,10 @@ fn exact_inertia_against_the_core_on_another_grid() {
 /// masses on the shaft other than the crank: M_b = M_d − (I_I − I_crank)·ε₁.
 #[test]
 fn kinetostatics_with_the_true_crank_motion() {
-    let text = example("seed-001-fourbar.toml").replace("at = \"15 deg\"\n\n[[forces.resistance]]", "at = \"15 deg\"\ncrank_motion = \"dynamics\"\n\n[[forces.resistance]]");
+    let text = example("seed-001-fourbar.toml").replace(
+        "at = \"15 deg\"\n\n[[forces.resistance]]",
+        "at = \"15 deg\"\ncrank_motion = \"dynamics\"\n\n[[forces.resistance]]",
+    );
     assert!(text.contains("crank_motion"));
     let dir = tmp("crank-motion");
     let p = dir.join("task.toml");
@@ -226,7 +229,11 @@ fn kinetostatics_with_the_true_crank_motion() {
         let (w, e) = (f(&r["omega1"]), f(&r["epsilon1"]));
         varied = varied.max(e.abs());
         let expect = md - extra * e;
-        assert!((f(&r["balancing_moment"]) - expect).abs() < 1e-6 * md.abs(), "{} vs {expect}", r["balancing_moment"]);
+        assert!(
+            (f(&r["balancing_moment"]) - expect).abs() < 1e-6 * md.abs(),
+            "{} vs {expect}",
+            r["balancing_moment"]
+        );
         assert!(w > f(&dy["omega_min"]) * (1.0 - 1e-9) && w < f(&dy["omega_max"]) * (1.0 + 1e-9));
     }
     assert!(varied > 10.0, "the crank does accelerate");
@@ -243,7 +250,11 @@ fn motor_run_up() {
     assert!(f(&r["time"]) > 0.0 && f(&r["delta"]) > 0.0, "{r}");
     assert!((f(&d["delta"]) - 0.05).abs() < 1e-9);
     // the rim: J = ρπb(D⁴ − d⁴)/32 with d = D − 2h, h = 0.1·D, b = 0.2·D
-    let (dd, b, h) = (f(&d["flywheel"]["diameter"]), f(&d["flywheel"]["width"]), f(&d["flywheel"]["thickness"]));
+    let (dd, b, h) = (
+        f(&d["flywheel"]["diameter"]),
+        f(&d["flywheel"]["width"]),
+        f(&d["flywheel"]["thickness"]),
+    );
     assert!((b - 0.2 * dd).abs() < 1e-12 && (h - 0.1 * dd).abs() < 1e-12);
     let di = dd - 2.0 * h;
     let j = 7200.0 * std::f64::consts::PI * b * (dd.powi(4) - di.powi(4)) / 32.0;
@@ -270,7 +281,12 @@ fn tmm_run_on_the_default_task_writes_dynamics() {
     let dir = tmp("run");
     let o = tmm(&["run", "-o", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for f in ["dynamics/dynamics.json", "dynamics/dynamics.txt", "dynamics/omega.svg", "dynamics/wittenbauer.svg"] {
+    for f in [
+        "dynamics/dynamics.json",
+        "dynamics/dynamics.txt",
+        "dynamics/omega.svg",
+        "dynamics/wittenbauer.svg",
+    ] {
         assert!(dir.join(f).exists(), "{f}");
     }
     let rep: Value = serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
@@ -318,7 +334,10 @@ fn bad_inputs_exit_2_naming_the_field() {
         "[dynamics]\ndelta = 0.02\n[dynamics.motor]\nsynchronous_speed = \"1500 rpm\"\nnominal_speed = \"1400 rpm\"\nnominal_torque = \"20 N m\"\nratio = 1.5\n",
     );
     assert!(e.contains("dynamics.motor.nominal_torque") && e.contains("too weak"), "{e}");
-    let e = bad("rim", "[dynamics]\ndelta = 0.02\n[dynamics.flywheel]\nshape = \"rim\"\nthickness_ratio = 0.7\n");
+    let e = bad(
+        "rim",
+        "[dynamics]\ndelta = 0.02\n[dynamics.flywheel]\nshape = \"rim\"\nthickness_ratio = 0.7\n",
+    );
     assert!(e.contains("dynamics.flywheel.thickness_ratio"), "{e}");
     let e = bad("place", "[dynamics]\ndelta = 0.02\n[dynamics.flywheel]\nplace = \"motor\"\n");
     assert!(e.contains("dynamics.flywheel.place"), "{e}");
@@ -334,10 +353,16 @@ fn bad_inputs_exit_2_naming_the_field() {
     let e = bad_text("no-forces", &format!("{}{}", &base[..a], &base[b..]), "dynamics");
     assert!(e.contains("[forces]") && e.contains("dynamics"), "{e}");
     // crank_motion = "dynamics" without [dynamics]
-    let text = base[..b].replace("at = \"15 deg\"\n\n[[forces.resistance]]", "at = \"15 deg\"\ncrank_motion = \"dynamics\"\n\n[[forces.resistance]]");
+    let text = base[..b].replace(
+        "at = \"15 deg\"\n\n[[forces.resistance]]",
+        "at = \"15 deg\"\ncrank_motion = \"dynamics\"\n\n[[forces.resistance]]",
+    );
     let e = bad_text("no-dynamics", &text, "forces");
     assert!(e.contains("forces.crank_motion") && e.contains("[dynamics]"), "{e}");
-    let text = base.replace("at = \"15 deg\"\n\n[[forces.resistance]]", "at = \"15 deg\"\ncrank_motion = \"true\"\n\n[[forces.resistance]]");
+    let text = base.replace(
+        "at = \"15 deg\"\n\n[[forces.resistance]]",
+        "at = \"15 deg\"\ncrank_motion = \"true\"\n\n[[forces.resistance]]",
+    );
     let e = bad_text("bad-crank-motion", &text, "forces");
     assert!(e.contains("forces.crank_motion"), "{e}");
     // and `tmm run` refuses the whole run

@@ -52,17 +52,24 @@ impl Chart {
             ya = ya.min(0.0);
             yb = yb.max(0.0);
         }
-        let pad = 0.04 * (yb - ya).abs().max(1e-9 * ya.abs().max(1e-300));
-        let (ya, yb) = (ya - pad, yb + pad);
-        let yt = Ticks::new(ya, yb, 6);
+        let (ya, yb) = widened(ya, yb);
+        let pad = 0.04 * (yb - ya);
+        let yt = Ticks::new(ya - pad, yb + pad, 6);
         let (y0, y1) = (yt.value(yt.first), yt.value(yt.last));
         let (x0, x1, xticks): (f64, f64, Vec<(f64, String)>) = match xstep {
             Some(s) => {
                 let n = ((xr.1 - xr.0) / s).round() as i64;
-                (xr.0, xr.1, (0..=n).map(|i| (xr.0 + i as f64 * s, format!("{:.0}", xr.0 + i as f64 * s))).collect())
+                (
+                    xr.0,
+                    xr.1,
+                    (0..=n)
+                        .map(|i| (xr.0 + i as f64 * s, format!("{:.0}", xr.0 + i as f64 * s)))
+                        .collect(),
+                )
             }
             None => {
-                let xt = Ticks::new(xr.0, xr.1, 8);
+                let (xa, xb) = widened(xr.0, xr.1);
+                let xt = Ticks::new(xa, xb, 8);
                 (
                     xt.value(xt.first),
                     xt.value(xt.last),
@@ -178,6 +185,24 @@ impl Chart {
     }
 }
 
+/// A range of at least a millionth of its magnitude (a constant quantity,
+/// such as I_II of massless links, gets ±10 % about its value, or ±1 about
+/// zero), so that the ticks are few and finite.
+fn widened(a: f64, b: f64) -> (f64, f64) {
+    let (a, b) = if a.is_finite() && b.is_finite() {
+        (a.min(b), a.max(b))
+    } else {
+        (0.0, 1.0)
+    };
+    let mag = a.abs().max(b.abs());
+    if b - a > 1e-6 * mag && b - a > 1e-200 {
+        return (a, b);
+    }
+    let c = 0.5 * (a + b);
+    let h = if c.abs() > 1e-200 { 0.1 * c.abs() } else { 1.0 };
+    (c - h, c + h)
+}
+
 fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
     v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
 }
@@ -201,7 +226,15 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
 
     // the work and the change of kinetic energy
     let yr = range(c.work_loads.iter().chain(&c.work_driving).chain(&c.energy).copied());
-    let mut ch = Chart::new("Work of the drive A_d, of the loads A_c, and ΔT = A_d + A_c", xl, "A, ΔT, J", xr, yr, true, xs);
+    let mut ch = Chart::new(
+        "Work of the drive A_d, of the loads A_c, and ΔT = A_d + A_c",
+        xl,
+        "A, ΔT, J",
+        xr,
+        yr,
+        true,
+        xs,
+    );
     ch.curve(&xy(&c.work_driving), BLUE, "A_d", None);
     ch.curve(&xy(&c.work_loads), RED, "A_c", None);
     ch.curve(&xy(&c.energy), GREEN, "ΔT", None);
@@ -209,26 +242,64 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
 
     // the variable reduced inertia
     let yr = range(c.inertia.iter().copied());
-    let mut ch = Chart::new("Variable part of the reduced moment of inertia I_II", xl, "I_II, kg·m²", xr, yr, true, xs);
+    let mut ch = Chart::new(
+        "Variable part of the reduced moment of inertia I_II",
+        xl,
+        "I_II, kg·m²",
+        xr,
+        yr,
+        true,
+        xs,
+    );
     ch.curve(&xy(&c.inertia), PURPLE, "I_II", None);
     docs.add_text(format!("{prefix}inertia.svg"), ch.finish())?;
 
     // Merkalov's T_I and its swing
     let mk = &d.merkalov;
     let yr = range(mk.energy_constant.iter().copied().chain([mk.energy_max, mk.energy_min]));
-    let mut ch = Chart::new("Merkalov: T_I = ΔT − I_II·ω_m²/2 and its swing ΔT_I", xl, "T_I, J", xr, yr, true, xs);
+    let mut ch = Chart::new(
+        "Merkalov: T_I = ΔT − I_II·ω_m²/2 and its swing ΔT_I",
+        xl,
+        "T_I, J",
+        xr,
+        yr,
+        true,
+        xs,
+    );
     ch.curve(&xy(&mk.energy_constant), GREEN, "T_I", None);
     ch.hline(mk.energy_max, GREY, &format!("max T_I = {:.3} J", mk.energy_max));
     ch.hline(mk.energy_min, GREY, &format!("min T_I = {:.3} J", mk.energy_min));
-    let xa = 0.5 * (mk.phi_max + mk.phi_min).to_degrees();
+    // the double arrow of ΔT_I where the curve is farthest from mid-height,
+    // so that neither the arrow's label nor its shaft lies on the curve
+    let mid = 0.5 * (mk.energy_max + mk.energy_min);
+    let xa = deg
+        .iter()
+        .zip(&mk.energy_constant)
+        .filter(|(x, _)| (15.0..=345.0).contains(*x))
+        .max_by(|a, b| (a.1 - mid).abs().total_cmp(&(b.1 - mid).abs()))
+        .map_or(180.0, |(x, _)| *x);
     let (a, b) = (ch.map(xa, mk.energy_min), ch.map(xa, mk.energy_max));
     ch.c.arrow(a, b, Style::THIN.colored(RED), 2.5);
     ch.c.arrow(b, a, Style::THIN.colored(RED), 2.5);
     ch.c.text_colored((a.0 + 1.5, 0.5 * (a.1 + b.1)), "ΔT_I", 3.0, Anchor::Start, RED);
     ch.note(&format!("ΔT_I = {:.3} J", mk.energy_swing));
     ch.note(&format!("I_I = ΔT_I/(δ·ω_m²) = {:.5} kg·m²", mk.inertia));
-    ch.mark(mk.phi_max.to_degrees(), mk.energy_max, &format!("{:.1}°", mk.phi_max.to_degrees()), GREY, Anchor::Middle, 1.5);
-    ch.mark(mk.phi_min.to_degrees(), mk.energy_min, &format!("{:.1}°", mk.phi_min.to_degrees()), GREY, Anchor::Middle, -4.0);
+    ch.mark(
+        mk.phi_max.to_degrees(),
+        mk.energy_max,
+        &format!("{:.1}°", mk.phi_max.to_degrees()),
+        GREY,
+        Anchor::Start,
+        1.5,
+    );
+    ch.mark(
+        mk.phi_min.to_degrees(),
+        mk.energy_min,
+        &format!("{:.1}°", mk.phi_min.to_degrees()),
+        GREY,
+        Anchor::Start,
+        -4.0,
+    );
     docs.add_text(format!("{prefix}energy-constant.svg"), ch.finish())?;
 
     docs.add_text(format!("{prefix}wittenbauer.svg"), wittenbauer(d))?;
@@ -253,14 +324,28 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
 
     // the crank's acceleration
     let yr = range(mo.epsilon.iter().copied());
-    let mut ch = Chart::new("Crank angular acceleration ε₁(φ) with the flywheel", xl, "ε₁, rad/s²", xr, yr, true, xs);
+    let mut ch = Chart::new(
+        "Crank angular acceleration ε₁(φ) with the flywheel",
+        xl,
+        "ε₁, rad/s²",
+        xr,
+        yr,
+        true,
+        xs,
+    );
     ch.curve(&xy(&mo.epsilon), BROWN, "ε₁", None);
     docs.add_text(format!("{prefix}epsilon.svg"), ch.finish())?;
 
     if let Some(r) = &d.runup {
         let n = r.trace_time.len();
         let step = n.div_ceil(4000).max(1);
-        let mut pts: Vec<(f64, f64)> = r.trace_time.iter().copied().zip(r.trace_omega.iter().copied()).step_by(step).collect();
+        let mut pts: Vec<(f64, f64)> = r
+            .trace_time
+            .iter()
+            .copied()
+            .zip(r.trace_omega.iter().copied())
+            .step_by(step)
+            .collect();
         if let (Some(&t), Some(&w)) = (r.trace_time.last(), r.trace_omega.last())
             && pts.last() != Some(&(t, w))
         {
@@ -315,7 +400,10 @@ fn wittenbauer(d: &Dynamics) -> String {
             if up { 2.5 } else { -4.0 },
         );
     }
-    ch.note(&format!("O′ = (−I_I, −T₀) = ({:.4}, {:.1})", -d.required.wittenbauer, -w.energy_start));
+    ch.note(&format!(
+        "O′ = (−I_I, −T₀) = ({:.4}, {:.1})",
+        -d.required.wittenbauer, -w.energy_start
+    ));
     ch.note("(off the drawing)");
     ch.note(&format!("I_I = {:.5} kg·m²", d.required.wittenbauer));
     ch.finish()
@@ -333,4 +421,27 @@ fn clip(k: f64, b: f64, bx: (f64, f64, f64, f64)) -> Option<((f64, f64), (f64, f
         return None;
     }
     (lo < hi).then(|| ((lo, k * lo + b), (hi, k * hi + b)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A constant or empty quantity still gets a frame with a few finite
+    /// ticks (a massless mechanism has I_II ≡ 0).
+    #[test]
+    fn flat_data_gets_a_finite_frame() {
+        for (a, b) in [
+            (0.0, 0.0),
+            (5.0, 5.0),
+            (-1e-300, 1e-300),
+            (1e9, 1e9 + 1e-7),
+            (f64::INFINITY, f64::NEG_INFINITY),
+        ] {
+            let ch = Chart::new("t", "x", "y", (a, b), (a, b), false, None);
+            assert!(ch.y1 > ch.y0 && ch.x1 > ch.x0, "{a} {b}");
+            let svg = ch.finish();
+            assert!(svg.matches("<line").count() < 100, "{a} {b}");
+        }
+    }
 }

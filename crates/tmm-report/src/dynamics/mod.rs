@@ -23,9 +23,7 @@ pub use task::DynamicsTask;
 /// Turn a core dynamics error into a located input error.
 pub fn locate(src: &TaskSource, l: &Loaded, ft: &ForcesTask, dt: &DynamicsTask, e: &DynamicsError) -> Error {
     match e {
-        DynamicsError::Spec { field, message } => {
-            Error::at(src, dt.span_of(field), field, message).with_help(task::help_for(field))
-        }
+        DynamicsError::Spec { field, message } => Error::at(src, dt.span_of(field), field, message).with_help(task::help_for(field)),
         DynamicsError::Force(fe) => forces::locate(src, l, ft, fe),
         DynamicsError::Kinematics(k) => linkage::locate(src, &l.task, k),
         DynamicsError::NoResistance { .. } => Error::at(src, ft.section.clone(), "forces", e.to_string())
@@ -48,8 +46,7 @@ pub fn load(src: &TaskSource) -> Result<Option<(Loaded, ForcesTask, DynamicsTask
         )
         .with_help("add [forces] with the masses and the resistance, e.g. mass_per_length = \"10 kg/m\" and [[forces.resistance]] link = \"3\", moment = \"380 N m\" (see examples/seed-001-fourbar.toml)"));
     };
-    let dt = task::read(src, forces::working(l.task.working))?
-        .ok_or_else(|| Error::input(&src.name, "no [dynamics] section"))?;
+    let dt = task::read(src, forces::working(l.task.working))?.ok_or_else(|| Error::input(&src.name, "no [dynamics] section"))?;
     Ok(Some((l, ft, dt)))
 }
 

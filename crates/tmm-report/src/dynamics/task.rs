@@ -113,18 +113,28 @@ pub fn help_for(field: &str) -> &'static str {
     match field {
         "dynamics.delta" => "delta = 0.02 (0 < δ < 1; typically 0.01…0.1: 0.02–0.05 for presses and pumps, 0.01–0.02 for machine tools)",
         "dynamics.points" => "points = 3600 (intervals of the crank angle over the cycle, at least 360, a multiple of 12)",
-        "dynamics.driving" => "driving = \"constant\" (the course's constant driving moment, the default) or \"motor\" (with [dynamics.motor])",
-        "dynamics.motor" | "dynamics.motor.synchronous_speed" | "dynamics.motor.nominal_speed" | "dynamics.motor.nominal_torque" | "dynamics.motor.ratio" => {
+        "dynamics.driving" => {
+            "driving = \"constant\" (the course's constant driving moment, the default) or \"motor\" (with [dynamics.motor])"
+        }
+        "dynamics.motor"
+        | "dynamics.motor.synchronous_speed"
+        | "dynamics.motor.nominal_speed"
+        | "dynamics.motor.nominal_torque"
+        | "dynamics.motor.ratio" => {
             "[dynamics.motor] synchronous_speed = \"1500 rpm\", nominal_speed = \"1420 rpm\" (below the synchronous), nominal_torque = \"40 N m\", ratio = 1.6 (ω_motor/ω_crank, so that synchronous_speed/ratio exceeds the crank speed)"
         }
         "dynamics.inertia" | "dynamics.inertia.crank_shaft" | "dynamics.inertia.motor_shaft" => {
             "[dynamics.inertia] crank_shaft = \"0.05 kg m^2\", motor_shaft = \"0.01 kg m^2\" (≥ 0; the motor shaft's needs a motor)"
         }
         "dynamics.flywheel.place" => "place = \"crank\" (the default) or \"motor\" (needs a motor)",
-        "dynamics.flywheel.density" => "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³",
+        "dynamics.flywheel.density" => {
+            "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³"
+        }
         "dynamics.flywheel.shape" => "shape = \"disc\" (the default) or \"rim\" (with thickness_ratio = h/D in (0, 0.5))",
         "dynamics.flywheel.width_ratio" => "width_ratio = 0.2 (b/D > 0)",
-        "dynamics.flywheel.thickness_ratio" => "thickness_ratio = 0.1 (the rim's radial thickness h/D, in (0, 0.5); only with shape = \"rim\")",
+        "dynamics.flywheel.thickness_ratio" => {
+            "thickness_ratio = 0.1 (the rim's radial thickness h/D, in (0, 0.5); only with shape = \"rim\")"
+        }
         _ => "see the \"Task file\" part of docs/dynamics.md",
     }
 }
@@ -185,8 +195,13 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
     let sec = sec.into_inner();
     let mut spans = BTreeMap::new();
     let delta_q = sec.delta.as_ref().ok_or_else(|| {
-        Error::at(task, section.clone(), "dynamics.delta", "the coefficient of speed fluctuation δ is missing")
-            .with_help(help_for("dynamics.delta"))
+        Error::at(
+            task,
+            section.clone(),
+            "dynamics.delta",
+            "the coefficient of speed fluctuation δ is missing",
+        )
+        .with_help(help_for("dynamics.delta"))
     })?;
     spans.insert("dynamics.delta".to_string(), delta_q.span());
     let delta = qty(task, "dynamics.delta", delta_q, Dim::Ratio)?;
@@ -280,8 +295,10 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
                 "crank" => FlywheelPlace::Crank,
                 "motor" => FlywheelPlace::Motor,
                 other => {
-                    return Err(Error::at(task, p.span(), "dynamics.flywheel.place", format!("unknown place `{other}`"))
-                        .with_help(help_for("dynamics.flywheel.place")));
+                    return Err(
+                        Error::at(task, p.span(), "dynamics.flywheel.place", format!("unknown place `{other}`"))
+                            .with_help(help_for("dynamics.flywheel.place")),
+                    );
                 }
             };
         }
@@ -322,8 +339,13 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
             }
             "rim" => {
                 if fr.thickness_ratio.is_none() {
-                    return Err(Error::at(task, shape_span, "dynamics.flywheel.thickness_ratio", "a rim needs its radial thickness h/D")
-                        .with_help(help_for("dynamics.flywheel.thickness_ratio")));
+                    return Err(Error::at(
+                        task,
+                        shape_span,
+                        "dynamics.flywheel.thickness_ratio",
+                        "a rim needs its radial thickness h/D",
+                    )
+                    .with_help(help_for("dynamics.flywheel.thickness_ratio")));
                 }
                 FlywheelShape::Rim {
                     width_ratio,
@@ -331,8 +353,10 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
                 }
             }
             other => {
-                return Err(Error::at(task, shape_span, "dynamics.flywheel.shape", format!("unknown shape `{other}`"))
-                    .with_help(help_for("dynamics.flywheel.shape")));
+                return Err(
+                    Error::at(task, shape_span, "dynamics.flywheel.shape", format!("unknown shape `{other}`"))
+                        .with_help(help_for("dynamics.flywheel.shape")),
+                );
             }
         };
         spec.flywheel = fs;
@@ -390,7 +414,11 @@ mod tests {
         let t = TaskSource::new("task.toml", "[dynamics]\ndelta = 0.02\n");
         let d = read(&t, Working::Slower).unwrap().unwrap();
         assert_eq!(d.spec, DynamicsSpec::new(0.02));
-        assert!(read(&TaskSource::new("t.toml", "title = \"x\"\n"), Working::Slower).unwrap().is_none());
+        assert!(
+            read(&TaskSource::new("t.toml", "title = \"x\"\n"), Working::Slower)
+                .unwrap()
+                .is_none()
+        );
     }
 
     #[test]
@@ -410,7 +438,10 @@ mod tests {
         assert!(err("delta = 0.02\n[dynamics.flywheel]\ndensity = \"7 kg/l\"\n").contains("dynamics.flywheel.density"));
         assert!(err("delta = 0.02\n[dynamics.flywheel]\ndensity = 0\n").contains("dynamics.flywheel.density"));
         assert!(err("delta = 0.02\n[dynamics.flywheel]\nshape = \"rim\"\n").contains("dynamics.flywheel.thickness_ratio"));
-        assert!(err("delta = 0.02\n[dynamics.flywheel]\nshape = \"rim\"\nthickness_ratio = 0.5\n").contains("task.toml:5:19: dynamics.flywheel.thickness_ratio"));
+        assert!(
+            err("delta = 0.02\n[dynamics.flywheel]\nshape = \"rim\"\nthickness_ratio = 0.5\n")
+                .contains("task.toml:5:19: dynamics.flywheel.thickness_ratio")
+        );
         assert!(err("delta = 0.02\n[dynamics.flywheel]\nshape = \"cube\"\n").contains("dynamics.flywheel.shape"));
         assert!(err("delta = 0.02\n[dynamics.flywheel]\nwidth_ratio = 0\n").contains("dynamics.flywheel.width_ratio"));
     }

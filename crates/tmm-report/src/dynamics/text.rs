@@ -14,13 +14,23 @@ fn pct(a: f64, b: f64) -> f64 {
     if b == 0.0 { 0.0 } else { 100.0 * (a - b) / b }
 }
 
+/// A value as the user wrote it, in scientific notation when it is very
+/// large or small.
+fn g(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 /// The whole report.
 pub fn report(l: &Loaded, d: &Dynamics) -> String {
     let mut o = String::new();
     let sp = &d.spec;
     let c = &d.cycle;
     let mo = &d.motion;
-    let _ = writeln!(o, "Dynamics of the machine ({}), δ = {}", l.mech.structure.formula, sp.delta);
+    let _ = writeln!(o, "Dynamics of the machine ({}), δ = {}", l.mech.structure.formula, g(sp.delta));
     let _ = writeln!(
         o,
         "Nominal crank speed ω_m = {:.4} rad/s ({:.2} rpm), {}; φ is the crank angle turned from the start of the cycle at crank angle {:.3}°{}",
@@ -28,7 +38,11 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
         d.omega_nominal * 30.0 / std::f64::consts::PI,
         if d.reducer.dir > 0.0 { "counter-clockwise" } else { "clockwise" },
         d.reducer.phi_start.to_degrees(),
-        if d.reducer.stroke.is_some() { " (the start of the working stroke)" } else { "" }
+        if d.reducer.stroke.is_some() {
+            " (the start of the working stroke)"
+        } else {
+            ""
+        }
     );
     let _ = writeln!(
         o,
@@ -110,11 +124,11 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 FlywheelPlace::Motor => "motor shaft",
             };
             let shape = match sp.flywheel.shape {
-                FlywheelShape::Disc { width_ratio } => format!("disc, b/D = {width_ratio}"),
+                FlywheelShape::Disc { width_ratio } => format!("disc, b/D = {}", g(width_ratio)),
                 FlywheelShape::Rim {
                     width_ratio,
                     thickness_ratio,
-                } => format!("rim, b/D = {width_ratio}, h/D = {thickness_ratio}"),
+                } => format!("rim, b/D = {}, h/D = {}", g(width_ratio), g(thickness_ratio)),
             };
             let _ = writeln!(
                 o,
@@ -133,7 +147,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
             let _ = writeln!(
                 o,
                 "  flywheel size ({shape}, ρ = {} kg/m³): D = {:.1} mm, b = {:.1} mm{}, mass {:.2} kg",
-                sp.flywheel.density,
+                g(sp.flywheel.density),
                 f.diameter * 1e3,
                 f.width * 1e3,
                 if matches!(sp.flywheel.shape, FlywheelShape::Rim { .. }) {
@@ -170,7 +184,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 m.synchronous_speed,
                 m.nominal_speed,
                 m.nominal_torque,
-                m.ratio,
+                g(m.ratio),
                 r.time,
                 r.cycles,
                 r.steady.omega_mean,

@@ -142,7 +142,12 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
         CrankMotion::Dynamics => {
             let span = t.crank_motion_span.clone().unwrap_or(t.section.clone());
             let dt = crate::dynamics::task::read(src, working(l.task.working))?.ok_or_else(|| {
-                Error::at(src, span, "forces.crank_motion", "crank_motion = \"dynamics\" needs a [dynamics] section")
+                Error::at(
+                    src,
+                    span,
+                    "forces.crank_motion",
+                    "crank_motion = \"dynamics\" needs a [dynamics] section",
+                )
             })?;
             let d = crate::dynamics::analyse(src, l, t, &dt)?;
             Some((dt, d))
