@@ -16,7 +16,7 @@ fn pct(a: f64, b: f64) -> f64 {
 
 /// A value as the user wrote it, in scientific notation when it is very
 /// large or small.
-fn g(x: f64) -> String {
+fn sci(x: f64) -> String {
     if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
         format!("{x}")
     } else {
@@ -30,7 +30,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
     let sp = &d.spec;
     let c = &d.cycle;
     let mo = &d.motion;
-    let _ = writeln!(o, "Dynamics of the machine ({}), δ = {}", l.mech.structure.formula, g(sp.delta));
+    let _ = writeln!(o, "Dynamics of the machine ({}), δ = {}", l.mech.structure.formula, sci(sp.delta));
     let _ = writeln!(
         o,
         "Nominal crank speed ω_m = {:.4} rad/s ({:.2} rpm), {}; φ is the crank angle turned from the start of the cycle at crank angle {:.3}°{}",
@@ -124,11 +124,11 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 FlywheelPlace::Motor => "motor shaft",
             };
             let shape = match sp.flywheel.shape {
-                FlywheelShape::Disc { width_ratio } => format!("disc, b/D = {}", g(width_ratio)),
+                FlywheelShape::Disc { width_ratio } => format!("disc, b/D = {}", sci(width_ratio)),
                 FlywheelShape::Rim {
                     width_ratio,
                     thickness_ratio,
-                } => format!("rim, b/D = {}, h/D = {}", g(width_ratio), g(thickness_ratio)),
+                } => format!("rim, b/D = {}, h/D = {}", sci(width_ratio), sci(thickness_ratio)),
             };
             let _ = writeln!(
                 o,
@@ -147,7 +147,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
             let _ = writeln!(
                 o,
                 "  flywheel size ({shape}, ρ = {} kg/m³): D = {:.1} mm, b = {:.1} mm{}, mass {:.2} kg",
-                g(sp.flywheel.density),
+                sci(sp.flywheel.density),
                 f.diameter * 1e3,
                 f.width * 1e3,
                 if matches!(sp.flywheel.shape, FlywheelShape::Rim { .. }) {
@@ -184,7 +184,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 m.synchronous_speed,
                 m.nominal_speed,
                 m.nominal_torque,
-                g(m.ratio),
+                sci(m.ratio),
                 r.time,
                 r.cycles,
                 r.steady.omega_mean,
