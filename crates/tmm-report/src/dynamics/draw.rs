@@ -420,7 +420,7 @@ fn clip(k: f64, b: f64, bx: (f64, f64, f64, f64)) -> Option<((f64, f64), (f64, f
     } else if !(y0..=y1).contains(&b) {
         return None;
     }
-    (lo < hi).then(|| ((lo, k * lo + b), (hi, k * hi + b)))
+    (lo < hi).then_some(((lo, k * lo + b), (hi, k * hi + b)))
 }
 
 #[cfg(test)]
