@@ -30,6 +30,8 @@ enum Command {
     Linkage(cmd::linkage::Args),
     /// Kinetostatics: inertia loads, reactions, balancing torque, Zhukovsky's lever, strength of a link
     Forces(cmd::forces::Args),
+    /// Dynamics of the machine: reduced inertia and moments, the flywheel (Merkalov, Wittenbauer, exact), true ω1(φ), run-up
+    Dynamics(cmd::dynamics::Args),
     /// Involute spur gear pair with profile shift: geometry, checks, blocking contour, meshing drawing
     #[command(subcommand)]
     Gear(cmd::gear::GearCommand),
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
         Command::Run(a) => cmd::run::run(a),
         Command::Linkage(a) => cmd::linkage::run(a),
         Command::Forces(a) => cmd::forces::run(a),
+        Command::Dynamics(a) => cmd::dynamics::run(a),
         Command::Gear(a) => cmd::gear::run(a),
         Command::Planetary(a) => cmd::planetary::run(a),
         Command::Cam(a) => cmd::cam::run(a),

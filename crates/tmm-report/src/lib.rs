@@ -8,6 +8,7 @@
 //! | --- | --- | --- |
 //! | [`linkage`] | `[linkage]` | `tmm-linkage` (structure, kinematics) |
 //! | [`forces`] | `[forces]` | `tmm-linkage` (kinetostatics, strength) |
+//! | [`dynamics`] | `[dynamics]` | `tmm-linkage` (flywheel, true motion, run-up) |
 //! | [`gear`] | `[gear]` | `tmm-gears` |
 //! | [`planetary`] | `[planetary]` | `tmm-planetary` |
 //! | [`cam`] | `[cam]` | `tmm-cams` |
@@ -18,6 +19,7 @@
 
 pub mod cam;
 pub mod dxf_out;
+pub mod dynamics;
 pub mod error;
 pub mod forces;
 pub mod gear;

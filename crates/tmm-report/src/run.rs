@@ -3,7 +3,7 @@
 //! before anything is handed out, so a bad section leaves no partial run.
 
 use crate::output::{Documents, to_json_text};
-use crate::{Error, SectionOutput, TaskSource, cam, forces, gear, linkage, planetary};
+use crate::{Error, SectionOutput, TaskSource, cam, dynamics, forces, gear, linkage, planetary};
 
 /// The embedded default course project (`tmm run` with no file).
 pub const DEFAULT_TASK: &str = include_str!("../tasks/default.toml");
@@ -17,6 +17,7 @@ type Runner = fn(&TaskSource) -> Result<Option<SectionOutput>, Error>;
 const RUNNERS: &[Runner] = &[
     linkage::run_section,
     forces::run_section,
+    dynamics::run_section,
     gear::run_section,
     planetary::run_section,
     cam::run_section,

@@ -2,6 +2,7 @@
 
 pub mod cam;
 pub mod common;
+pub mod dynamics;
 pub mod forces;
 pub mod gear;
 pub mod linkage;

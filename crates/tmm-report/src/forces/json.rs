@@ -55,6 +55,8 @@ fn position(l: &Loaded, r: &Row) -> Value {
     json!({
         "label": r.label,
         "phi": num(r.phi),
+        "omega1": num(r.sol.links[m.crank.link].omega),
+        "epsilon1": num(r.sol.links[m.crank.link].eps),
         "psi": num(r.psi),
         "working_stroke": f.phase.map(|p| p.working),
         "resistance": f.resistance.iter().map(|&v| num(v)).collect::<Vec<_>>(),
@@ -86,10 +88,14 @@ pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
     let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
     let mut doc = json!({
         "units": "SI",
-        "assumptions": "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); crank speed ω1 constant as given",
+        "assumptions": match t.crank_motion {
+            super::CrankMotion::Constant => "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); crank speed ω1 constant as given",
+            super::CrankMotion::Dynamics => "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); the crank moves with its true ω1(φ), ε1(φ) from [dynamics]",
+        },
         "structure": m.structure.formula,
         "gravity": [num(t.loads.gravity.x), num(t.loads.gravity.y)],
         "omega1": num(m.crank.omega),
+        "crank_motion": match t.crank_motion { super::CrankMotion::Constant => "constant", super::CrankMotion::Dynamics => "dynamics" },
         "links": links,
         "detail": position(l, &a.detail),
         "positions": a.rows.iter().map(|r| position(l, r)).collect::<Vec<_>>(),

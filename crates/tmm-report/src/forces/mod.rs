@@ -15,6 +15,7 @@ use std::f64::consts::TAU;
 
 use tmm_linkage::Solution;
 use tmm_linkage::cycle::{self, Cycle, Position};
+use tmm_linkage::dynamics::{DynamicsError, with_crank_motion};
 use tmm_linkage::forces::stroke::Working;
 use tmm_linkage::forces::zhukovsky::{LeverForce, lever_forces};
 use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, SectionSizes, size_sections};
@@ -23,7 +24,7 @@ use crate::linkage::{self, Loaded};
 use crate::output::{Documents, SectionOutput};
 use crate::{Error, TaskSource};
 
-pub use task::ForcesTask;
+pub use task::{CrankMotion, ForcesTask};
 
 /// One solved position: kinematics and forces.
 #[derive(Debug, Clone)]
@@ -116,7 +117,8 @@ fn task_has_forces(src: &TaskSource) -> Result<bool, Error> {
     Ok(p.forces.is_some())
 }
 
-fn working(w: cycle::Working) -> Working {
+/// The core's working stroke for the linkage's choice.
+pub(crate) fn working(w: cycle::Working) -> Working {
     match w {
         cycle::Working::Slower => Working::Slower,
         cycle::Working::Increasing => Working::Increasing,
@@ -132,12 +134,41 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
     let loc = |e: ForceError| locate(src, l, t, &e);
     let c = Cycle::new(m, l.task.working).map_err(|e| linkage::locate(src, &l.task, &e))?;
     let mut k = Kinetostatics::with_working(m, t.loads.clone(), working(l.task.working)).map_err(loc)?;
+    // the true motion of the crank, when asked: ω₁, ε₁ at each angle from
+    // the dynamics of the machine (docs/dynamics.md, "Kinetostatics with the
+    // true motion")
+    let dynamics = match t.crank_motion {
+        CrankMotion::Constant => None,
+        CrankMotion::Dynamics => {
+            let span = t.crank_motion_span.clone().unwrap_or(t.section.clone());
+            let dt = crate::dynamics::task::read(src, working(l.task.working))?.ok_or_else(|| {
+                Error::at(
+                    src,
+                    span,
+                    "forces.crank_motion",
+                    "crank_motion = \"dynamics\" needs a [dynamics] section",
+                )
+            })?;
+            let d = crate::dynamics::analyse(src, l, t, &dt)?;
+            Some((dt, d))
+        }
+    };
+    let mut sd = dynamics.as_ref().map(|(_, d)| d.solution());
     let sg = m.crank.omega.signum();
     let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
     let mut sol = m.solution();
     let mut fs = k.result();
     let mut solve = |label: String, phi: f64, k: &mut Kinetostatics| -> Result<Row, Error> {
-        k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?;
+        match (&dynamics, sd.as_mut()) {
+            (Some((dt, d)), Some(sd)) => {
+                let dloc = |e: DynamicsError| crate::dynamics::locate(src, l, t, dt, &e);
+                let (w, e) = d.crank_motion_at(phi, sd).map_err(dloc)?;
+                let mt = with_crank_motion(m, w, e).map_err(dloc)?;
+                mt.solve(phi, &mut sol).map_err(|e| linkage::locate(src, &l.task, &e))?;
+                k.solve(&sol, &mut fs).map_err(loc)?;
+            }
+            _ => k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?,
+        }
         Ok(Row {
             label,
             phi,

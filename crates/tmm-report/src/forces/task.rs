@@ -9,6 +9,7 @@
 //! k = 0.1                       # J_S = k·m·l² unless given
 //! gravity = "9.81 m/s^2"        # absent: weight neglected; direction −y unless gravity_angle
 //! at = "15 deg"                 # the position shown in detail (default: linkage.at)
+//! crank_motion = "constant"     # or "dynamics": the true ω1(φ), ε1(φ) of [dynamics]
 //! [forces.links.5]
 //! mass = "19.5 kg"
 //! [[forces.resistance]]
@@ -50,6 +51,7 @@ struct ForcesSec {
     gravity: Option<Qty>,
     gravity_angle: Option<Qty>,
     at: Option<Qty>,
+    crank_motion: Option<S<String>>,
     links: Option<BTreeMap<String, S<LinkSec>>>,
     resistance: Option<Vec<S<ResistSec>>>,
     strength: Option<S<StrengthSec>>,
@@ -113,9 +115,23 @@ pub struct Strength {
     pub k: f64,
 }
 
+/// How the crank moves in the kinetostatics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CrankMotion {
+    /// At the constant input speed of `[linkage]`, ε₁ = 0 (the default).
+    Constant,
+    /// With the true ω₁(φ), ε₁(φ) of the machine with its flywheel, from the
+    /// `[dynamics]` section.
+    Dynamics,
+}
+
 /// The `[forces]` section, read and checked against the mechanism.
 #[derive(Debug, Clone)]
 pub struct ForcesTask {
+    /// How the crank moves.
+    pub crank_motion: CrankMotion,
+    /// Span of `crank_motion`, when given.
+    pub crank_motion_span: Option<Range<usize>>,
     /// The loads for the core.
     pub loads: Loads,
     /// The crank angle shown in detail, rad (absolute), if given.
@@ -199,6 +215,26 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
     let at = match &sec.at {
         Some(a) => Some(qty(task, "forces.at", a, Dim::Angle)?),
         None => None,
+    };
+    let crank_motion = match sec.crank_motion.as_ref().map(|c| (c.get_ref().as_str(), c.span())) {
+        None | Some(("constant", _)) => CrankMotion::Constant,
+        Some(("dynamics", sp)) => {
+            if !crate::dynamics::task::present(task)? {
+                return Err(Error::at(
+                    task,
+                    sp,
+                    "forces.crank_motion",
+                    "crank_motion = \"dynamics\" takes the true ω1, ε1 from the dynamics of the machine, and the task has no [dynamics] section",
+                )
+                .with_help("add [dynamics] with delta = 0.02 (the coefficient of speed fluctuation), or say crank_motion = \"constant\""));
+            }
+            CrankMotion::Dynamics
+        }
+        Some((other, sp)) => {
+            return Err(Error::at(task, sp, "forces.crank_motion", format!("unknown crank motion `{other}`")).with_help(
+                "crank_motion = \"constant\" (the [linkage] input speed, ε1 = 0; the default) or \"dynamics\" (the true ω1(φ), ε1(φ) with the flywheel of [dynamics])",
+            ));
+        }
     };
     // defaults for every moving link
     for l in 1..m.link_names.len() {
@@ -291,6 +327,8 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         None => None,
     };
     Ok(Some(ForcesTask {
+        crank_motion,
+        crank_motion_span: sec.crank_motion.as_ref().map(|c| c.span()),
         loads,
         at,
         strength,

@@ -12,10 +12,12 @@ fn position(out: &mut String, l: &Loaded, r: &Row) {
     let f = &r.fs;
     let _ = writeln!(
         out,
-        "\nPosition {} — φ = {:.3}° (crank travel from the start of the working stroke {:.3}°)",
+        "\nPosition {} — φ = {:.3}° (crank travel from the start of the working stroke {:.3}°); ω1 = {:.4} rad/s, ε1 = {:.3} rad/s²",
         r.label,
         r.phi.to_degrees(),
-        r.psi.to_degrees()
+        r.psi.to_degrees(),
+        r.sol.links[m.crank.link].omega,
+        r.sol.links[m.crank.link].eps
     );
     if let Some(p) = f.phase {
         let _ = writeln!(
@@ -102,11 +104,22 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
     let m = &l.mech;
     let mut out = String::new();
     let _ = writeln!(out, "Kinetostatics (force analysis) — {}", m.structure.formula);
-    let _ = writeln!(
-        out,
-        "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.",
-        m.crank.omega
-    );
+    match t.crank_motion {
+        super::CrankMotion::Constant => {
+            let _ = writeln!(
+                out,
+                "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.",
+                m.crank.omega
+            );
+        }
+        super::CrankMotion::Dynamics => {
+            let _ = writeln!(
+                out,
+                "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). The crank moves with its true ω1(φ), ε1(φ) from [dynamics] (nominal ω1 = {:.4} rad/s); the balancing torque is the drive's M_d less the inertia torque of the flywheel and the other constant masses on the crank shaft.",
+                m.crank.omega
+            );
+        }
+    }
     if t.loads.gravity.hypot() > 0.0 {
         let _ = writeln!(out, "Gravity g = ({:.4}, {:.4}) m/s².", t.loads.gravity.x, t.loads.gravity.y);
     } else {

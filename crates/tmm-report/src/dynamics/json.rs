@@ -1,0 +1,136 @@
+//! The JSON document of the `[dynamics]` section (SI, angles in radians).
+//!
+//! The arrays are over the cycle, φ being the crank angle turned in the
+//! direction of rotation from the start of the working stroke (or from crank
+//! angle 0 when the output has no dead positions): every node of the core's
+//! grid when it has at most 720 intervals, else every k-th node, k the
+//! largest divisor of the interval count that keeps at least 360 intervals
+//! (1° with the default 3600). The scalars are exact, not read off the grid.
+
+use serde_json::{Value, json};
+use tmm_linkage::dynamics::{Dynamics, FlywheelPlace, FlywheelShape, Tangent};
+
+use crate::linkage::Loaded;
+use crate::output::num;
+
+/// The stride through the core's grid of `n` intervals for the arrays.
+pub(crate) fn stride(n: usize) -> usize {
+    if n <= 720 {
+        return 1;
+    }
+    (1..=n / 360).rev().find(|s| n % s == 0).unwrap_or(1)
+}
+
+fn arr(v: &[f64], s: usize) -> Value {
+    Value::Array(v.iter().step_by(s).map(|&x| num(x)).collect())
+}
+
+fn tangent(t: &Tangent) -> Value {
+    json!({
+        "slope": num(t.slope), "intercept": num(t.intercept),
+        "phi": num(t.phi), "inertia": num(t.inertia), "energy": num(t.energy),
+    })
+}
+
+/// The whole document.
+pub fn document(l: &Loaded, d: &Dynamics) -> Value {
+    let c = &d.cycle;
+    let s = stride(c.len());
+    let sp = &d.spec;
+    let runup = match &d.runup {
+        Some(r) => json!({"time": num(r.time), "delta": num(r.steady.delta), "cycles": r.cycles,
+            "omega_mean": num(r.steady.omega_mean), "omega_max": num(r.steady.omega_max), "omega_min": num(r.steady.omega_min)}),
+        None => Value::Null,
+    };
+    let flywheel = d.flywheel.map(|f| {
+        json!({
+            "place": match sp.flywheel.place { FlywheelPlace::Crank => "crank", FlywheelPlace::Motor => "motor" },
+            "shape": match sp.flywheel.shape { FlywheelShape::Disc { .. } => "disc", FlywheelShape::Rim { .. } => "rim" },
+            "density": num(sp.flywheel.density),
+            "inertia": num(d.flywheel_inertia),
+            "diameter": num(f.diameter), "width": num(f.width), "thickness": num(f.thickness), "mass": num(f.mass),
+        })
+    });
+    let motor = sp.motor().map(|m| {
+        json!({"synchronous_speed": num(m.synchronous_speed), "nominal_speed": num(m.nominal_speed),
+            "nominal_torque": num(m.nominal_torque), "ratio": num(m.ratio)})
+    });
+    let mo = &d.motion;
+    let positions: Vec<Value> = d
+        .positions
+        .iter()
+        .map(|p| {
+            json!({
+                "index": p.index, "phi": num(p.phi), "crank_angle": num(p.crank_angle),
+                "reduced_inertia_variable": num(p.inertia), "reduced_moment": num(p.moment),
+                "work": num(p.work_loads), "work_driving": num(p.work_driving),
+                "kinetic_energy_change": num(p.energy), "energy_constant_part": num(p.energy_constant),
+                "omega": num(p.omega), "epsilon": num(p.epsilon),
+            })
+        })
+        .collect();
+    let mut doc = json!({
+        "units": "SI",
+        "assumptions": "rigid links, friction neglected; the driving moment on the crank constant over the cycle (zero work over the steady cycle) for the flywheel; the nominal crank speed ω_m = (ω_max + ω_min)/2 is the [linkage] input speed",
+        "structure": l.mech.structure.formula,
+        "delta_requested": num(sp.delta),
+        "omega_nominal": num(d.omega_nominal),
+        "crank_angle_start": num(d.reducer.phi_start),
+        "direction": if d.reducer.dir > 0.0 { "ccw" } else { "cw" },
+        "driving": if motor.is_some() { "motor" } else { "constant" },
+        "motor": motor,
+        "phi": arr(&c.phi, s),
+        "reduced_inertia_variable": arr(&c.inertia, s),
+        "reduced_inertia_derivative": arr(&c.inertia_derivative, s),
+        "reduced_moment": arr(&c.moment, s),
+        "driving_moment": num(c.driving_moment),
+        "work": arr(&c.work_loads, s),
+        "work_driving": arr(&c.work_driving, s),
+        "kinetic_energy_change": arr(&c.energy, s),
+        "energy_constant_part": arr(&d.merkalov.energy_constant, s),
+    });
+    let rest = json!({
+        "inertia_constant_given": num(d.inertia_given.total),
+        "inertia_given": {"crank": num(d.inertia_given.crank), "crank_shaft": num(d.inertia_given.crank_shaft), "motor_shaft_reduced": num(d.inertia_given.motor_shaft)},
+        "required_inertia": {"merkalov": num(d.required.merkalov), "wittenbauer": num(d.required.wittenbauer), "exact": num(d.required.exact)},
+        "merkalov": {"energy_swing": num(d.merkalov.energy_swing), "energy_max": num(d.merkalov.energy_max), "phi_max": num(d.merkalov.phi_max),
+            "energy_min": num(d.merkalov.energy_min), "phi_min": num(d.merkalov.phi_min)},
+        "wittenbauer": {"upper": tangent(&d.wittenbauer.upper), "lower": tangent(&d.wittenbauer.lower), "energy_start": num(d.wittenbauer.energy_start)},
+        "inertia_constant": num(mo.inertia_constant),
+        "energy_start": num(mo.energy_start),
+        "flywheel_inertia": num(d.flywheel_inertia),
+        "flywheel_inertia_crank": num(d.flywheel_inertia_crank),
+        "flywheel": flywheel,
+        "omega": arr(&mo.omega, s),
+        "epsilon": arr(&mo.epsilon, s),
+        "time": arr(&mo.time, s),
+        "omega_max": num(mo.omega_max),
+        "omega_min": num(mo.omega_min),
+        "omega_mean": num(mo.omega_mean),
+        "delta": num(mo.delta),
+        "cycle_time": num(mo.cycle_time),
+        "simulated": {"delta": num(d.simulated.delta), "period": num(d.simulated.period), "omega_max": num(d.simulated.omega_max), "omega_min": num(d.simulated.omega_min)},
+        "runup": runup,
+        "positions": positions,
+    });
+    if let (Some(a), Value::Object(b)) = (doc.as_object_mut(), rest) {
+        a.extend(b);
+    }
+    doc
+}
+
+#[cfg(test)]
+mod tests {
+    use super::stride;
+
+    #[test]
+    fn stride_keeps_at_least_360_intervals() {
+        for n in [360, 372, 720, 1440, 3600, 36_000, 3612] {
+            let s = stride(n);
+            assert_eq!(n % s, 0);
+            assert!(n / s >= 360, "{n}: {s}");
+        }
+        assert_eq!(stride(3600), 10);
+        assert_eq!(stride(720), 1);
+    }
+}
