@@ -6,6 +6,7 @@
 //!
 //! | module | section | core crate |
 //! | --- | --- | --- |
+//! | [`synthesis`] | `[synthesis]` | `tmm-linkage` (metric synthesis) |
 //! | [`linkage`] | `[linkage]` | `tmm-linkage` (structure, kinematics) |
 //! | [`forces`] | `[forces]` | `tmm-linkage` (kinetostatics, strength) |
 //! | [`gear`] | `[gear]` | `tmm-gears` |
@@ -26,6 +27,7 @@ pub mod output;
 pub mod planetary;
 pub mod run;
 pub mod svg;
+pub mod synthesis;
 pub mod task;
 
 pub use error::Error;
