@@ -7,3 +7,4 @@ pub mod gear;
 pub mod linkage;
 pub mod planetary;
 pub mod run;
+pub mod synth;

@@ -184,20 +184,32 @@ pub fn construction(s: &Solved) -> String {
         let other = k.extremes[1 - i];
         let away = (*p - other) * (1.0 / (*p - other).hypot().max(1e-12));
         c.text_colored(
-            xy(*p + away * (3.5 / scale) + Vec2::new(0.0, -1.2 / scale)),
+            xy(*p + away * (2.5 / scale) + Vec2::new(0.0, -1.2 / scale)),
             &format!("{}{}", k.point, if i == 0 { "′" } else { "″" }),
             txt,
-            Anchor::Middle,
+            if away.x >= 0.0 { Anchor::Start } else { Anchor::End },
             colors[i],
         );
     }
+    // θ between the rays at the pivot
+    let r0 = k.extremes[0] - k.pivot;
+    let r1 = k.extremes[1] - k.pivot;
+    let (n0, n1) = (r0.hypot(), r1.hypot());
+    if n0 > 0.0 && n1 > 0.0 && y.theta > 0.0 {
+        let bis = r0 * (1.0 / n0) + r1 * (1.0 / n1);
+        let nb = bis.hypot();
+        if nb > 0.0 {
+            let at = k.pivot + bis * (0.45 * n0.min(n1) / nb);
+            c.text(xy(at + Vec2::new(0.0, 1.5 / scale)), &format!("θ = {:.2}°", y.theta.to_degrees()), txt * 0.85, Anchor::Middle);
+        }
+    }
     for (n, p) in &y.frame {
         c.fixed_pivot(xy(*p), 1.2);
-        c.text(xy(*p + Vec2::new(2.0 / scale, -4.5 / scale)), n, txt, Anchor::Start);
+        c.text(xy(*p + Vec2::new(2.2 / scale, 1.6 / scale)), n, txt, Anchor::Start);
     }
     c.dot(xy(k.pivot), 1.0, RED);
     c.text_colored(
-        xy(k.pivot + Vec2::new(-2.0 / scale, 2.5 / scale)),
+        xy(k.pivot + Vec2::new(-2.0 / scale, 4.0 / scale)),
         "chosen crank pivot",
         txt * 0.85,
         Anchor::End,
@@ -210,7 +222,7 @@ pub fn construction(s: &Solved) -> String {
         (GREEN, "circle seen at 2θ from O*, arc of pivots"),
     ];
     for (i, (col, t)) in leg.iter().enumerate() {
-        let yy = 200.0 - 5.0 * i as f64;
+        let yy = 192.0 + 5.0 * i as f64;
         c.line_paper((15.0, yy - 1.0), (25.0, yy - 1.0), Style::THICK.colored(col).widened(0.5));
         c.text_paper((27.0, yy), t, 3.2, Anchor::Start, "#000");
     }
@@ -237,9 +249,12 @@ pub fn pressure(s: &Solved) -> Result<String, Error> {
             }
         }
     }
+    let top = curves.iter().flat_map(|c| c.1.iter().map(|p| p.1)).fold(0.0_f64, f64::max);
+    let w = cy.working_angle.to_degrees();
+    let marker = [(w, 0.0), (w, top)];
     let names: Vec<String> = curves.iter().map(|c| format!("ϑ at {}", m.points[c.0].name)).collect();
     let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
-    let series: Vec<Series<'_>> = curves
+    let mut series: Vec<Series<'_>> = curves
         .iter()
         .enumerate()
         .map(|(i, c)| Series {
@@ -248,6 +263,11 @@ pub fn pressure(s: &Solved) -> Result<String, Error> {
             color: cols[i % cols.len()],
         })
         .collect();
+    series.push(Series {
+        name: "end of the working stroke",
+        points: &marker,
+        color: GREY,
+    });
     Ok(plot(
         &format!(
             "Pressure angles over the cycle (working stroke 0…{:.1}°)",
