@@ -77,8 +77,8 @@ pub fn construction(s: &Solved) -> String {
     }
     let size = (b.1 - b.0).max(b.3 - b.2).max(1e-9);
     // the locus circle's centre and as much of the circle as stays within
-    // 60 % of the size beyond the mechanism
-    let margin = 0.6 * size;
+    // 35 % of the size beyond the mechanism
+    let margin = 0.35 * size;
     let view: Box4 = (b.0 - margin, b.1 + margin, b.2 - margin, b.3 + margin);
     let mut world = (b.0 - 0.08 * size, b.1 + 0.08 * size, b.2 - 0.08 * size, b.3 + 0.08 * size);
     if let Some(l) = &k.locus {
@@ -127,8 +127,11 @@ pub fn construction(s: &Solved) -> String {
             c.dot(xy(l.center), 0.8, GREEN);
             let mid = (k.extremes[0] + k.extremes[1]) * 0.5;
             c.line(xy(l.center), xy(mid), Style::AXIS.colored(GREEN));
+            // the label on the far side of the centre from the chord
+            let off = l.center - mid;
+            let off = if off.hypot() > 0.0 { off * (1.0 / off.hypot()) } else { Vec2::new(0.0, 1.0) };
             c.text_colored(
-                xy(l.center + Vec2::new(0.0, 2.5 / scale)),
+                xy(l.center + off * (4.0 / scale) + Vec2::new(0.0, -1.2 / scale)),
                 &format!("O* (2θ = {:.2}°)", 2.0 * y.theta.to_degrees()),
                 txt,
                 Anchor::Middle,
@@ -151,7 +154,7 @@ pub fn construction(s: &Solved) -> String {
     // other construction lines
     for (name, p, q) in &k.lines {
         c.line(xy(*p), xy(*q), Style::AXIS.colored(GREY));
-        let m = (*p + *q) * 0.5;
+        let m = *p + (*q - *p) * 0.2;
         if inside(clip, m) {
             c.text_colored(xy(m + Vec2::new(0.0, 1.5 / scale)), name, txt * 0.8, Anchor::Middle, GREY);
         }
@@ -184,7 +187,7 @@ pub fn construction(s: &Solved) -> String {
         let other = k.extremes[1 - i];
         let away = (*p - other) * (1.0 / (*p - other).hypot().max(1e-12));
         c.text_colored(
-            xy(*p + away * (2.5 / scale) + Vec2::new(0.0, -1.2 / scale)),
+            xy(*p + away * (3.0 / scale) + Vec2::new(0.0, -1.2 / scale)),
             &format!("{}{}", k.point, if i == 0 { "′" } else { "″" }),
             txt,
             if away.x >= 0.0 { Anchor::Start } else { Anchor::End },
@@ -195,33 +198,42 @@ pub fn construction(s: &Solved) -> String {
     let r0 = k.extremes[0] - k.pivot;
     let r1 = k.extremes[1] - k.pivot;
     let (n0, n1) = (r0.hypot(), r1.hypot());
-    if n0 > 0.0 && n1 > 0.0 && y.theta > 0.0 {
-        let bis = r0 * (1.0 / n0) + r1 * (1.0 / n1);
-        let nb = bis.hypot();
-        if nb > 0.0 {
-            let at = k.pivot + bis * (0.45 * n0.min(n1) / nb);
-            c.text(xy(at + Vec2::new(0.0, 1.5 / scale)), &format!("θ = {:.2}°", y.theta.to_degrees()), txt * 0.85, Anchor::Middle);
-        }
+    if n0 > 0.0 && n1 > 0.0 && y.theta > 0.0 && k.locus.is_some() {
+        // the arc of θ at the pivot, the label beyond it on the bisector
+        let rr = 0.3 * n0.min(n1);
+        let (a0, a1) = (r0.atan2(), r1.atan2());
+        let d = tmm_geom::angle::diff(a0, a1);
+        c.arc(xy(k.pivot), rr, a0, a0 + d, Style::THIN);
+        let am = a0 + 0.5 * d;
+        let at = k.pivot + Vec2::new(am.cos(), am.sin()) * (rr + 2.0 / scale);
+        c.text(
+            xy(at),
+            &format!("θ = {:.2}°", y.theta.to_degrees()),
+            txt * 0.85,
+            if am.cos() >= 0.0 { Anchor::Start } else { Anchor::End },
+        );
     }
     for (n, p) in &y.frame {
         c.fixed_pivot(xy(*p), 1.2);
-        c.text(xy(*p + Vec2::new(2.2 / scale, 1.6 / scale)), n, txt, Anchor::Start);
+        let chosen = (*p - k.pivot).hypot() <= 1e-9 * size;
+        let label = if chosen { format!("{n} (chosen crank pivot)") } else { n.clone() };
+        c.text_colored(
+            xy(*p + Vec2::new(2.2 / scale, 1.6 / scale)),
+            &label,
+            txt,
+            Anchor::Start,
+            if chosen { RED } else { "#000000" },
+        );
     }
     c.dot(xy(k.pivot), 1.0, RED);
-    c.text_colored(
-        xy(k.pivot + Vec2::new(-2.0 / scale, 4.0 / scale)),
-        "chosen crank pivot",
-        txt * 0.85,
-        Anchor::End,
-        RED,
-    );
     // legend
     let leg = [
         (BLUE, "extreme position ′ (start of the working stroke)"),
         (RED, "extreme position ″"),
         (GREEN, "circle seen at 2θ from O*, arc of pivots"),
     ];
-    for (i, (col, t)) in leg.iter().enumerate() {
+    let shown = if k.locus.is_some() { 3 } else { 2 };
+    for (i, (col, t)) in leg.iter().take(shown).enumerate() {
         let yy = 192.0 + 5.0 * i as f64;
         c.line_paper((15.0, yy - 1.0), (25.0, yy - 1.0), Style::THICK.colored(col).widened(0.5));
         c.text_paper((27.0, yy), t, 3.2, Anchor::Start, "#000");
