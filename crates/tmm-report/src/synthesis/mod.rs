@@ -184,6 +184,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let mut docs = drawings(&s)?;
     docs.add_json("synthesis/synthesis.json", &json)?;
     docs.add_text("synthesis/linkage.toml", s.linkage.clone())?;
+    docs.add_text("synthesis/synthesis.txt", text.clone())?;
     Ok(Some(SectionOutput {
         section: "synthesis",
         text,

@@ -43,7 +43,7 @@ pub fn report(s: &Solved, vars: Option<&[Variant]>, cmp: Option<&Comparison>) ->
     );
     if let Some((v, dim, word)) = stroke_of(y.stroke) {
         let found = stroke_of(c.stroke).map_or("—".into(), |(f, _, _)| show(dim, f));
-        let _ = writeln!(t, "{word} requested {}, found {found}", show(dim, v));
+        let _ = writeln!(t, "{word} of the construction {}, found by the linkage core {found}", show(dim, v));
     }
     let _ = writeln!(
         t,
