@@ -753,7 +753,20 @@ impl Mechanism {
             return Err(first_err.unwrap_or_else(|| LinkageError::Structure("no assembly found".into())));
         };
         if score >= 1e6 {
-            let h: Vec<String> = def.hints.iter().map(|h| format!("{} {:?}", h.point, h.kind)).collect();
+            let h: Vec<String> = def
+                .hints
+                .iter()
+                .map(|h| {
+                    let how = match &h.kind {
+                        HintKind::Above(a, b) => format!("above {a}-{b}"),
+                        HintKind::Below(a, b) => format!("below {a}-{b}"),
+                        HintKind::LeftOf(a, b) => format!("left of {a}-{b}"),
+                        HintKind::RightOf(a, b) => format!("right of {a}-{b}"),
+                        HintKind::Near(q) => format!("near ({:.4}, {:.4}) m", q.x, q.y),
+                    };
+                    format!("{} {how}", h.point)
+                })
+                .collect();
             return Err(LinkageError::desc(
                 "assembly",
                 format!(

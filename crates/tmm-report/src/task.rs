@@ -55,7 +55,12 @@ impl TaskSource {
 
     /// A `toml` error as a located input error.
     pub fn toml_error(&self, section: &str, e: &toml::de::Error) -> Error {
-        let msg = e.message().trim().to_string();
+        let mut msg = e.message().trim().to_string();
+        // serde's wording for a value none of a field's forms accepts names a
+        // Rust type; say it in the user's terms
+        if msg.contains("untagged enum") {
+            msg = "this value has none of the forms the field accepts (a number, a text with a unit, or the form the docs show for it)".into();
+        }
         match e.span() {
             Some(span) => Error::at(self, span, section, msg),
             None => Error::input(&format!("{}: {section}", self.name), msg),

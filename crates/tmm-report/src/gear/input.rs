@@ -272,9 +272,11 @@ impl Raw {
                 o.err(f, "is required")
                     .with_help(format!("give the tooth number, e.g. {} 17", f.option()))
             })?;
-            if !(1..=100_000).contains(&v) {
+            // the profile, contour and sliding computations grow with z: 2000
+            // teeth (a 2 m wheel of module 1) keeps a run within seconds
+            if !(1..=2000).contains(&v) {
                 return Err(o
-                    .err(f, format!("a tooth number must be a whole number from 8 up, got {v}"))
+                    .err(f, format!("a tooth number must be a whole number from 8 to 2000, got {v}"))
                     .with_help("tooth numbers are positive integers, e.g. 17"));
             }
             Ok(v as u32)
