@@ -70,12 +70,27 @@ fn crank_rocker_each_condition_reaches_k_and_swing() {
         ("cr-frame", ["--frame", "350 mm"].as_slice()),
         ("cr-opt", ["--optimum"].as_slice()),
     ] {
-        let mut a = vec!["crank-rocker", "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--speed", "900 rpm"];
+        let mut a = vec![
+            "crank-rocker",
+            "--k",
+            "1.28",
+            "--swing",
+            "60",
+            "--rocker",
+            "245 mm",
+            "--speed",
+            "900 rpm",
+        ];
         a.extend_from_slice(cond);
         let v = synth_then_linkage(n, &a, None);
         close("Kv", v["kv"].as_f64().unwrap(), 1.28, 1e-9);
         close("swing", v["stroke"].as_f64().unwrap(), deg(60.0), 1e-9);
-        close("ω1", v["input"]["omega"].as_f64().unwrap(), 900.0 * std::f64::consts::TAU / 60.0, 1e-9);
+        close(
+            "ω1",
+            v["input"]["omega"].as_f64().unwrap(),
+            900.0 * std::f64::consts::TAU / 60.0,
+            1e-9,
+        );
     }
 }
 
@@ -103,23 +118,61 @@ fn knee_press_shaper_and_six_bars_reach_k_and_stroke() {
         (
             "knee",
             &[
-                "knee-press", "--stroke", "90 mm", "--k", "1.12", "--rocker", "220 mm", "--link", "220 mm", "--delta", "5",
-                "--horizontal", "280 mm", "--direction", "cw",
+                "knee-press",
+                "--stroke",
+                "90 mm",
+                "--k",
+                "1.12",
+                "--rocker",
+                "220 mm",
+                "--link",
+                "220 mm",
+                "--delta",
+                "5",
+                "--horizontal",
+                "280 mm",
+                "--direction",
+                "cw",
             ],
             1.12,
             0.09,
         ),
         (
             "shaper",
-            &["slotted-lever", "--stroke", "400 mm", "--k", "1.5", "--pivots", "50 mm", "--coupler-ratio", "3"],
+            &[
+                "slotted-lever",
+                "--stroke",
+                "400 mm",
+                "--k",
+                "1.5",
+                "--pivots",
+                "50 mm",
+                "--coupler-ratio",
+                "3",
+            ],
             1.5,
             0.4,
         ),
         (
             "inversion",
             &[
-                "six-bar-inversion", "--k", "1.15", "--travel", "360 mm", "--guide", "-320 mm", "--start", "180 mm", "--coupler",
-                "320 mm", "--swing", "70", "--lever", "360 mm", "--pivot-through", "0 m, 0.2 m",
+                "six-bar-inversion",
+                "--k",
+                "1.15",
+                "--travel",
+                "360 mm",
+                "--guide",
+                "-320 mm",
+                "--start",
+                "180 mm",
+                "--coupler",
+                "320 mm",
+                "--swing",
+                "70",
+                "--lever",
+                "360 mm",
+                "--pivot-through",
+                "0 m, 0.2 m",
             ],
             1.15,
             0.36,
@@ -136,8 +189,21 @@ fn knee_press_shaper_and_six_bars_reach_k_and_stroke() {
     // the stroke is compared with the one the synthesis reports, and l_CD
     // with its closed form 0.4/sin 38°.
     let a = [
-        "six-bar-pressure", "--k", "1.07", "--swing", "55", "--arm-b", "0.6 m", "--arm-c", "0.6 m", "--guide", "-0.2 m",
-        "--max-pressure", "38", "--extreme-pressure", "38",
+        "six-bar-pressure",
+        "--k",
+        "1.07",
+        "--swing",
+        "55",
+        "--arm-b",
+        "0.6 m",
+        "--arm-c",
+        "0.6 m",
+        "--guide",
+        "-0.2 m",
+        "--max-pressure",
+        "38",
+        "--extreme-pressure",
+        "38",
     ];
     let v = synth_then_linkage("pressure", &a, None);
     close("Kv", v["kv"].as_f64().unwrap(), 1.07, 1e-9);
@@ -172,20 +238,52 @@ fn function_generator_passes_through_its_positions() {
 #[test]
 fn two_positions_crank_slider_travels_between_them() {
     let a = [
-        "crank-slider-positions", "--lambda", "4", "--lambda-e", "0.2", "--phi-start", "10", "--phi-end", "150", "--travel",
+        "crank-slider-positions",
+        "--lambda",
+        "4",
+        "--lambda-e",
+        "0.2",
+        "--phi-start",
+        "10",
+        "--phi-end",
+        "150",
+        "--travel",
         "200 mm",
     ];
-    let x = |at: &str, n: &str| synth_then_linkage(n, &a, Some(at))["positions"][0]["points"]["B"]["x"].as_f64().unwrap();
+    let x = |at: &str, n: &str| {
+        synth_then_linkage(n, &a, Some(at))["positions"][0]["points"]["B"]["x"]
+            .as_f64()
+            .unwrap()
+    };
     // h_C = x_Cн − x_Cк (seed 000 § 1.2.2)
     close("travel", x("10", "tp0") - x("150", "tp1"), 0.2, 1e-9);
 }
 
 #[test]
 fn json_has_the_contract_keys() {
-    let v = json(&["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--lambda", "3.5", "--json"]);
+    let v = json(&[
+        "synth",
+        "crank-slider",
+        "--stroke",
+        "300 mm",
+        "--k",
+        "1.2",
+        "--lambda",
+        "3.5",
+        "--json",
+    ]);
     for k in [
-        "kind", "given", "lengths", "frame", "k", "theta", "stroke", "pressure_angle_max", "transmission_angle_min",
-        "free_parameter", "task",
+        "kind",
+        "given",
+        "lengths",
+        "frame",
+        "k",
+        "theta",
+        "stroke",
+        "pressure_angle_max",
+        "transmission_angle_min",
+        "free_parameter",
+        "task",
     ] {
         assert!(v.get(k).is_some(), "missing {k}");
     }
@@ -195,9 +293,25 @@ fn json_has_the_contract_keys() {
     // θ = π (K − 1)/(K + 1) (seed 000 (1.3))
     close("θ", v["theta"].as_f64().unwrap(), std::f64::consts::PI * 0.2 / 2.2, 1e-15);
     // λ2 = l2/l1 as asked
-    close("λ2", v["lengths"]["AB"].as_f64().unwrap() / v["lengths"]["OA"].as_f64().unwrap(), 3.5, 1e-12);
+    close(
+        "λ2",
+        v["lengths"]["AB"].as_f64().unwrap() / v["lengths"]["OA"].as_f64().unwrap(),
+        3.5,
+        1e-12,
+    );
     assert!(v["task"].as_str().unwrap().starts_with("[linkage]"));
-    let r = json(&["synth", "crank-rocker", "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--optimum", "--json"]);
+    let r = json(&[
+        "synth",
+        "crank-rocker",
+        "--k",
+        "1.28",
+        "--swing",
+        "60",
+        "--rocker",
+        "245 mm",
+        "--optimum",
+        "--json",
+    ]);
     assert!(r.get("swing").is_some() && r.get("stroke").is_none());
 }
 
@@ -209,7 +323,10 @@ fn sweep_prints_a_table_and_an_array() {
     let (code, out, err) = run(&a);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("Variants: lambda over 5 values"), "{out}");
-    let rows = out.lines().filter(|l| l.trim_start().starts_with(|c: char| c.is_ascii_digit())).count();
+    let rows = out
+        .lines()
+        .filter(|l| l.trim_start().starts_with(|c: char| c.is_ascii_digit()))
+        .count();
     assert_eq!(rows, 5, "{out}");
     a.push("--json");
     let v = json(&a);
@@ -223,8 +340,18 @@ fn sweep_prints_a_table_and_an_array() {
     }
     // a crank length beyond the locus' limit h = l3·sin(ψ/2) cannot work
     let v = json(&[
-        "synth", "crank-rocker", "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--optimum", "--sweep",
-        "crank=80 mm..140 mm:4", "--json",
+        "synth",
+        "crank-rocker",
+        "--k",
+        "1.28",
+        "--swing",
+        "60",
+        "--rocker",
+        "245 mm",
+        "--optimum",
+        "--sweep",
+        "crank=80 mm..140 mm:4",
+        "--json",
     ]);
     let arr = v.as_array().unwrap();
     assert_eq!(arr.len(), 4);
@@ -236,15 +363,75 @@ fn sweep_prints_a_table_and_an_array() {
 fn bad_input_names_the_option_and_exits_2() {
     let cases: [(&[&str], &[&str]); 6] = [
         (
-            &["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--lambda", "3.5", "--sweep", "bogus=1..2:3"],
+            &[
+                "synth",
+                "crank-slider",
+                "--stroke",
+                "300 mm",
+                "--k",
+                "1.2",
+                "--lambda",
+                "3.5",
+                "--sweep",
+                "bogus=1..2:3",
+            ],
             &["--sweep", "stroke, k, lambda, offset, max_pressure"],
         ),
-        (&["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--lambda", "3.5", "--sweep", "lambda=2..6"], &["--sweep", ":N"]),
+        (
+            &[
+                "synth",
+                "crank-slider",
+                "--stroke",
+                "300 mm",
+                "--k",
+                "1.2",
+                "--lambda",
+                "3.5",
+                "--sweep",
+                "lambda=2..6",
+            ],
+            &["--sweep", ":N"],
+        ),
         // seed example: H = 0.3 m, K = 1.2 cannot have ϑmax = 40°; the smallest is 42.80°
-        (&["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--max-pressure", "40"], &["--max-pressure", "42.799"]),
-        (&["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2"], &["--lambda", "--offset", "--max-pressure"]),
-        (&["synth", "crank-rocker", "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--crank", "0.1", "--frame", "0.35"], &["--frame", "only one"]),
-        (&["synth", "crank-rocker", "--k", "1.28", "--swing", "60 kg", "--rocker", "245 mm", "--optimum"], &["--swing"]),
+        (
+            &["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--max-pressure", "40"],
+            &["--max-pressure", "42.799"],
+        ),
+        (
+            &["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2"],
+            &["--lambda", "--offset", "--max-pressure"],
+        ),
+        (
+            &[
+                "synth",
+                "crank-rocker",
+                "--k",
+                "1.28",
+                "--swing",
+                "60",
+                "--rocker",
+                "245 mm",
+                "--crank",
+                "0.1",
+                "--frame",
+                "0.35",
+            ],
+            &["--frame", "only one"],
+        ),
+        (
+            &[
+                "synth",
+                "crank-rocker",
+                "--k",
+                "1.28",
+                "--swing",
+                "60 kg",
+                "--rocker",
+                "245 mm",
+                "--optimum",
+            ],
+            &["--swing"],
+        ),
     ];
     for (a, words) in cases {
         let (code, _, err) = run(a);
@@ -304,7 +491,17 @@ fn the_written_task_runs_with_forces_and_compares_the_given_linkage() {
     let d = tmp("forces");
     let t = d.join("t.toml");
     let (code, _, err) = run(&[
-        "synth", "crank-rocker", "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--crank", "100 mm", "--task",
+        "synth",
+        "crank-rocker",
+        "--k",
+        "1.28",
+        "--swing",
+        "60",
+        "--rocker",
+        "245 mm",
+        "--crank",
+        "100 mm",
+        "--task",
         t.to_str().unwrap(),
     ]);
     assert_eq!(code, 0, "{err}");

@@ -59,7 +59,8 @@ impl TaskSource {
         // serde's wording for a value none of a field's forms accepts names a
         // Rust type; say it in the user's terms
         if msg.contains("untagged enum") {
-            msg = "this value has none of the forms the field accepts (a number, a text with a unit, or the form the docs show for it)".into();
+            msg = "this value has none of the forms the field accepts (a number, a text with a unit, or the form the docs show for it)"
+                .into();
         }
         match e.span() {
             Some(span) => Error::at(self, span, section, msg),

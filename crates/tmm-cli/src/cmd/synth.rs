@@ -160,7 +160,10 @@ impl FunctionGeneration {
     fn fields(&self) -> Vec<(String, RawField)> {
         let mut v = Vec::new();
         if !self.positions.is_empty() {
-            v.push(("positions".to_string(), RawField::List(self.positions.iter().map(|p| split(p)).collect())));
+            v.push((
+                "positions".to_string(),
+                RawField::List(self.positions.iter().map(|p| split(p)).collect()),
+            ));
         }
         if let Some(f) = &self.frame {
             v.push(("frame".to_string(), RawField::Text(f.clone())));

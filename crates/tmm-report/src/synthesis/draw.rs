@@ -119,8 +119,24 @@ pub fn construction(s: &Solved) -> String {
     let clip = (world.0, world.1, world.2, world.3);
     // the circle seen at 2θ (thin dashed), its arc of pivots seen at θ (green)
     if let Some(l) = &k.locus {
-        clipped_arc(&mut c, l.center, l.radius, 0.0, std::f64::consts::TAU, clip, Style::DASHED.colored(GREY));
-        clipped_arc(&mut c, l.center, l.radius, l.arc_start, l.arc_sweep, clip, Style::THIN.colored(GREEN).widened(0.6));
+        clipped_arc(
+            &mut c,
+            l.center,
+            l.radius,
+            0.0,
+            std::f64::consts::TAU,
+            clip,
+            Style::DASHED.colored(GREY),
+        );
+        clipped_arc(
+            &mut c,
+            l.center,
+            l.radius,
+            l.arc_start,
+            l.arc_sweep,
+            clip,
+            Style::THIN.colored(GREEN).widened(0.6),
+        );
         if inside(clip, l.center) {
             c.line(xy(l.center), xy(k.extremes[0]), Style::THIN.colored(GREEN));
             c.line(xy(l.center), xy(k.extremes[1]), Style::THIN.colored(GREEN));
@@ -129,7 +145,11 @@ pub fn construction(s: &Solved) -> String {
             c.line(xy(l.center), xy(mid), Style::AXIS.colored(GREEN));
             // the label on the far side of the centre from the chord
             let off = l.center - mid;
-            let off = if off.hypot() > 0.0 { off * (1.0 / off.hypot()) } else { Vec2::new(0.0, 1.0) };
+            let off = if off.hypot() > 0.0 {
+                off * (1.0 / off.hypot())
+            } else {
+                Vec2::new(0.0, 1.0)
+            };
             c.text_colored(
                 xy(l.center + off * (4.0 / scale) + Vec2::new(0.0, -1.2 / scale)),
                 &format!("O* (2θ = {:.2}°)", 2.0 * y.theta.to_degrees()),

@@ -100,11 +100,7 @@ fn key_of(spec: &Spec, f: &Fields, field: &str) -> String {
 pub fn locate(spec: &Spec, f: &Fields, e: &SynthesisError) -> Error {
     match e {
         SynthesisError::Input { field, message } => f.error(&key_of(spec, f, field), message),
-        SynthesisError::Infeasible {
-            field,
-            condition,
-            nearest,
-        } => {
+        SynthesisError::Infeasible { field, condition, nearest } => {
             let key = key_of(spec, f, field);
             let err = f.error(&key, format!("cannot be met: {condition}"));
             match nearest {
@@ -164,7 +160,9 @@ pub fn drawings(s: &Solved) -> Result<Documents, Error> {
 /// linkage core, with the working stroke the slower one.
 fn compare(task: &TaskSource) -> Result<Option<Comparison>, Error> {
     let Some(l) = crate::linkage::load(task)? else { return Ok(None) };
-    let Ok(c) = Cycle::new(&l.mech, Working::Slower) else { return Ok(None) };
+    let Ok(c) = Cycle::new(&l.mech, Working::Slower) else {
+        return Ok(None);
+    };
     Ok(Some(Comparison { k: c.kv, stroke: c.stroke }))
 }
 
@@ -201,7 +199,9 @@ pub fn with_linkage(task: &TaskSource) -> Result<Cow<'_, TaskSource>, Error> {
     if !table.contains_key("synthesis") || table.contains_key("linkage") {
         return Ok(Cow::Borrowed(task));
     }
-    let Some(f) = Fields::section(task)? else { return Ok(Cow::Borrowed(task)) };
+    let Some(f) = Fields::section(task)? else {
+        return Ok(Cow::Borrowed(task));
+    };
     let s = solve(&f)?;
     let mut text = task.text.clone();
     if !text.ends_with('\n') {
@@ -219,7 +219,6 @@ pub fn stroke_of(st: Option<Stroke>) -> Option<(f64, Dim, &'static str)> {
         Stroke::Angular(p) => Some((p, Dim::Angle, "swing")),
     }
 }
-
 
 #[cfg(test)]
 mod tests {
@@ -267,9 +266,11 @@ mod tests {
 
     #[test]
     fn unknown_and_conflicting_fields_are_named() {
-        let e = solve(&fields("[synthesis]\nkind = \"crank-rocker\"\nk = 1.2\nswing = 40\nrocker = 0.3\noptimum = true\nstroke = 1\n"))
-            .unwrap_err()
-            .to_string();
+        let e = solve(&fields(
+            "[synthesis]\nkind = \"crank-rocker\"\nk = 1.2\nswing = 40\nrocker = 0.3\noptimum = true\nstroke = 1\n",
+        ))
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("t.toml:7:10: synthesis.stroke: not a field of a crank-rocker"), "{e}");
         let e = solve(&fields("[synthesis]\nkind = \"four-bar\"\n")).unwrap_err().to_string();
         assert!(e.contains("synthesis.kind: unknown kind"), "{e}");

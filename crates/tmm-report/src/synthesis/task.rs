@@ -36,9 +36,15 @@ use crate::{Error, TaskSource};
 /// The kinds of `[synthesis]` / `tmm synth KIND`, with what each solves.
 pub const KINDS: &[(&str, &str)] = &[
     ("crank-slider", "crank-slider by the stroke and K (seed 000 § 1.2)"),
-    ("crank-slider-positions", "crank-slider by two crank positions and the travel (seed 000 § 1.2.2)"),
+    (
+        "crank-slider-positions",
+        "crank-slider by two crank positions and the travel (seed 000 § 1.2.2)",
+    ),
     ("crank-rocker", "crank-rocker four-bar by K, rocker and swing (seed 002 ex. 1)"),
-    ("function-generation", "four-bar through given crank and rocker positions (Freudenstein)"),
+    (
+        "function-generation",
+        "four-bar through given crank and rocker positions (Freudenstein)",
+    ),
     ("slotted-lever", "slotted-lever shaper (seed 002 ex. 3)"),
     ("knee-press", "crank-knee press (seed 002 ex. 2)"),
     ("six-bar-inversion", "six-bar by kinematic inversion (seed 002 ex. 4)"),
@@ -224,7 +230,9 @@ impl Fields {
         let Some(v) = self.get(key) else { return Ok(None) };
         let items = self.items(key, v)?;
         if items.len() != 2 {
-            return Err(self.error(key, "expected two coordinates [x, y]").with_help("e.g. [\"0 m\", \"0.2 m\"]"));
+            return Err(self
+                .error(key, "expected two coordinates [x, y]")
+                .with_help("e.g. [\"0 m\", \"0.2 m\"]"));
         }
         Ok(Some(Vec2::new(
             self.convert(key, &items[0], Dim::Length)?,
@@ -266,9 +274,10 @@ impl Fields {
         let used = self.used.borrow();
         if let Some(k) = self.map.keys().find(|k| !used.contains(*k)) {
             let known: Vec<String> = used.iter().filter(|u| *u != "kind").map(|u| self.label(u)).collect();
-            return Err(self
-                .error(k, format!("not a field of a {kind} synthesis"))
-                .with_help(format!("this request used: {}; docs/synthesis.md lists the fields of every kind", known.join(", "))));
+            return Err(self.error(k, format!("not a field of a {kind} synthesis")).with_help(format!(
+                "this request used: {}; docs/synthesis.md lists the fields of every kind",
+                known.join(", ")
+            )));
         }
         Ok(())
     }
@@ -407,7 +416,14 @@ fn limits(f: &Fields) -> Result<Limits, Error> {
 /// The crank pivot condition of a six-bar.
 fn pivot_condition(f: &Fields) -> Result<(PivotCondition, Option<&'static str>), Error> {
     let k = f.one_of(
-        &["crank", "frame", "pivot_max_pressure", "extreme_pressure", "pivot_through", "optimum"],
+        &[
+            "crank",
+            "frame",
+            "pivot_max_pressure",
+            "extreme_pressure",
+            "pivot_through",
+            "optimum",
+        ],
         true,
     )?;
     let c = match k {
@@ -438,7 +454,10 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         _ => {
             return Err(f
                 .error("kind", "missing or not a text: which mechanism to synthesise")
-                .with_help(format!("kind = one of {}", KINDS.iter().map(|k| k.0).collect::<Vec<_>>().join(", "))));
+                .with_help(format!(
+                    "kind = one of {}",
+                    KINDS.iter().map(|k| k.0).collect::<Vec<_>>().join(", ")
+                )));
         }
     };
     let Some(&(kind, _)) = KINDS.iter().find(|k| k.0 == kind_text) else {
@@ -522,7 +541,10 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             let positions = f.angle_pairs("positions")?;
             if positions.len() < 3 {
                 return Err(f
-                    .error("positions", format!("{} positions given; three or more are needed", positions.len()))
+                    .error(
+                        "positions",
+                        format!("{} positions given; three or more are needed", positions.len()),
+                    )
                     .with_help("positions = [[\"30 deg\", \"60 deg\"], [\"60 deg\", \"75 deg\"], [\"90 deg\", \"95 deg\"]]"));
             }
             Request::Function(FunctionRequest {

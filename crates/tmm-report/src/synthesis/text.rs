@@ -53,7 +53,11 @@ pub fn report(s: &Solved, vars: Option<&[Variant]>, cmp: Option<&Comparison>) ->
         show(Dim::Angle, c.transmission_angle_min)
     );
     let _ = writeln!(t, "Assembly: {}", c.branch);
-    let _ = writeln!(t, "Overall size (diagonal at both dead positions): {:.3} mm", y.overall_size() * 1e3);
+    let _ = writeln!(
+        t,
+        "Overall size (diagonal at both dead positions): {:.3} mm",
+        y.overall_size() * 1e3
+    );
     if let Some(c2) = cmp {
         let (dim, word) = match y.stroke {
             Some(tmm_linkage::synthesis::Stroke::Angular(_)) => (Dim::Angle, "swing"),
@@ -92,7 +96,11 @@ pub fn variants(spec: &Spec, v: &[Variant]) -> String {
         for (n, _) in &first.lengths {
             let _ = write!(head, " {:>11}", format!("l_{n}, mm"));
         }
-        let _ = write!(head, " {:>12} {:>9} {:>9} {:>9} {:>10}", "K found", "ϑw, °", "ϑr, °", "γmin, °", "size, mm");
+        let _ = write!(
+            head,
+            " {:>12} {:>9} {:>9} {:>9} {:>10}",
+            "K found", "ϑw, °", "ϑr, °", "γmin, °", "size, mm"
+        );
         t.push_str(&head);
         t.push('\n');
         for (val, r) in &ok {
