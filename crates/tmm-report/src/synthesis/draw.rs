@@ -10,6 +10,8 @@ use tmm_geom::Vec2;
 use tmm_linkage::Mechanism;
 use tmm_linkage::cycle::{Cycle, Working, pressure_angles};
 
+use tmm_linkage::synthesis::Kind;
+
 use super::Solved;
 use crate::Error;
 use crate::output::Documents;
@@ -60,6 +62,49 @@ fn clipped_arc(c: &mut Canvas, center: Vec2, r: f64, a0: f64, sweep: f64, b: Box
     }
 }
 
+/// The positions the drawing shows: the two dead positions, or for a
+/// function generator the given crank angles (solved by the linkage core).
+fn drawn_positions(s: &Solved) -> Vec<Vec<(String, Vec2)>> {
+    let y = &s.syn;
+    if y.kind != Kind::FunctionGeneration {
+        return y.check.dead_positions.clone();
+    }
+    let Ok(m) = Mechanism::new(&y.def) else {
+        return y.check.dead_positions.clone();
+    };
+    let mut sol = m.solution();
+    let phis: Vec<f64> = y.given.iter().filter(|(n, _)| n.starts_with("phi")).map(|(_, p)| *p).collect();
+    // a crank of negative length a turns the crank by π (docs/synthesis.md § 8):
+    // the offset that puts the driven point at the construction's first position
+    let k = &y.construction;
+    let miss = |off: f64, sol: &mut tmm_linkage::Solution| -> f64 {
+        let (Some(&p0), Some(i)) = (phis.first(), m.point(&k.point)) else {
+            return f64::INFINITY;
+        };
+        match m.solve(p0 + off, sol) {
+            Ok(()) => (sol.points[i].p - k.extremes[0]).hypot(),
+            Err(_) => f64::INFINITY,
+        }
+    };
+    let off = if miss(0.0, &mut sol) <= miss(std::f64::consts::PI, &mut sol) {
+        0.0
+    } else {
+        std::f64::consts::PI
+    };
+    phis.iter()
+        .filter_map(|phi| {
+            m.solve(*phi + off, &mut sol).ok()?;
+            Some(
+                m.points
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| (p.name.clone(), sol.points[i].p))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
 /// The construction drawing.
 pub fn construction(s: &Solved) -> String {
     let y = &s.syn;
@@ -70,7 +115,8 @@ pub fn construction(s: &Solved) -> String {
     for p in y.frame.iter().map(|f| f.1).chain(k.extremes).chain([k.pivot]) {
         b = grow(b, p);
     }
-    for pos in &y.check.dead_positions {
+    let shown = drawn_positions(s);
+    for pos in &shown {
         for (_, p) in pos {
             b = grow(b, *p);
         }
@@ -103,15 +149,24 @@ pub fn construction(s: &Solved) -> String {
     let mut c = Canvas::new(297.0, 210.0);
     let scale = c.fit(world, (15.0, 22.0, 267.0, 160.0));
     let txt = 3.5;
+    let function = y.kind == Kind::FunctionGeneration;
     c.text_paper(
         (148.5, 10.0),
-        &format!(
-            "Synthesis of the {}: construction (μl = {:.5} m/mm), K = {:.4}, θ = {:.3}°",
-            s.spec.kind,
-            1.0 / scale,
-            y.k,
-            y.theta.to_degrees()
-        ),
+        &if function {
+            format!(
+                "Synthesis of the function generator: the mechanism at the {} given positions (μl = {:.5} m/mm)",
+                shown.len(),
+                1.0 / scale
+            )
+        } else {
+            format!(
+                "Synthesis of the {}: construction (μl = {:.5} m/mm), K = {:.4}, θ = {:.3}°",
+                s.spec.kind,
+                1.0 / scale,
+                y.k,
+                y.theta.to_degrees()
+            )
+        },
         4.5,
         Anchor::Middle,
         "#000",
@@ -181,12 +236,20 @@ pub fn construction(s: &Solved) -> String {
     }
     // the mechanism at both dead positions
     let colors = [BLUE, RED];
-    for (i, pos) in y.check.dead_positions.iter().enumerate() {
+    let last = shown.len().saturating_sub(1);
+    for (i, pos) in shown.iter().enumerate() {
+        let col = if i == 0 {
+            BLUE
+        } else if i == last {
+            RED
+        } else {
+            GREY
+        };
         let at = |n: &str| pos.iter().find(|(m, _)| m == n).map(|(_, p)| *p);
         for l in &y.def.links {
             let pts: Vec<Vec2> = l.points.iter().filter_map(|(n, _)| at(n)).collect();
             for w in 1..pts.len() {
-                c.line(xy(pts[0]), xy(pts[w]), Style::THICK.colored(colors[i % 2]).widened(0.5));
+                c.line(xy(pts[0]), xy(pts[w]), Style::THICK.colored(col).widened(0.5));
             }
         }
         for l in &y.def.links {
@@ -201,8 +264,10 @@ pub fn construction(s: &Solved) -> String {
     }
     // chord between the extremes, rays from the pivot
     c.line(xy(k.extremes[0]), xy(k.extremes[1]), Style::THIN);
-    c.line(xy(k.pivot), xy(k.extremes[0]), Style::DASHED);
-    c.line(xy(k.pivot), xy(k.extremes[1]), Style::DASHED);
+    if !function {
+        c.line(xy(k.pivot), xy(k.extremes[0]), Style::DASHED);
+        c.line(xy(k.pivot), xy(k.extremes[1]), Style::DASHED);
+    }
     for (i, p) in k.extremes.iter().enumerate() {
         let other = k.extremes[1 - i];
         let away = (*p - other) * (1.0 / (*p - other).hypot().max(1e-12));
@@ -235,7 +300,7 @@ pub fn construction(s: &Solved) -> String {
     }
     for (n, p) in &y.frame {
         c.fixed_pivot(xy(*p), 1.2);
-        let chosen = (*p - k.pivot).hypot() <= 1e-9 * size;
+        let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
         let label = if chosen { format!("{n} (chosen crank pivot)") } else { n.clone() };
         c.text_colored(
             xy(*p + Vec2::new(2.2 / scale, 1.6 / scale)),
@@ -248,8 +313,22 @@ pub fn construction(s: &Solved) -> String {
     c.dot(xy(k.pivot), 1.0, RED);
     // legend
     let leg = [
-        (BLUE, "extreme position ′ (start of the working stroke)"),
-        (RED, "extreme position ″"),
+        (
+            BLUE,
+            if function {
+                "the first given position"
+            } else {
+                "extreme position ′ (start of the working stroke)"
+            },
+        ),
+        (
+            RED,
+            if function {
+                "the last given position"
+            } else {
+                "extreme position ″"
+            },
+        ),
         (GREEN, "circle seen at 2θ from O*, arc of pivots"),
     ];
     let shown = if k.locus.is_some() { 3 } else { 2 };
