@@ -6,6 +6,7 @@
 //!
 //! | module | section | core crate |
 //! | --- | --- | --- |
+//! | [`synthesis`] | `[synthesis]` | `tmm-linkage` (metric synthesis) |
 //! | [`linkage`] | `[linkage]` | `tmm-linkage` (structure, kinematics) |
 //! | [`forces`] | `[forces]` | `tmm-linkage` (kinetostatics, strength) |
 //! | [`dynamics`] | `[dynamics]` | `tmm-linkage` (flywheel, true motion, run-up) |
@@ -28,6 +29,7 @@ pub mod output;
 pub mod planetary;
 pub mod run;
 pub mod svg;
+pub mod synthesis;
 pub mod task;
 
 pub use error::Error;

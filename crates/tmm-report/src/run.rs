@@ -3,7 +3,7 @@
 //! before anything is handed out, so a bad section leaves no partial run.
 
 use crate::output::{Documents, to_json_text};
-use crate::{Error, SectionOutput, TaskSource, cam, dynamics, forces, gear, linkage, planetary};
+use crate::{Error, SectionOutput, TaskSource, cam, dynamics, forces, gear, linkage, planetary, synthesis};
 
 /// The embedded default course project (`tmm run` with no file).
 pub const DEFAULT_TASK: &str = include_str!("../tasks/default.toml");
@@ -15,6 +15,7 @@ type Runner = fn(&TaskSource) -> Result<Option<SectionOutput>, Error>;
 
 /// The sections in the order of the course project.
 const RUNNERS: &[Runner] = &[
+    synthesis::run_section,
     linkage::run_section,
     forces::run_section,
     dynamics::run_section,
@@ -51,6 +52,8 @@ pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
         return Err(Error::input(&task.name, "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[1..].join(", "))));
     }
+    // [synthesis] without [linkage]: the other sections see the synthesised one
+    let task = &*synthesis::with_linkage(task)?;
     let mut sections = Vec::new();
     for run in RUNNERS {
         if let Some(o) = run(task)? {

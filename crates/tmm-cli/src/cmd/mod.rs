@@ -8,3 +8,4 @@ pub mod gear;
 pub mod linkage;
 pub mod planetary;
 pub mod run;
+pub mod synth;
