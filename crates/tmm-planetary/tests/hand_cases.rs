@@ -204,13 +204,15 @@ fn int_int_100_30_28_98() {
 }
 
 /// u = 1.01 is out of reach of sun-planet-ring (u_1H = 1 + z3/z1 > 2): the
-/// ratio-and-coaxiality condition fails first.
+/// ratio-and-coaxiality condition fails first, and the message gives the
+/// reachable range, 2 < u_1H ≤ 1 + zmax/zmin = 1 + 200/17 with the default limits.
 #[test]
 fn impossible_ratio() {
     match synthesize(&Request::new(Scheme::SunPlanetRing, 1.01, 3)) {
         Err(PlanetaryError::NoSolution { condition, message, .. }) => {
             assert_eq!(condition, Condition::RatioCoaxiality);
-            assert!(message.contains("u_1H > 2"), "{message}");
+            assert!(message.contains("2 < u_1H"), "{message}");
+            assert!(message.contains(&format!("{:.4}", 1.0 + 200.0 / 17.0)), "{message}");
         }
         other => panic!("{other:?}"),
     }

@@ -21,7 +21,13 @@ fn linkage_examples() -> Vec<String> {
     let mut out: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|f| f.ends_with(".toml") && std::fs::read_to_string(dir.join(f)).unwrap().contains("[linkage]"))
+        .filter(|f| {
+            f.ends_with(".toml")
+                && std::fs::read_to_string(dir.join(f))
+                    .unwrap()
+                    .lines()
+                    .any(|l| l.trim() == "[linkage]")
+        })
         .collect();
     out.sort();
     out
