@@ -343,29 +343,7 @@ fn build(
     let x_fold = ((l2 - l1).powi(2) - e * e).sqrt();
     let b_ext = Vec2::new(x_ext, yg);
     let b_fold = Vec2::new(x_fold, yg);
-    let def = MechanismDef {
-        fixed: vec![("O".into(), Vec2::ZERO)],
-        links: vec![
-            LinkDef::bar("1", "O", "A", l1),
-            LinkDef::bar("2", "A", "B", l2),
-            LinkDef::block("3", "B"),
-        ],
-        sliders: vec![SliderDef {
-            slider: "3".into(),
-            point: "B".into(),
-            guide_link: crate::model::FRAME.into(),
-            through: Vec2::new(0.0, yg),
-            angle: 0.0,
-            angle_on_slider: 0.0,
-        }],
-        input: Some(InputDef::crank("1", "O", "A", omega)),
-        hints: vec![AssemblyHint {
-            point: "B".into(),
-            kind: HintKind::Near(b_ext),
-        }],
-        assembly_angle: b_ext.atan2() + ASSEMBLY_OFFSET,
-        output: Some("3".into()),
-    };
+    let def = mechanism(l1, l2, yg, omega, b_ext);
     let check = check_cycle(
         &def,
         &Expect {
@@ -493,29 +471,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
     let (l2, omega) = (lam * l1, r.drive.signed_omega()?);
     let x_ext = ((l1 + l2).powi(2) - e * e).sqrt();
     let b_ext = Vec2::new(x_ext, e);
-    let def = MechanismDef {
-        fixed: vec![("O".into(), Vec2::ZERO)],
-        links: vec![
-            LinkDef::bar("1", "O", "A", l1),
-            LinkDef::bar("2", "A", "B", l2),
-            LinkDef::block("3", "B"),
-        ],
-        sliders: vec![SliderDef {
-            slider: "3".into(),
-            point: "B".into(),
-            guide_link: crate::model::FRAME.into(),
-            through: Vec2::new(0.0, e),
-            angle: 0.0,
-            angle_on_slider: 0.0,
-        }],
-        input: Some(InputDef::crank("1", "O", "A", omega)),
-        hints: vec![AssemblyHint {
-            point: "B".into(),
-            kind: HintKind::Near(b_ext),
-        }],
-        assembly_angle: b_ext.atan2() + ASSEMBLY_OFFSET,
-        output: Some("3".into()),
-    };
+    let def = mechanism(l1, l2, e, omega, b_ext);
     let check = check_cycle(&def, &Expect { k: None, stroke: None }, "B on the side x > x_A")?;
     let s_at = |p: f64| -> Result<Vec2, SynthesisError> {
         let pts = super::check::points_at(&crate::mechanism::Mechanism::new(&def)?, p)?;
@@ -572,4 +528,33 @@ fn point_of(check: &super::result::CheckReport, i: usize, name: &str) -> Vec2 {
         .get(i)
         .and_then(|v| v.iter().find(|(n, _)| n == name))
         .map_or(Vec2::ZERO, |(_, p)| *p)
+}
+
+/// The crank-slider O–A–B with the slider block 3 on a horizontal guide at
+/// height `yg` through the frame, assembled with B near `b_ext` (the
+/// extended dead position).
+fn mechanism(l1: f64, l2: f64, yg: f64, omega: f64, b_ext: Vec2) -> MechanismDef {
+    MechanismDef {
+        fixed: vec![("O".into(), Vec2::ZERO)],
+        links: vec![
+            LinkDef::bar("1", "O", "A", l1),
+            LinkDef::bar("2", "A", "B", l2),
+            LinkDef::block("3", "B"),
+        ],
+        sliders: vec![SliderDef {
+            slider: "3".into(),
+            point: "B".into(),
+            guide_link: crate::model::FRAME.into(),
+            through: Vec2::new(0.0, yg),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
+        input: Some(InputDef::crank("1", "O", "A", omega)),
+        hints: vec![AssemblyHint {
+            point: "B".into(),
+            kind: HintKind::Near(b_ext),
+        }],
+        assembly_angle: b_ext.atan2() + ASSEMBLY_OFFSET,
+        output: Some("3".into()),
+    }
 }
