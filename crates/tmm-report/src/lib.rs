@@ -14,7 +14,8 @@
 //! | [`planetary`] | `[planetary]` | `tmm-planetary` |
 //! | [`cam`] | `[cam]` | `tmm-cams` |
 //!
-//! Shared pieces: [`error`] (the one error type, exit codes), [`task`]
+//! [`project`] reads `[project]` (title page, title block, language,
+//! sheet format). Shared pieces: [`error`] (the one error type, exit codes), [`task`]
 //! (sources, quantities with units), [`svg`] (a canvas and a plotter),
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
@@ -27,6 +28,7 @@ pub mod gear;
 pub mod linkage;
 pub mod output;
 pub mod planetary;
+pub mod project;
 pub mod run;
 pub mod svg;
 pub mod synthesis;

@@ -32,6 +32,8 @@ pub struct Run {
     /// The combined JSON report: `"units": "SI"` first, the task's title,
     /// then each section under its name.
     pub report: serde_json::Value,
+    /// The `[project]` data (title page, title block, language, format).
+    pub project: crate::project::Project,
     /// Every file of the run (`report.json` first, then each section's),
     /// paths relative to the output folder.
     pub docs: Documents,
@@ -48,9 +50,10 @@ pub struct Run {
 /// ```
 pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
     let table = task.check_sections()?;
-    if !table.keys().any(|k| k != "title") {
+    let project = crate::project::load(task)?;
+    if !table.keys().any(|k| k != "title" && k != "project") {
         return Err(Error::input(&task.name, "the task file has no section to run")
-            .with_help(format!("add one of {}", crate::task::SECTIONS[1..].join(", "))));
+            .with_help(format!("add one of {}", crate::task::SECTIONS[2..].join(", "))));
     }
     // [synthesis] without [linkage]: the other sections see the synthesised one
     let task = &*synthesis::with_linkage(task)?;
@@ -74,5 +77,10 @@ pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
     for o in &sections {
         docs.append(o.docs.clone());
     }
-    Ok(Run { sections, report, docs })
+    Ok(Run {
+        sections,
+        report,
+        project,
+        docs,
+    })
 }

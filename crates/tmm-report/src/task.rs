@@ -22,7 +22,17 @@ pub struct TaskSource {
 }
 
 /// The top-level sections a task file may have.
-pub const SECTIONS: &[&str] = &["title", "synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam"];
+pub const SECTIONS: &[&str] = &[
+    "title",
+    "project",
+    "synthesis",
+    "linkage",
+    "forces",
+    "dynamics",
+    "gear",
+    "planetary",
+    "cam",
+];
 
 impl TaskSource {
     /// A task from its name and text.
