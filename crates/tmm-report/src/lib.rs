@@ -15,7 +15,7 @@
 //! | [`cam`] | `[cam]` | `tmm-cams` |
 //!
 //! [`project`] reads `[project]` (title page, title block, language,
-//! sheet format). Shared pieces: [`error`] (the one error type, exit codes), [`task`]
+//! sheet format), [`words`] the drawings' words in ru/uk/en. Shared pieces: [`error`] (the one error type, exit codes), [`task`]
 //! (sources, quantities with units), [`svg`] (a canvas and a plotter),
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
@@ -33,6 +33,7 @@ pub mod run;
 pub mod svg;
 pub mod synthesis;
 pub mod task;
+pub mod words;
 
 pub use error::Error;
 pub use output::SectionOutput;

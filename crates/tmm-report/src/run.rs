@@ -49,8 +49,24 @@ pub struct Run {
 /// assert!(run.docs.get("linkage/positions.svg").is_some());
 /// ```
 pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
+    run_task_in(task, None)
+}
+
+/// Run every section, with the drawings' words in `lang` (the `[project]`
+/// language when `None`).
+///
+/// ```
+/// use tmm_report::{TaskSource, project::Language, run::{run_task_in, DEFAULT_TASK}};
+/// let run = run_task_in(&TaskSource::new("t.toml", DEFAULT_TASK), Some(Language::En)).unwrap();
+/// assert_eq!(run.project.lang, Language::En);
+/// ```
+pub fn run_task_in(task: &TaskSource, lang: Option<crate::project::Language>) -> Result<Run, Error> {
     let table = task.check_sections()?;
-    let project = crate::project::load(task)?;
+    let mut project = crate::project::load(task)?;
+    if let Some(l) = lang {
+        project.lang = l;
+    }
+    let task = &task.clone().with_lang(project.lang);
     if !table.keys().any(|k| k != "title" && k != "project") {
         return Err(Error::input(&task.name, "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[2..].join(", "))));

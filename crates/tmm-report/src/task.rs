@@ -19,6 +19,9 @@ pub struct TaskSource {
     pub name: String,
     /// The whole TOML text.
     pub text: String,
+    /// The language of the drawings' words (the `[project]` language, or
+    /// the one asked for on the command line); Russian unless set.
+    pub lang: crate::project::Language,
 }
 
 /// The top-level sections a task file may have.
@@ -40,7 +43,14 @@ impl TaskSource {
         TaskSource {
             name: name.into(),
             text: text.into(),
+            lang: crate::project::Language::default(),
         }
+    }
+
+    /// The same task with the drawings' words in `lang`.
+    pub fn with_lang(mut self, lang: crate::project::Language) -> Self {
+        self.lang = lang;
+        self
     }
 
     /// 1-based line and column of a byte offset; the column counts

@@ -12,7 +12,11 @@ use crate::write::{self, Existing};
 pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
     let text =
         std::fs::read_to_string(path).map_err(|e| Error::input(&path.display().to_string(), format!("cannot read the task file: {e}")))?;
-    Ok(TaskSource::new(path.display().to_string(), text))
+    let task = TaskSource::new(path.display().to_string(), text);
+    // the drawings speak the [project]'s language; a bad [project] is
+    // reported by the section that reads it
+    let lang = tmm_report::project::load(&task).map(|p| p.lang).unwrap_or_default();
+    Ok(task.with_lang(lang))
 }
 
 /// A JSON document as the text printed on stdout, checked for non-finite
