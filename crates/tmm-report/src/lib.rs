@@ -15,7 +15,8 @@
 //! | [`cam`] | `[cam]` | `tmm-cams` |
 //!
 //! [`project`] reads `[project]` (title page, title block, language,
-//! sheet format), [`words`] the drawings' words in ru/uk/en. Shared pieces: [`error`] (the one error type, exit codes), [`task`]
+//! sheet format), [`words`] the drawings' words in ru/uk/en, [`paper`] the drawings'
+//! slots on the sheets, standard scales and round μ. Shared pieces: [`error`] (the one error type, exit codes), [`task`]
 //! (sources, quantities with units), [`svg`] (a canvas and a plotter),
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
@@ -27,6 +28,7 @@ pub mod forces;
 pub mod gear;
 pub mod linkage;
 pub mod output;
+pub mod paper;
 pub mod planetary;
 pub mod project;
 pub mod run;

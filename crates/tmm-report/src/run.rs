@@ -66,7 +66,7 @@ pub fn run_task_in(task: &TaskSource, lang: Option<crate::project::Language>) ->
     if let Some(l) = lang {
         project.lang = l;
     }
-    let task = &task.clone().with_lang(project.lang);
+    let task = &task.clone().with_lang(project.lang).with_sheet(project.sheet);
     if !table.keys().any(|k| k != "title" && k != "project") {
         return Err(Error::input(&task.name, "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[2..].join(", "))));

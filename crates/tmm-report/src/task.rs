@@ -22,6 +22,8 @@ pub struct TaskSource {
     /// The language of the drawings' words (the `[project]` language, or
     /// the one asked for on the command line); Russian unless set.
     pub lang: crate::project::Language,
+    /// The sheet format the drawings are made for (`[project] sheet`).
+    pub sheet: crate::project::SheetFormat,
 }
 
 /// The top-level sections a task file may have.
@@ -44,12 +46,19 @@ impl TaskSource {
             name: name.into(),
             text: text.into(),
             lang: crate::project::Language::default(),
+            sheet: crate::project::SheetFormat::default(),
         }
     }
 
     /// The same task with the drawings' words in `lang`.
     pub fn with_lang(mut self, lang: crate::project::Language) -> Self {
         self.lang = lang;
+        self
+    }
+
+    /// The same task with the drawings made for `sheet`.
+    pub fn with_sheet(mut self, sheet: crate::project::SheetFormat) -> Self {
+        self.sheet = sheet;
         self
     }
 

@@ -15,8 +15,8 @@ pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
     let task = TaskSource::new(path.display().to_string(), text);
     // the drawings speak the [project]'s language; a bad [project] is
     // reported by the section that reads it
-    let lang = tmm_report::project::load(&task).map(|p| p.lang).unwrap_or_default();
-    Ok(task.with_lang(lang))
+    let p = tmm_report::project::load(&task).unwrap_or_default();
+    Ok(task.with_lang(p.lang).with_sheet(p.sheet))
 }
 
 /// A JSON document as the text printed on stdout, checked for non-finite

@@ -209,7 +209,9 @@ pub fn with_linkage(task: &TaskSource) -> Result<Cow<'_, TaskSource>, Error> {
     }
     text.push_str(GENERATED);
     text.push_str(&s.linkage);
-    Ok(Cow::Owned(TaskSource::new(task.name.clone(), text).with_lang(task.lang)))
+    Ok(Cow::Owned(
+        TaskSource::new(task.name.clone(), text).with_lang(task.lang).with_sheet(task.sheet),
+    ))
 }
 
 /// The stroke of a synthesis as (value, dimension, word).
