@@ -28,23 +28,26 @@ impl Style {
         dash: None,
         fill: None,
     };
-    /// Thin solid line (construction, dimension lines).
+    /// Thin solid line (construction, dimension lines): s/3 … s/2 of the
+    /// main line (GOST 2.303), 0.3 mm against 0.7 mm.
     pub const THIN: Style = Style {
-        width: 0.25,
+        width: 0.3,
         color: "#000000",
         dash: None,
         fill: None,
     };
-    /// Thin dash-dot line (centre lines, pitch circles).
+    /// Thin dash-dot line (centre lines, pitch circles): GOST 2.303 dashes of
+    /// 5 … 30 mm with gaps of 3 … 5 mm holding a dot. A dash longer than
+    /// 8 mm (the longest dash of a dashed line) is drawn dash-dot.
     pub const AXIS: Style = Style {
-        width: 0.25,
+        width: 0.3,
         color: "#000000",
-        dash: Some((6.0, 1.5)),
+        dash: Some((10.0, 3.0)),
         fill: None,
     };
-    /// Thin dashed line (hidden or auxiliary).
+    /// Thin dashed line (hidden or auxiliary): dashes of 2 … 8 mm.
     pub const DASHED: Style = Style {
-        width: 0.25,
+        width: 0.3,
         color: "#000000",
         dash: Some((2.0, 1.5)),
         fill: None,
@@ -84,6 +87,12 @@ pub struct Canvas {
     ox: f64,
     oy: f64,
     body: String,
+    /// Attributes of the root element (`data-scale="1:2"`).
+    root: String,
+    /// Every straight piece drawn, on paper (mm, y down): what labels avoid.
+    segs: Vec<((f64, f64), (f64, f64))>,
+    /// The boxes of the texts written and of the places kept free.
+    boxes: Vec<Rect>,
 }
 
 impl Canvas {
@@ -97,6 +106,9 @@ impl Canvas {
             ox: 0.0,
             oy: 0.0,
             body: String::new(),
+            root: String::new(),
+            segs: Vec::new(),
+            boxes: Vec::new(),
         }
     }
 
@@ -140,7 +152,13 @@ impl Canvas {
             s.fill.unwrap_or("none")
         );
         if let Some((d, g)) = s.dash {
-            let _ = write!(a, " stroke-dasharray=\"{d:.2} {g:.2}\"");
+            if d > 8.0 {
+                // dash-dot: the dot in the middle of the gap
+                let h = 0.5 * (g - 0.5).max(0.5);
+                let _ = write!(a, " stroke-dasharray=\"{d:.2} {h:.2} 0.50 {h:.2}\"");
+            } else {
+                let _ = write!(a, " stroke-dasharray=\"{d:.2} {g:.2}\"");
+            }
         }
         a
     }
@@ -152,6 +170,7 @@ impl Canvas {
         }
         let (x1, y1) = self.to_paper(a.0, a.1);
         let (x2, y2) = self.to_paper(b.0, b.1);
+        self.segs.push(((x1, y1), (x2, y2)));
         let _ = writeln!(
             self.body,
             "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {} stroke-linecap=\"round\"/>",
@@ -171,9 +190,21 @@ impl Canvas {
 
     fn poly(&mut self, pts: &[(f64, f64)], s: Style, closed: bool) {
         let mut d = String::new();
+        let mut prev: Option<(f64, f64)> = None;
+        let first = pts
+            .iter()
+            .find(|p| p.0.is_finite() && p.1.is_finite())
+            .map(|p| self.to_paper(p.0, p.1));
         for &(x, y) in pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
             let (px, py) = self.to_paper(x, y);
+            if let Some(q) = prev {
+                self.segs.push((q, (px, py)));
+            }
+            prev = Some((px, py));
             let _ = write!(d, "{px:.3},{py:.3} ");
+        }
+        if let (true, Some(a), Some(b)) = (closed, prev, first) {
+            self.segs.push((a, b));
         }
         if d.is_empty() {
             return;
@@ -276,6 +307,7 @@ impl Canvas {
         }
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = (dx * dx + dy * dy).sqrt();
+        self.segs.push(((x1, y1), (x2, y2)));
         let _ = writeln!(
             self.body,
             "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {}/>",
@@ -322,15 +354,17 @@ impl Canvas {
         };
         let _ = writeln!(
             self.body,
-            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
+            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
             at.0,
             at.1,
             escape(text)
         );
+        self.reserve(text_box(at, size_mm, anchor, text.chars().count()));
     }
 
     /// A line on paper coordinates (mm from the top-left corner).
     pub fn line_paper(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
+        self.segs.push((a, b));
         let _ = writeln!(
             self.body,
             "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" {}/>",
@@ -352,14 +386,302 @@ impl Canvas {
         self.body.push_str("</g>\n");
     }
 
+    /// An attribute of the root element, e.g. `data-scale="1:2"` that the
+    /// sheet's title block reads.
+    pub fn root_attr(&mut self, name: &str, value: &str) {
+        let _ = write!(self.root, " {name}=\"{}\"", escape(value));
+    }
+
+    /// Raw SVG markup appended to the body (a group's opening with data
+    /// attributes, say).
+    pub fn raw(&mut self, markup: &str) {
+        self.body.push_str(markup);
+        self.body.push('\n');
+    }
+
+    /// The paper size, mm.
+    pub fn size(&self) -> (f64, f64) {
+        (self.width, self.height)
+    }
+
+    /// Keep a paper box free of labels placed later.
+    pub fn reserve(&mut self, r: Rect) {
+        self.boxes.push(r);
+    }
+
+    /// Keep a small square around a world point free (a joint, a pole).
+    pub fn reserve_point(&mut self, at: (f64, f64), half_mm: f64) {
+        let (x, y) = self.to_paper(at.0, at.1);
+        self.boxes.push(Rect {
+            x0: x - half_mm,
+            y0: y - half_mm,
+            x1: x + half_mm,
+            y1: y + half_mm,
+        });
+    }
+
+    /// Typeset text (see [`rich`]) at a paper point, its box kept free.
+    pub fn rich_paper(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor, color: &str) {
+        let a = match anchor {
+            Anchor::Start => "start",
+            Anchor::Middle => "middle",
+            Anchor::End => "end",
+        };
+        let _ = writeln!(
+            self.body,
+            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
+            at.0,
+            at.1,
+            rich(text, size_mm)
+        );
+        self.reserve(text_box(at, size_mm, anchor, shown_len(text)));
+    }
+
+    /// A label for the world point `at`: typeset `text` put at the first of
+    /// the places around the point whose box stays inside the paper, clear
+    /// of every other label and of every line drawn so far (a greedy
+    /// placer; draw the lines first, then the labels). Returns the box.
+    pub fn label(&mut self, at: (f64, f64), text: &str, size_mm: f64, color: &str) -> Rect {
+        let p = self.to_paper(at.0, at.1);
+        self.label_paper(p, text, size_mm, color)
+    }
+
+    /// [`Canvas::label`] at a paper point.
+    pub fn label_paper(&mut self, p: (f64, f64), text: &str, size_mm: f64, color: &str) -> Rect {
+        let n = shown_len(text);
+        let w = text_width(size_mm, n);
+        let (up, down) = (TEXT_ASCENT * size_mm, TEXT_DESCENT * size_mm);
+        let h = up + down;
+        let mut best: Option<(usize, f64, (f64, f64))> = None;
+        'search: for d in [0.8, 2.0, 3.5, 5.5, 8.0, 12.0, 17.0] {
+            for k in 0..16 {
+                let th = std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4;
+                let (c, s) = (th.cos(), th.sin());
+                // the box's centre so that its nearest edge is `d` from the point
+                let cx = p.0 + c * (d + 0.5 * w * c.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
+                let cy = p.1 - s * (d + 0.5 * h * s.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
+                let at = (cx, cy + 0.5 * h - down);
+                let r = Rect {
+                    x0: cx - 0.5 * w,
+                    y0: cy - 0.5 * h,
+                    x1: cx + 0.5 * w,
+                    y1: cy + 0.5 * h,
+                };
+                let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
+                let hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
+                    + self.segs.iter().filter(|s| r.cuts(s.0, s.1)).count()
+                    + if inside { 0 } else { 1000 };
+                let cost = d + 0.01 * k as f64;
+                if best.is_none_or(|b| (hits, cost) < (b.0, b.1)) {
+                    best = Some((hits, cost, at));
+                }
+                if hits == 0 {
+                    break 'search;
+                }
+            }
+        }
+        let at = best.map_or(p, |b| b.2);
+        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
+        text_box(at, size_mm, Anchor::Middle, n)
+    }
+
     /// The SVG document.
     pub fn finish(&self) -> String {
         format!(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">\n<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{}</svg>\n",
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\"{r}>\n<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{}</svg>\n",
             self.body,
             w = self.width,
-            h = self.height
+            h = self.height,
+            r = self.root
         )
+    }
+}
+
+/// The lettering's font (GOST 2.304 type A, ISO 3098): the faces that
+/// draw it, in order, then fallbacks; written slanted (`font-style: italic`).
+pub const FONT: &str = "osifont, GOST type A, ISOCPEUR, DejaVu Sans, Arial, sans-serif";
+
+/// The part of the lettering height above the baseline a box counts.
+pub const TEXT_ASCENT: f64 = 0.85;
+/// The part below the baseline (descenders and subscripts).
+pub const TEXT_DESCENT: f64 = 0.35;
+
+/// The estimated width of `n` characters of lettering `size` mm high: 0.6 of
+/// the height per character (GOST 2.304 type A is 5/7 wide at most for
+/// capitals, less for lower case and digits; subscripts are smaller).
+pub fn text_width(size: f64, n: usize) -> f64 {
+    0.6 * size * n as f64
+}
+
+/// A box on paper, mm, y down.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rect {
+    /// Left.
+    pub x0: f64,
+    /// Top.
+    pub y0: f64,
+    /// Right.
+    pub x1: f64,
+    /// Bottom.
+    pub y1: f64,
+}
+
+impl Rect {
+    /// Whether two boxes share an inner point.
+    pub fn overlaps(&self, o: &Rect) -> bool {
+        self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
+    }
+
+    /// Whether the segment `a`–`b` passes through the box (Liang–Barsky clipping).
+    pub fn cuts(&self, a: (f64, f64), b: (f64, f64)) -> bool {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        for (p, q) in [(-dx, a.0 - self.x0), (dx, self.x1 - a.0), (-dy, a.1 - self.y0), (dy, self.y1 - a.1)] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return false;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+            }
+        }
+        t0 < t1
+    }
+}
+
+/// The box of a text of `n` characters written at `at` (its baseline point).
+pub fn text_box(at: (f64, f64), size: f64, anchor: Anchor, n: usize) -> Rect {
+    let w = text_width(size, n);
+    let x0 = match anchor {
+        Anchor::Start => at.0,
+        Anchor::Middle => at.0 - 0.5 * w,
+        Anchor::End => at.0 - w,
+    };
+    Rect {
+        x0,
+        y0: at.1 - TEXT_ASCENT * size,
+        x1: x0 + w,
+        y1: at.1 + TEXT_DESCENT * size,
+    }
+}
+
+/// The number of characters [`rich`] shows for `s` (the markup `^ _ { }` dropped).
+pub fn shown_len(s: &str) -> usize {
+    s.chars().filter(|c| !matches!(c, '^' | '_' | '{' | '}')).count()
+}
+
+/// Typeset a label of the course's notation as SVG text content: `^x` puts
+/// `x` up (a superscript), `_x` down (a subscript) up to the next space,
+/// `^`, `_` or the closing brace of `_{…}`. `a^τ_CB` is a, τ raised and CB
+/// lowered; `R_{12}` is R with 12 lowered; plain text stays as it is.
+///
+/// ```
+/// let t = tmm_report::svg::rich("a^τ_CB", 5.0);
+/// assert!(t.starts_with("a<tspan") && t.contains(">τ</tspan>") && t.contains(">CB</tspan>"));
+/// assert_eq!(tmm_report::svg::rich("p", 5.0), "p");
+/// ```
+pub fn rich(s: &str, size: f64) -> String {
+    #[derive(PartialEq, Clone, Copy)]
+    enum Level {
+        Base,
+        Up,
+        Down,
+    }
+    let shift = |l: Level| match l {
+        Level::Base => 0.0,
+        Level::Up => -0.4 * size,
+        Level::Down => 0.25 * size,
+    };
+    let mut out = String::new();
+    let mut level = Level::Base;
+    let mut run = String::new();
+    let mut at = 0.0f64; // the current baseline shift
+    let mut braced = false;
+    let flush = |out: &mut String, run: &mut String, level: Level, at: &mut f64| {
+        if run.is_empty() {
+            return;
+        }
+        if level == Level::Base && *at == 0.0 {
+            out.push_str(&escape(run));
+        } else {
+            let dy = shift(level) - *at;
+            let fs = if level == Level::Base { size } else { 0.7 * size };
+            let _ = write!(out, "<tspan dy=\"{dy:.2}\" font-size=\"{fs:.2}\">{}</tspan>", escape(run));
+            *at = shift(level);
+        }
+        run.clear();
+    };
+    for ch in s.chars() {
+        match ch {
+            '^' | '_' => {
+                flush(&mut out, &mut run, level, &mut at);
+                level = if ch == '^' { Level::Up } else { Level::Down };
+                braced = false;
+            }
+            '{' if level != Level::Base && run.is_empty() => braced = true,
+            '}' if braced => {
+                flush(&mut out, &mut run, level, &mut at);
+                level = Level::Base;
+                braced = false;
+            }
+            ' ' if level != Level::Base && !braced => {
+                flush(&mut out, &mut run, level, &mut at);
+                level = Level::Base;
+                run.push(' ');
+            }
+            c => run.push(c),
+        }
+    }
+    flush(&mut out, &mut run, level, &mut at);
+    if at != 0.0 {
+        let _ = write!(out, "<tspan dy=\"{:.2}\"></tspan>", -at);
+    }
+    out
+}
+
+/// A number as printed on a drawing in `lang`: `decimals` places, trailing
+/// zeros dropped, a decimal comma in Russian and Ukrainian.
+///
+/// ```
+/// use tmm_report::{project::Language, svg::num};
+/// assert_eq!(num(0.05, 4, Language::Ru), "0,05");
+/// assert_eq!(num(200.0, 2, Language::En), "200");
+/// assert_eq!(num(-1.26, 1, Language::Uk), "-1,3");
+/// ```
+pub fn num(x: f64, decimals: usize, lang: crate::project::Language) -> String {
+    let mut t = format!("{x:.decimals$}");
+    if t.contains('.') {
+        t = t.trim_end_matches('0').trim_end_matches('.').to_string();
+    }
+    if t == "-0" {
+        t = "0".into();
+    }
+    comma(&t, lang)
+}
+
+/// A round scale factor μ as printed: its shortest exact decimal form.
+///
+/// ```
+/// use tmm_report::{project::Language, svg::mu_text};
+/// assert_eq!(mu_text(0.0025, Language::Ru), "0,0025");
+/// assert_eq!(mu_text(200.0, Language::En), "200");
+/// ```
+pub fn mu_text(mu: f64, lang: crate::project::Language) -> String {
+    // the round μ are 1, 2, 2.5, 4, 5 × 10^k: ten significant places hold them exactly
+    let d = (10 - mu.abs().log10().floor() as i32).clamp(0, 16) as usize;
+    num(mu, d, lang)
+}
+
+/// The decimal point of a printed number turned into a comma for ru and uk.
+pub fn comma(t: &str, lang: crate::project::Language) -> String {
+    match lang {
+        crate::project::Language::En => t.to_string(),
+        _ => t.replace('.', ","),
     }
 }
 
@@ -486,7 +808,7 @@ pub fn plot_with_impulses(
     c.text_paper(((ax0 + ax1) / 2.0, height - 3.0), xlabel, 3.0, Anchor::Middle, "#000");
     let _ = writeln!(
         c.body,
-        "<text x=\"5\" y=\"{:.2}\" font-size=\"3\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"middle\" transform=\"rotate(-90 5 {:.2})\">{}</text>",
+        "<text x=\"5\" y=\"{:.2}\" font-size=\"3.5\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"middle\" transform=\"rotate(-90 5 {:.2})\">{}</text>",
         height / 2.0,
         height / 2.0,
         escape(ylabel)

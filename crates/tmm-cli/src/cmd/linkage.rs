@@ -16,7 +16,7 @@ use super::common::{checked, json_text, print, read_task, write_dir, written};
 pub struct Args {
     /// The task file (TOML) with a [linkage] section
     pub file: PathBuf,
-    /// One crank angle only: the absolute angle of the crank from the x-axis, counter-clockwise (e.g. 15, "15 deg", "0.26 rad")
+    /// One crank angle only: the absolute angle of the crank from the x-axis, counter-clockwise (e.g. 15, "15 deg", "0.26 rad"); or "all": the table of every position and, with --svg, the velocity and acceleration plans of each (plan-velocity-N.svg, plan-acceleration-N.svg)
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Number of equally spaced positions from the dead position that starts the working stroke (default: the file's, else 12)
@@ -35,7 +35,9 @@ pub fn run(a: &Args) -> Result<(), Error> {
     let task = read_task(&a.file)?;
     let l = load(&task)?
         .ok_or_else(|| Error::input(&task.name, "the file has no [linkage] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let all = a.at.as_deref().is_some_and(|t| t.trim().eq_ignore_ascii_case("all"));
     let at = match &a.at {
+        Some(_) if all => None,
         Some(t) => Some(arg_qty("--at", t, Dim::Angle)?),
         None => None,
     };
@@ -53,7 +55,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
         checked(text_report(&l, &an))?
     };
     let files = match &a.svg {
-        Some(dir) => write_dir(dir, &drawings(&l, &an)?)?,
+        Some(dir) => write_dir(dir, &drawings(&l, &an, &task, all)?)?,
         None => Vec::new(),
     };
     print(&if a.json { out } else { out + &written(&files) })

@@ -1,6 +1,10 @@
-//! Drawings of the `[linkage]` section: the mechanism in its positions
-//! overlaid, the kinematic diagrams of the output, and the velocity and
-//! acceleration plans with their scale factors μ.
+//! Drawings of the `[linkage]` section as the course draws them: the
+//! kinematic scheme in its 12 positions at a GOST 2.302 standard scale
+//! (joints lettered, links numbered, ω1 arrow, smooth paths of the points),
+//! the kinematic diagrams over the crank's positions 0 … 12 with their scale
+//! factors μ, and the velocity and acceleration plans (poles p and π, images
+//! a, b, c, s2, points n1, n2 …) at round μ_v and μ_a — each made in paper
+//! millimetres for its slot on the sheet ([`crate::paper::slot_mm`]).
 
 use tmm_geom::Vec2;
 use tmm_linkage::Solution;
@@ -8,108 +12,100 @@ use tmm_linkage::mechanism::Pair;
 use tmm_linkage::plans::{PlanVector, VectorKind};
 
 use super::{Analysis, Loaded};
-use crate::Error;
 use crate::output::Documents;
-use crate::svg::{Anchor, Canvas, Series, Style, nice_ticks, plot};
+use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
+use crate::project::Language;
+use crate::svg::{Anchor, Canvas, Style, comma, mu_text, num};
+use crate::words::word;
+use crate::{Error, TaskSource};
+
+/// Lettering heights, mm (GOST 2.304): titles, labels, small marks.
+const H_TITLE: f64 = 5.0;
+const H_LABEL: f64 = 3.5;
+const H_SMALL: f64 = 2.5;
+
+/// Which plans to draw for which positions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlansAt {
+    /// The plans of the analysed position only (`velocity-plan.svg`, `acceleration-plan.svg`).
+    One,
+    /// Also a plan of each position of the table (`plan-velocity-N.svg`, `plan-acceleration-N.svg`).
+    All,
+}
 
 /// Every drawing, as documents whose paths start with `dir` (`"linkage/"` gives `linkage/positions.svg`).
-pub fn draw_all(l: &Loaded, a: &Analysis, dir: &str, docs: &mut Documents) -> Result<(), Error> {
-    docs.add_text(format!("{dir}positions.svg"), positions(l, a))?;
-    let w = l.mech.crank.omega.abs();
-    let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
-    let (su, vu) = if lin { ("s, m", "m") } else { ("s, rad", "rad") };
-    let (ds_label, dds_label) = (format!("ds/dφ, {vu}"), format!("d²s/dφ², {vu}"));
-    /// One kinematic diagram: file, title, axis labels, curve, colour, and
-    /// how a sample (ψ, s, ds/dφ, d²s/dφ²) maps to a point given |ω1|.
-    struct Diagram<'a> {
-        file: &'a str,
-        title: &'a str,
-        x_label: &'a str,
-        y_label: &'a str,
-        name: &'a str,
-        color: &'static str,
-        x: fn(&[f64; 4], f64) -> f64,
-        y: fn(&[f64; 4], f64) -> f64,
+pub fn draw_all(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, docs: &mut Documents) -> Result<(), Error> {
+    draw_with(l, a, task, dir, PlansAt::One, docs)
+}
+
+/// [`draw_all`] with the plans of every position when `plans` is [`PlansAt::All`].
+pub fn draw_with(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, plans: PlansAt, docs: &mut Documents) -> Result<(), Error> {
+    let lang = task.lang;
+    docs.add_text(format!("{dir}positions.svg"), scheme(l, a, task))?;
+    for d in diagrams(l, a, task) {
+        docs.add_text(format!("{dir}{}", d.0), d.1)?;
     }
-    let by_angle = |d: &[f64; 4], _: f64| d[0].to_degrees();
-    let by_time = |d: &[f64; 4], w: f64| d[0] / w;
-    let diagrams = [
-        Diagram {
-            file: "diagram-s.svg",
-            title: "Output displacement s(φ)",
-            x_label: "crank rotation from the start φ, °",
-            y_label: su,
-            name: "s",
-            color: "#1f4e9c",
-            x: by_angle,
-            y: |d, _| d[1],
-        },
-        Diagram {
-            file: "diagram-ds.svg",
-            title: "Velocity analog ds/dφ",
-            x_label: "φ, °",
-            y_label: &ds_label,
-            name: "ds/dφ",
-            color: "#c0392b",
-            x: by_angle,
-            y: |d, _| d[2],
-        },
-        Diagram {
-            file: "diagram-dds.svg",
-            title: "Acceleration analog d²s/dφ²",
-            x_label: "φ, °",
-            y_label: &dds_label,
-            name: "d²s/dφ²",
-            color: "#27ae60",
-            x: by_angle,
-            y: |d, _| d[3],
-        },
-        Diagram {
-            file: "diagram-v.svg",
-            title: "Output velocity v(t)",
-            x_label: "t, s",
-            y_label: if lin { "v, m/s" } else { "ω, rad/s" },
-            name: "v",
-            color: "#c0392b",
-            x: by_time,
-            y: |d, w| d[2] * w,
-        },
-        Diagram {
-            file: "diagram-a.svg",
-            title: "Output acceleration a(t)",
-            x_label: "t, s",
-            y_label: if lin { "a, m/s²" } else { "ε, rad/s²" },
-            name: "a",
-            color: "#27ae60",
-            x: by_time,
-            y: |d, w| d[3] * w * w,
-        },
-    ];
-    for g in diagrams {
-        let points: Vec<(f64, f64)> = a.diagram.iter().map(|d| ((g.x)(d, w), (g.y)(d, w))).collect();
-        let series = [Series {
-            name: g.name,
-            points: &points,
-            color: g.color,
-        }];
-        docs.add_text(
-            format!("{dir}{}", g.file),
-            plot(g.title, g.x_label, g.y_label, &series, 200.0, 120.0),
-        )?;
-    }
+    let pos = bold_label(a, lang);
     docs.add_text(
         format!("{dir}velocity-plan.svg"),
-        plan("Velocity plan", "p", "m/s", &a.plans.velocity, a.plan_row.pos.phi),
+        plan(task, Kind::Velocity, &a.plans.velocity, &pos),
     )?;
     docs.add_text(
         format!("{dir}acceleration-plan.svg"),
-        plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi),
+        plan(task, Kind::Acceleration, &a.plans.acceleration, &pos),
     )?;
+    if plans == PlansAt::All {
+        for r in &a.rows {
+            let p = tmm_linkage::plans::plans(&l.mech, &r.sol);
+            let name = r.pos.label.replace('\'', "p");
+            let label = position_text(lang, &r.pos.label);
+            docs.add_text(
+                format!("{dir}plan-velocity-{name}.svg"),
+                plan(task, Kind::Velocity, &p.velocity, &label),
+            )?;
+            docs.add_text(
+                format!("{dir}plan-acceleration-{name}.svg"),
+                plan(task, Kind::Acceleration, &p.acceleration, &label),
+            )?;
+        }
+    }
     Ok(())
 }
 
-/// Segments of each link between its joints, at one solution.
-fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(Vec2, Vec2)> {
+/// "position 1" in the drawing's language.
+fn position_text(lang: Language, label: &str) -> String {
+    format!("{} {label}", word(lang, "linkage.position"))
+}
+
+/// The index in the table of the position drawn bold (the plans' one), if it is one of them.
+fn bold_index(a: &Analysis) -> Option<usize> {
+    a.rows.iter().position(|r| {
+        let d = (r.pos.phi - a.plan_row.pos.phi).rem_euclid(std::f64::consts::TAU);
+        d.min(std::f64::consts::TAU - d) < 1e-9
+    })
+}
+
+fn bold_label(a: &Analysis, lang: Language) -> String {
+    bold_index(a).map_or_else(
+        || format!("φ_1 = {}°", num(a.plan_row.pos.phi.to_degrees(), 1, lang)),
+        |i| a.rows[i].pos.label.clone(),
+    )
+}
+
+/// A point's name typeset: trailing digits lowered (`S2` → `S_2`), in the
+/// case asked.
+fn typeset_name(name: &str, lower: bool) -> String {
+    let n = if lower { name.to_lowercase() } else { name.to_string() };
+    let cut = n.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+    if cut > 0 && cut < n.len() {
+        format!("{}_{}", &n[..cut], &n[cut..])
+    } else {
+        n
+    }
+}
+
+/// Segments of each link between its joints, at one solution, with the link's index.
+fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(usize, Vec2, Vec2)> {
     let m = &l.mech;
     let mut segs = Vec::new();
     for li in 1..m.link_names.len() {
@@ -126,7 +122,7 @@ fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(Vec2, Vec2)> {
         for i in 0..joints.len() {
             for j in i + 1..joints.len() {
                 if joints.len() <= 3 || j == i + 1 {
-                    segs.push((joints[i], joints[j]));
+                    segs.push((li, joints[i], joints[j]));
                 }
             }
         }
@@ -134,65 +130,130 @@ fn link_segments(l: &Loaded, sol: &Solution) -> Vec<(Vec2, Vec2)> {
     segs
 }
 
-fn positions(l: &Loaded, a: &Analysis) -> String {
+fn xy(v: Vec2) -> (f64, f64) {
+    (v.x, v.y)
+}
+
+/// The scheme in its positions (схема механизма): a standard scale, the
+/// paths of the joints sampled every degree, the positions numbered at the
+/// crank pin, the analysed one bold with its joints lettered and its links
+/// numbered, the ω1 arrow.
+fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
+    let lang = task.lang;
     let m = &l.mech;
-    let mut pts: Vec<Vec2> = Vec::new();
-    for r in &a.rows {
-        pts.extend(r.sol.points.iter().map(|p| p.p));
+    let (w, h) = slot_mm(Slot::Scheme, task.sheet);
+    // the paths, densely: every point of a moving link that is a joint
+    let joints: Vec<usize> = (0..m.points.len())
+        .filter(|&k| m.points[k].link != 0 && m.pairs.iter().any(|pr| pr.point() == k))
+        .collect();
+    let mut paths: Vec<Vec<(f64, f64)>> = vec![Vec::new(); joints.len()];
+    let mut sol = m.solution();
+    let sg = m.crank.omega.signum();
+    for k in 0..=720 {
+        let phi = a.cycle.start + sg * std::f64::consts::TAU * k as f64 / 720.0;
+        let ok = m.solve(phi, &mut sol).is_ok();
+        for (j, &p) in joints.iter().enumerate() {
+            // a gap where the crank cannot turn stays a gap
+            paths[j].push(if ok { xy(sol.points[p].p) } else { (f64::NAN, f64::NAN) });
+        }
     }
-    let (xmin, xmax) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
-    let (ymin, ymax) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
-    let mut c = Canvas::new(297.0, 210.0);
-    let scale = c.fit((xmin, xmax, ymin, ymax), (15.0, 20.0, 267.0, 165.0));
-    c.text_paper(
-        (148.5, 10.0),
-        &format!(
-            "Mechanism in {} positions (μl = {:.5} m/mm); bold: φ = {:.2}°",
-            a.rows.len(),
-            1.0 / scale,
-            a.plan_row.pos.phi.to_degrees()
-        ),
-        4.0,
-        Anchor::Middle,
-        "#000",
+    let mut pts: Vec<(f64, f64)> = paths.iter().flatten().copied().filter(|p| p.0.is_finite()).collect();
+    for r in &a.rows {
+        pts.extend(r.sol.points.iter().map(|p| xy(p.p)));
+    }
+    pts.extend(a.plan_row.sol.points.iter().map(|p| xy(p.p)));
+    let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for p in &pts {
+        xmin = xmin.min(p.0);
+        xmax = xmax.max(p.0);
+        ymin = ymin.min(p.1);
+        ymax = ymax.max(p.1);
+    }
+    // room for the guides, the labels and the title
+    let margin = 22.0;
+    let top = 16.0;
+    let sx = standard_scale((xmax - xmin).max(1e-6) * 1e3, w - 2.0 * margin);
+    let sy = standard_scale((ymax - ymin).max(1e-6) * 1e3, h - 2.0 * margin - top);
+    let scale = match (sx, sy) {
+        (Some(x), Some(y)) => {
+            if x.factor <= y.factor {
+                x
+            } else {
+                y
+            }
+        }
+        (Some(s), None) | (None, Some(s)) => s,
+        (None, None) => crate::paper::Scale { factor: 1.0, text: "1:1" },
+    };
+    let s = scale.factor * 1e3; // paper mm per metre
+    let mut c = Canvas::new(w, h);
+    let cx = 0.5 * w - s * 0.5 * (xmin + xmax);
+    let cy = 0.5 * (h - top) - s * 0.5 * (ymin + ymax);
+    c.set_transform(s, (cx, cy));
+    c.root_attr("data-scale", scale.text);
+    c.root_attr("data-mu-l", &format!("{}", 1.0 / s));
+    let title = format!(
+        "{}, {} {},  μ_l = {} {}",
+        word(lang, "linkage.scheme"),
+        word(lang, "linkage.scale_short"),
+        comma(scale.text, lang),
+        mu_text(1.0 / s, lang),
+        word(lang, "linkage.m_per_mm")
     );
-    let xy = |v: Vec2| (v.x, v.y);
-    // trajectories of the joints
-    for (k, p) in m.points.iter().enumerate() {
-        if p.link == 0 || !m.pairs.iter().any(|pr| pr.point() == k) {
+    c.rich_paper((0.5 * w, 9.0), &title, H_TITLE, Anchor::Middle, "#000");
+    c.begin_group("paths");
+    for p in &paths {
+        c.polyline(p, Style::THIN);
+    }
+    c.end_group();
+    let bold = bold_index(a);
+    c.begin_group("positions");
+    for (i, r) in a.rows.iter().enumerate() {
+        if Some(i) == bold {
             continue;
         }
-        let tr: Vec<(f64, f64)> = a.rows.iter().map(|r| xy(r.sol.points[k].p)).collect();
-        c.polyline(&tr, Style::DASHED.colored("#999999"));
-    }
-    for r in &a.rows {
-        for (p, q) in link_segments(l, &r.sol) {
-            c.line(xy(p), xy(q), Style::THIN.colored("#7f8c8d"));
-        }
-        if let Some(k) = m.points.iter().position(|p| p.name == m.points[m.crank.pin].name) {
-            let pp = r.sol.points[k].p;
-            c.text_colored((pp.x, pp.y), &r.pos.label, 2.5, Anchor::Start, "#555");
+        for (_, p, q) in link_segments(l, &r.sol) {
+            c.line(xy(p), xy(q), Style::THIN);
         }
     }
+    c.end_group();
     let sol = &a.plan_row.sol;
-    for (p, q) in link_segments(l, sol) {
-        c.line(xy(p), xy(q), Style::THICK);
+    c.begin_group("bold-position");
+    let segs = link_segments(l, sol);
+    for (_, p, q) in &segs {
+        c.line(xy(*p), xy(*q), Style::THICK);
     }
-    // guides
+    // guides and sliders
+    let mut sliders: Vec<(usize, Vec2)> = Vec::new();
     for pr in &m.pairs {
-        if let Pair::P { guide, point, q, d, .. } = *pr {
+        if let Pair::P {
+            guide,
+            point,
+            q,
+            d,
+            slider,
+            ..
+        } = *pr
+        {
             let g = &sol.links[guide];
             let qq = g.pos(q);
             let dd = tmm_linkage::state::rot(g.u, d);
             let sp = sol.points[point].p;
             let t = (sp - qq).dot(dd);
-            let span = 0.25 * (xmax - xmin).max(ymax - ymin);
-            c.line(xy(qq + dd * (t - span)), xy(qq + dd * (t + span)), Style::AXIS);
-            let half = 3.0 / scale;
+            if guide == 0 {
+                // the fixed guide over the slider's stroke, 10 mm beyond each end
+                let (mut t0, mut t1) = (t, t);
+                if let Some(j) = joints.iter().position(|&k| k == point) {
+                    for &(x, y) in paths[j].iter().filter(|p| p.0.is_finite()) {
+                        let tt = (Vec2::new(x, y) - qq).dot(dd);
+                        t0 = t0.min(tt);
+                        t1 = t1.max(tt);
+                    }
+                }
+                let ext = 10.0 / s;
+                c.line(xy(qq + dd * (t0 - ext)), xy(qq + dd * (t1 + ext)), Style::AXIS);
+            }
+            let half = 4.0 / s;
             let n = Vec2::new(-dd.y, dd.x);
             let corners = [
                 sp + dd * half + n * half * 0.6,
@@ -200,89 +261,362 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
                 sp - dd * half - n * half * 0.6,
                 sp + dd * half - n * half * 0.6,
             ];
-            c.polygon(&corners.map(xy), Style::THICK.widened(0.5).filled("#ffffff"));
+            c.polygon(&corners.map(xy), Style::THICK.filled("#ffffff"));
+            sliders.push((slider, sp + n * half * 0.6));
         }
     }
+    // ω1: an arc arrow around the crank's pivot
+    let piv = m.crank.pivot;
+    let pin_angle = {
+        let pin = sol.points[m.crank.pin].p - piv;
+        pin.y.atan2(pin.x)
+    };
+    let r_arc = (0.45 * m.crank.radius * s).clamp(7.0, 14.0) / s;
+    let (a0, a1) = if sg > 0.0 {
+        (pin_angle + 0.5, pin_angle + 2.2)
+    } else {
+        (pin_angle - 0.5, pin_angle - 2.2)
+    };
+    c.arc(xy(piv), r_arc, a0, a1, Style::THIN);
+    let tip = piv + Vec2::new(a1.cos(), a1.sin()) * r_arc;
+    let back_a = a1 - sg * 0.25;
+    let back = piv + Vec2::new(back_a.cos(), back_a.sin()) * r_arc;
+    c.arrow(xy(back), xy(tip), Style::THIN, 3.0);
+    c.end_group();
+    // joints
     for (k, p) in m.points.iter().enumerate() {
         let pos = sol.points[k].p;
         let is_joint = m.pairs.iter().any(|pr| pr.point() == k);
         if p.link == 0 {
-            c.fixed_pivot(xy(pos), 1.3);
+            c.fixed_pivot(xy(pos), 1.5);
         } else if is_joint {
-            c.joint(xy(pos), 1.0);
+            c.joint(xy(pos), 1.2);
         } else {
-            c.dot(xy(pos), 0.6, "#000000");
+            c.dot(xy(pos), 0.7, "#000000");
         }
-        // a label once per place (a centre of mass at a joint keeps the joint's name)
-        let first_here = m
-            .points
-            .iter()
-            .enumerate()
-            .position(|(j, _)| (sol.points[j].p - pos).hypot() * scale < 1.0)
-            == Some(k);
+        c.reserve_point(xy(pos), 2.0);
+    }
+    for r in &a.rows {
+        c.reserve_point(xy(r.sol.points[m.crank.pin].p), 0.6);
+    }
+    // labels: joints, the ω1 arrow, link numbers, position numbers
+    c.begin_group("labels");
+    for (k, p) in m.points.iter().enumerate() {
+        let pos = sol.points[k].p;
+        let first_here = (0..m.points.len()).position(|j| (sol.points[j].p - pos).hypot() * s < 1.0) == Some(k);
         if first_here {
-            c.text((pos.x + 2.0 / scale, pos.y + 2.0 / scale), &p.name, 3.2, Anchor::Start);
+            c.label(xy(pos), &typeset_name(&p.name, false), H_LABEL, "#000");
         }
+    }
+    let mid_a = 0.5 * (a0 + a1);
+    c.label(xy(piv + Vec2::new(mid_a.cos(), mid_a.sin()) * r_arc), "ω_1", H_LABEL, "#000");
+    let mut numbered: Vec<usize> = Vec::new();
+    for (li, p, q) in &segs {
+        if !numbered.contains(li) {
+            numbered.push(*li);
+            c.label(xy((*p + *q) * 0.5), &m.link_names[*li], H_TITLE, "#000");
+        }
+    }
+    for (li, at) in sliders {
+        if !numbered.contains(&li) {
+            numbered.push(li);
+            c.label(xy(at), &m.link_names[li], H_TITLE, "#000");
+        }
+    }
+    for r in &a.rows {
+        c.label(xy(r.sol.points[m.crank.pin].p), &r.pos.label, H_SMALL, "#000");
+    }
+    if bold.is_none() {
+        // the plans' position is not one of the table's: its angle beside its crank pin
+        c.label(xy(sol.points[m.crank.pin].p), &bold_label(a, lang), H_SMALL, "#000");
+    }
+    c.end_group();
+    c.finish()
+}
+
+/// The kinematic diagrams: (file, SVG).
+fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, String)> {
+    let lang = task.lang;
+    let w = l.mech.crank.omega.abs();
+    let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
+    let out = &l.mech.link_names[l.mech.output];
+    let u = |k: &str| word(lang, k).to_string();
+    let (su, vu, au, dsu) = if lin {
+        (
+            u("linkage.unit_m"),
+            u("linkage.unit_mps"),
+            u("linkage.unit_mps2"),
+            u("linkage.unit_m"),
+        )
+    } else {
+        (
+            u("linkage.unit_rad"),
+            u("linkage.unit_radps"),
+            u("linkage.unit_radps2"),
+            u("linkage.unit_rad"),
+        )
+    };
+    let (sym_s, sym_v, sym_a) = if lin {
+        ("s".to_string(), "v".to_string(), "a".to_string())
+    } else {
+        (format!("ψ_{out}"), format!("ω_{out}"), format!("ε_{out}"))
+    };
+    type Pick = fn(&[f64; 4], f64) -> f64;
+    let list: [(&'static str, &str, String, String, Pick); 5] = [
+        ("diagram-s.svg", "linkage.diagram_s", sym_s.clone(), su, |d, _| d[1]),
+        (
+            "diagram-ds.svg",
+            "linkage.diagram_ds",
+            format!("d{sym_s}/dφ"),
+            dsu.clone(),
+            |d, _| d[2],
+        ),
+        ("diagram-dds.svg", "linkage.diagram_dds", format!("d²{sym_s}/dφ²"), dsu, |d, _| d[3]),
+        ("diagram-v.svg", "linkage.diagram_v", sym_v, vu, |d, w| d[2] * w),
+        ("diagram-a.svg", "linkage.diagram_a", sym_a, au, |d, w| d[3] * w * w),
+    ];
+    list.into_iter()
+        .map(|(file, title, sym, unit, pick)| {
+            let pts: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0].to_degrees(), pick(d, w))).collect();
+            let marks: Vec<(f64, String)> = a.rows.iter().map(|r| (r.pos.psi.to_degrees(), r.pos.label.clone())).collect();
+            (file, cycle_diagram(task, word(lang, title), &sym, &unit, &pts, &marks, w))
+        })
+        .collect()
+}
+
+/// A diagram over one revolution of the crank: the φ axis 0 … 360° marked
+/// with the positions (0 … 12), the quantity's axis at a round μ, both μ
+/// and the time's μ_t = μ_φ/ω1 written under the title.
+fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(f64, f64)], marks: &[(f64, String)], omega: f64) -> String {
+    let lang = task.lang;
+    let (w, h) = slot_mm(Slot::Diagram, task.sheet);
+    let mut c = Canvas::new(w, h);
+    let (left, right, top, bottom) = (24.0, 16.0, 22.0, 14.0);
+    // x: 360° at a round μ_φ (° per mm)
+    let mu_phi = round_mu(360.0 / (w - left - right));
+    let (mut ymin, mut ymax) = (0.0f64, 0.0f64);
+    for p in pts.iter().filter(|p| p.1.is_finite()) {
+        ymin = ymin.min(p.1);
+        ymax = ymax.max(p.1);
+    }
+    if ymax - ymin < 1e-300 {
+        ymax = ymin + 1.0;
+    }
+    let avail = h - top - bottom;
+    let mu_y = round_mu((ymax - ymin) / avail);
+    // the zero line: the curve centred in the height available
+    let used = (ymax - ymin) / mu_y;
+    let y_zero = top + 0.5 * (avail - used) + ymax / mu_y; // paper y of value 0
+    let map = |x: f64, y: f64| (left + x / mu_phi, y_zero - y / mu_y);
+    c.rich_paper((0.5 * w, 7.0), title, H_TITLE, Anchor::Middle, "#000");
+    let deg = word(lang, "linkage.unit_deg_per_mm");
+    let mu_t = mu_phi.to_radians() / omega;
+    let scales = format!(
+        "μ_{sym_plain} = {} {unit_per},  μ_φ = {} {deg},  μ_t = {} {}/{mm}",
+        mu_text(mu_y, lang),
+        mu_text(mu_phi, lang),
+        num(mu_t, 6, lang),
+        word(lang, "linkage.unit_s"),
+        sym_plain = sym.split('_').next().unwrap_or(sym).replace(['²', '/', 'd'], ""),
+        mm = word(lang, "linkage.unit_mm"),
+        unit_per = if unit.contains('/') {
+            format!("({unit})/{}", word(lang, "linkage.unit_mm"))
+        } else {
+            format!("{unit}/{}", word(lang, "linkage.unit_mm"))
+        },
+    );
+    c.rich_paper((0.5 * w, 13.5), &scales, H_SMALL + 0.5, Anchor::Middle, "#000");
+    // axes
+    let (x0, yz) = map(0.0, 0.0);
+    let (x1, _) = map(360.0, 0.0);
+    c.arrow_paper((x0, yz), (x1 + 8.0, yz), Style::THIN, 3.0);
+    let (_, ytop) = map(0.0, ymax);
+    let (_, ybot) = map(0.0, ymin);
+    c.arrow_paper((x0, ybot.max(yz) + 1.0), (x0, ytop - 6.0), Style::THIN, 3.0);
+    c.rich_paper(
+        (x0 + 3.0, ytop - 3.0),
+        &format!("{sym}, {unit}"),
+        H_SMALL + 0.5,
+        Anchor::Start,
+        "#000",
+    );
+    c.rich_paper((x1 + 9.0, yz + 4.5), "φ", H_LABEL, Anchor::Middle, "#000");
+    // the positions' marks and ordinates
+    for (x, _) in marks {
+        let (xp, _) = map(*x, 0.0);
+        c.line_paper((xp, yz - 1.2), (xp, yz + 1.2), Style::THIN);
+    }
+    let (xe, _) = map(360.0, 0.0);
+    c.line_paper((xe, yz - 1.2), (xe, yz + 1.2), Style::THIN);
+    // the y ticks: every 10 mm at the round μ
+    let mut k = ((ymin / mu_y) / 10.0).ceil() as i64;
+    while (k as f64) * 10.0 * mu_y <= ymax + 1e-12 {
+        let v = k as f64 * 10.0 * mu_y;
+        let (_, yp) = map(0.0, v);
+        c.line_paper((x0 - 1.2, yp), (x0, yp), Style::THIN);
+        if k != 0 {
+            c.rich_paper((x0 - 2.0, yp + 0.9), &signed(v, lang), H_SMALL, Anchor::End, "#000");
+        }
+        k += 1;
+    }
+    // the curve, thick
+    let curve: Vec<(f64, f64)> = pts.iter().map(|p| map(p.0, p.1)).collect();
+    let mut d = String::new();
+    let mut pen = false;
+    for &(x, y) in &curve {
+        if !(x.is_finite() && y.is_finite()) {
+            pen = false;
+            continue;
+        }
+        d.push_str(&format!("{}{x:.3},{y:.3} ", if pen { "L" } else { "M" }));
+        pen = true;
+    }
+    c.raw(&format!(
+        "<path class=\"curve\" d=\"{}\" stroke=\"#000\" stroke-width=\"0.7\" fill=\"none\"/>",
+        d.trim_end()
+    ));
+    // position numbers under the axis, clear of the curve
+    for (x, label) in marks.iter().chain(std::iter::once(&(360.0, "12".to_string()))) {
+        if label.ends_with('\'') && marks.len() > 1 {
+            // the extreme position: its number above the axis
+            let (xp, _) = map(*x, 0.0);
+            c.rich_paper((xp, yz - 2.0), label, H_SMALL, Anchor::Middle, "#000");
+            continue;
+        }
+        let (xp, _) = map(*x, 0.0);
+        let n = if *x >= 360.0 - 1e-9 {
+            (marks.iter().filter(|m| !m.1.ends_with('\'')).count()).to_string()
+        } else {
+            label.clone()
+        };
+        c.rich_paper((xp, yz + 4.5), &n, H_SMALL, Anchor::Middle, "#000");
     }
     c.finish()
 }
 
-fn plan(title: &str, pole: &str, unit: &str, v: &[PlanVector], phi: f64) -> String {
-    let mut c = Canvas::new(210.0, 210.0);
+/// A tick value: a multiple of a round μ, printed exactly with a minus sign
+/// when negative.
+fn signed(v: f64, lang: Language) -> String {
+    let t = mu_text(v.abs(), lang);
+    if v < 0.0 { format!("−{t}") } else { t }
+}
+
+/// Which plan.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Velocity,
+    Acceleration,
+}
+
+/// A vector's label in the course's notation: `V_CB` → `v_CB`, `a^t_CB` →
+/// `a^τ_CB`, `a^k_…` stays k, `a^r_…` stays r.
+fn vector_label(label: &str) -> String {
+    let l = label.replacen("a^t_", "a^τ_", 1);
+    match l.strip_prefix("V_") {
+        Some(rest) => format!("v_{rest}"),
+        None => l,
+    }
+}
+
+/// A velocity or acceleration plan at a round μ: the pole (p or π), the
+/// images of the points (a, b, c, s2 …), the points n of the normal
+/// accelerations, each vector in its `<g class="plan-vector">` with its
+/// label and kind for reading back.
+fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> String {
+    let lang = task.lang;
+    let (w, h) = slot_mm(Slot::Plan, task.sheet);
+    let mut c = Canvas::new(w, h);
+    let (pole, title_key, unit_key, sym) = match kind {
+        Kind::Velocity => ("p", "linkage.velocity_plan", "linkage.mu_v_unit", "μ_v"),
+        Kind::Acceleration => ("π", "linkage.acceleration_plan", "linkage.mu_a_unit", "μ_a"),
+    };
     let mut pts = vec![Vec2::ZERO];
     for p in v {
         pts.push(p.from);
         pts.push(p.to);
     }
-    let (xmin, xmax) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)));
-    let (ymin, ymax) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.y), b.max(p.y)));
-    let span = (xmax - xmin).max(ymax - ymin).max(1e-12);
-    // a round scale factor μ (units per mm) so that the plan fits 170 mm
-    let (_, _, step) = nice_ticks(0.0, span / 170.0, 1);
-    let mu = step;
+    let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for p in &pts {
+        xmin = xmin.min(p.x);
+        xmax = xmax.max(p.x);
+        ymin = ymin.min(p.y);
+        ymax = ymax.max(p.y);
+    }
+    let (margin, top) = (14.0, 18.0);
+    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - 2.0 * margin - top));
+    let mu = round_mu(raw.max(1e-12));
     let s = 1.0 / mu;
-    let cx = 105.0 - s * 0.5 * (xmin + xmax);
-    let cy = 100.0 - s * 0.5 * (ymin + ymax);
+    let cx = 0.5 * w - s * 0.5 * (xmin + xmax);
+    let cy = 0.5 * (h - top) - s * 0.5 * (ymin + ymax);
     c.set_transform(s, (cx, cy));
-    c.text_paper(
-        (105.0, 10.0),
-        &format!("{title} at φ = {:.2}°,  μ = {mu} {unit}/mm", phi.to_degrees()),
-        4.0,
+    c.root_attr("data-mu", &format!("{mu}"));
+    let pos_text = if position.starts_with('φ') || position.contains(' ') {
+        position.to_string()
+    } else {
+        position_text(lang, position)
+    };
+    c.rich_paper(
+        (0.5 * w, 8.0),
+        &format!("{}, {pos_text}", word(lang, title_key)),
+        H_TITLE,
         Anchor::Middle,
         "#000",
     );
-    let color = |k: VectorKind| match k {
-        VectorKind::Absolute => "#1f4e9c",
-        VectorKind::Relative => "#c0392b",
-        VectorKind::Normal => "#8e44ad",
-        VectorKind::Tangential => "#c0392b",
-        VectorKind::Sliding => "#27ae60",
-        VectorKind::Coriolis => "#d35400",
-    };
-    for p in v {
-        if (p.to - p.from).hypot() * s < 0.05 {
+    c.rich_paper(
+        (0.5 * w, 15.0),
+        &format!("{sym} = {} {}", mu_text(mu, lang), word(lang, unit_key)),
+        H_LABEL,
+        Anchor::Middle,
+        "#000",
+    );
+    let shown: Vec<&PlanVector> = v.iter().filter(|p| (p.to - p.from).hypot() * s >= 0.05).collect();
+    for p in &shown {
+        let st = match p.kind {
+            VectorKind::Absolute => Style::THICK.widened(0.5),
+            _ => Style::THIN.widened(0.35),
+        };
+        c.raw(&format!(
+            "<g class=\"plan-vector\" data-label=\"{}\" data-kind=\"{:?}\">",
+            crate::svg::escape(&p.label),
+            p.kind
+        ));
+        c.arrow(xy(p.from), xy(p.to), st, 3.0);
+        c.end_group();
+    }
+    // points: the pole, the images, the n points
+    c.dot((0.0, 0.0), 0.8, "#000000");
+    c.reserve_point((0.0, 0.0), 1.2);
+    for p in &shown {
+        c.dot(xy(p.to), 0.5, "#000000");
+        c.reserve_point(xy(p.to), 1.0);
+    }
+    c.label((0.0, 0.0), pole, H_LABEL, "#000");
+    let mut named: Vec<Vec2> = vec![Vec2::ZERO];
+    let mut n_count = 0;
+    for p in &shown {
+        let name = match p.kind {
+            VectorKind::Absolute => {
+                let n = p.label.split_once('_').map_or(p.label.as_str(), |x| x.1);
+                typeset_name(n, true)
+            }
+            VectorKind::Normal => {
+                n_count += 1;
+                format!("n_{n_count}")
+            }
+            _ => continue,
+        };
+        if named.iter().any(|q| (*q - p.to).hypot() * s < 0.5) {
             continue;
         }
-        c.arrow(
-            (p.from.x, p.from.y),
-            (p.to.x, p.to.y),
-            Style::THIN.widened(0.35).colored(color(p.kind)),
-            3.0,
-        );
-        if p.kind == VectorKind::Absolute {
-            // the plan point, named as the course names it: b, c, s2…
-            let name = p.label.split_once('_').map_or(p.label.as_str(), |x| x.1).to_lowercase();
-            c.text((p.to.x, p.to.y), &name, 3.2, Anchor::Start);
-        } else {
-            let mid = (p.from + p.to) * 0.5;
-            c.text_colored((mid.x, mid.y), &p.label, 2.4, Anchor::Start, color(p.kind));
-        }
+        named.push(p.to);
+        c.label(xy(p.to), &name, H_LABEL, "#000");
     }
-    c.dot((0.0, 0.0), 0.8, "#000000");
-    c.text((0.0, 0.0), pole, 3.5, Anchor::End);
+    // the relative vectors' names, beside their middles
+    for p in &shown {
+        if p.kind == VectorKind::Absolute || (p.to - p.from).hypot() * s < 6.0 {
+            continue;
+        }
+        c.label(xy((p.from + p.to) * 0.5), &vector_label(&p.label), H_SMALL, "#000");
+    }
     c.finish()
 }

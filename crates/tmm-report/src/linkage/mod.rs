@@ -221,7 +221,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some(l) = load(task)? else { return Ok(None) };
     let a = analyse(&l, task, None, l.task.positions)?;
     let mut docs = Documents::new();
-    draw::draw_all(&l, &a, "linkage/", &mut docs)?;
+    draw::draw_all(&l, &a, task, "linkage/", &mut docs)?;
     let json = json::document(&l, &a);
     docs.add_json("linkage/linkage.json", &json)?;
     let text = text::report(&l, &a);
@@ -244,9 +244,12 @@ pub fn json_document(l: &Loaded, a: &Analysis) -> serde_json::Value {
     json::document(l, a)
 }
 
-/// The drawings, as documents named by file name only (`positions.svg`, …).
-pub fn drawings(l: &Loaded, a: &Analysis) -> Result<Documents, Error> {
+/// The drawings, as documents named by file name only (`positions.svg`, …),
+/// in the task's language and for its sheet format; with `all_plans` also
+/// the plans of every position (`plan-velocity-1.svg`, …).
+pub fn drawings(l: &Loaded, a: &Analysis, task: &TaskSource, all_plans: bool) -> Result<Documents, Error> {
     let mut docs = Documents::new();
-    draw::draw_all(l, a, "", &mut docs)?;
+    let which = if all_plans { draw::PlansAt::All } else { draw::PlansAt::One };
+    draw::draw_with(l, a, task, "", which, &mut docs)?;
     Ok(docs)
 }

@@ -1,0 +1,304 @@
+//! The lever mechanism's drawings read back as a teacher checks them: the
+//! scheme at a GOST 2.302 scale whose links measure length × scale, plan
+//! arrows of |v|/μ at a round μ, labels clear of each other and of the lines
+//! of the plans, everything inside the paper, the paper within its slot on
+//! A1 and A2, no English word on a Russian drawing.
+
+use std::path::Path;
+
+use tmm_report::TaskSource;
+use tmm_report::linkage::{analyse, drawings, json_document, load};
+use tmm_report::paper::{STANDARD_SCALES, Slot, slot_mm};
+use tmm_report::project::{Language, SheetFormat};
+
+fn tasks() -> Vec<(String, String)> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut v = vec![("default".to_string(), tmm_report::run::DEFAULT_TASK.to_string())];
+    for name in ["seed-003-sixbar.toml", "crank-slider-offset.toml"] {
+        v.push((name.to_string(), std::fs::read_to_string(dir.join(name)).unwrap()));
+    }
+    v
+}
+
+fn attr(tag: &str, name: &str) -> Option<String> {
+    let key = format!(" {name}=\"");
+    let i = tag.find(&key)? + key.len();
+    Some(tag[i..i + tag[i..].find('"')?].to_string())
+}
+
+fn num(tag: &str, name: &str) -> f64 {
+    attr(tag, name).unwrap().trim_end_matches("mm").parse().unwrap()
+}
+
+/// The paper size from the root element.
+fn paper(svg: &str) -> (f64, f64, String) {
+    let root = svg.lines().find(|l| l.starts_with("<svg")).unwrap();
+    (num(root, "width"), num(root, "height"), root.to_string())
+}
+
+/// A text's shown characters (the tspans' markup dropped) and its box,
+/// estimated independently of the drawing code: 0.6 of the height per
+/// character, 0.85 above and 0.35 below the baseline.
+fn texts(svg: &str) -> Vec<(String, [f64; 4])> {
+    let mut out = Vec::new();
+    for l in svg.lines().filter(|l| l.starts_with("<text")) {
+        let inner = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap()];
+        let mut shown = String::new();
+        let mut in_tag = false;
+        for ch in inner.chars() {
+            match ch {
+                '<' => in_tag = true,
+                '>' => in_tag = false,
+                c if !in_tag => shown.push(c),
+                _ => {}
+            }
+        }
+        let shown = shown.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
+        let (x, y, s) = (num(l, "x"), num(l, "y"), num(l, "font-size"));
+        let w = 0.6 * s * shown.chars().count() as f64;
+        let x0 = match attr(l, "text-anchor").as_deref() {
+            Some("middle") => x - w / 2.0,
+            Some("end") => x - w,
+            _ => x,
+        };
+        out.push((shown, [x0, y - 0.85 * s, x0 + w, y + 0.35 * s]));
+    }
+    out
+}
+
+/// Straight segments of the `<line>` elements and polylines.
+fn segments(svg: &str) -> Vec<[f64; 4]> {
+    let mut out = Vec::new();
+    for l in svg.lines() {
+        if l.starts_with("<line") {
+            out.push([num(l, "x1"), num(l, "y1"), num(l, "x2"), num(l, "y2")]);
+        } else if l.starts_with("<polyline") {
+            let pts: Vec<(f64, f64)> = attr(l, "points")
+                .unwrap()
+                .split_whitespace()
+                .map(|p| {
+                    let (a, b) = p.split_once(',').unwrap();
+                    (a.parse().unwrap(), b.parse().unwrap())
+                })
+                .collect();
+            for w in pts.windows(2) {
+                out.push([w[0].0, w[0].1, w[1].0, w[1].1]);
+            }
+        }
+    }
+    out
+}
+
+fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
+/// Whether a segment passes through a box: sampled every 0.05 mm.
+fn crosses(s: &[f64; 4], b: &[f64; 4]) -> bool {
+    let len = ((s[2] - s[0]).powi(2) + (s[3] - s[1]).powi(2)).sqrt();
+    let n = (len / 0.05).ceil().max(1.0) as usize;
+    (0..=n).any(|i| {
+        let t = i as f64 / n as f64;
+        let (x, y) = (s[0] + t * (s[2] - s[0]), s[1] + t * (s[3] - s[1]));
+        x > b[0] + 1e-6 && x < b[2] - 1e-6 && y > b[1] + 1e-6 && y < b[3] - 1e-6
+    })
+}
+
+fn slot_of(file: &str) -> Slot {
+    if file == "positions.svg" {
+        Slot::Scheme
+    } else if file.contains("plan") {
+        Slot::Plan
+    } else {
+        Slot::Diagram
+    }
+}
+
+fn run(name: &str, text: &str, lang: Language, sheet: SheetFormat) -> (tmm_report::output::Documents, serde_json::Value, f64, f64) {
+    let task = TaskSource::new(name, text).with_lang(lang).with_sheet(sheet);
+    let l = load(&task).unwrap().unwrap();
+    let a = analyse(&l, &task, None, l.task.positions).unwrap();
+    let docs = drawings(&l, &a, &task, true).unwrap();
+    let json = json_document(&l, &a);
+    (docs, json, l.mech.crank.omega.abs(), l.mech.crank.radius)
+}
+
+#[test]
+fn every_drawing_fits_its_slot_and_keeps_inside_its_paper() {
+    for (name, text) in tasks() {
+        for sheet in [SheetFormat::A1, SheetFormat::A2] {
+            let (docs, ..) = run(&name, &text, Language::Ru, sheet);
+            assert!(docs.iter().count() >= 8 + 2 * 12, "{name}: the plans of every position");
+            for d in docs.iter() {
+                let svg = d.as_text().unwrap();
+                let (w, h, _) = paper(svg);
+                let (sw, sh) = slot_mm(slot_of(&d.path), sheet);
+                assert!(w <= sw + 1e-9 && h <= sh + 1e-9, "{name} {}: {w}×{h} in {sw}×{sh}", d.path);
+                for (t, b) in texts(svg) {
+                    assert!(
+                        b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= w && b[3] <= h,
+                        "{name} {}: \"{t}\" {b:?} leaves the paper {w}×{h}",
+                        d.path
+                    );
+                }
+                for s in segments(svg) {
+                    for (x, y) in [(s[0], s[1]), (s[2], s[3])] {
+                        assert!(
+                            (-1e-6..=w + 1e-6).contains(&x) && (-1e-6..=h + 1e-6).contains(&y),
+                            "{name} {}: a line at ({x}, {y}) outside {w}×{h}",
+                            d.path
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn labels_do_not_collide() {
+    for (name, text) in tasks() {
+        let (docs, ..) = run(&name, &text, Language::Ru, SheetFormat::A1);
+        for d in docs.iter() {
+            let svg = d.as_text().unwrap();
+            let t = texts(svg);
+            for i in 0..t.len() {
+                for j in i + 1..t.len() {
+                    assert!(
+                        !overlap(&t[i].1, &t[j].1),
+                        "{name} {}: \"{}\" and \"{}\" overlap",
+                        d.path,
+                        t[i].0,
+                        t[j].0
+                    );
+                }
+            }
+            // on the plans, no label lies on a line
+            if d.path.contains("plan") {
+                let segs = segments(svg);
+                for (txt, b) in &t {
+                    for s in &segs {
+                        assert!(!crosses(s, b), "{name} {}: \"{txt}\" {b:?} on the line {s:?}", d.path);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn plan_arrows_measure_the_velocity_over_the_round_scale_factor() {
+    for (name, text) in tasks() {
+        let (docs, json, omega, radius) = run(&name, &text, Language::Ru, SheetFormat::A1);
+        for (file, key) in [("velocity-plan.svg", "velocity"), ("acceleration-plan.svg", "acceleration")] {
+            let svg = docs.get(file).unwrap().as_text().unwrap();
+            let (_, _, root) = paper(svg);
+            let mu: f64 = attr(&root, "data-mu").unwrap().parse().unwrap();
+            // round: 1, 2, 2.5, 4, 5 × 10^k, and written on the drawing with a decimal comma
+            let m = mu / 10f64.powf(mu.log10().floor());
+            assert!(
+                [1.0, 2.0, 2.5, 4.0, 5.0].iter().any(|r| (m - r).abs() < 1e-9),
+                "{name} {file}: μ = {mu}"
+            );
+            let printed = format!("{mu}").replace('.', ",");
+            assert!(svg.contains(&printed), "{name} {file}: μ {printed} not written");
+            let lines: Vec<&str> = svg.lines().collect();
+            let mut checked = 0;
+            for v in json["plans"][key].as_array().unwrap() {
+                let label = v["label"].as_str().unwrap();
+                let (f, t) = (&v["from"], &v["to"]);
+                let len = ((t[0].as_f64().unwrap() - f[0].as_f64().unwrap()).powi(2)
+                    + (t[1].as_f64().unwrap() - f[1].as_f64().unwrap()).powi(2))
+                .sqrt();
+                let Some(i) = lines.iter().position(|l| l.contains(&format!("data-label=\"{label}\""))) else {
+                    assert!(len / mu < 0.05, "{name} {file}: {label} of {len} not drawn");
+                    continue;
+                };
+                let l = lines[i + 1];
+                let drawn = ((num(l, "x2") - num(l, "x1")).powi(2) + (num(l, "y2") - num(l, "y1")).powi(2)).sqrt();
+                assert!((drawn - len / mu).abs() < 0.01, "{name} {file}: {label} {drawn} mm vs {}", len / mu);
+                checked += 1;
+            }
+            assert!(checked >= 3, "{name} {file}");
+        }
+        // the crank pin's velocity, independently: ω1·l1
+        let svg = docs.get("velocity-plan.svg").unwrap().as_text().unwrap();
+        let mu: f64 = attr(&paper(svg).2, "data-mu").unwrap().parse().unwrap();
+        let lens: Vec<f64> = svg
+            .lines()
+            .collect::<Vec<_>>()
+            .windows(2)
+            .filter(|w| w[0].contains("data-kind=\"Absolute\""))
+            .map(|w| ((num(w[1], "x2") - num(w[1], "x1")).powi(2) + (num(w[1], "y2") - num(w[1], "y1")).powi(2)).sqrt())
+            .collect();
+        let want = omega * radius / mu;
+        assert!(
+            lens.iter().any(|l| (l - want).abs() < 0.01),
+            "{name}: no arrow of ω1·l1/μ = {want} mm among {lens:?}"
+        );
+    }
+}
+
+#[test]
+fn the_scheme_is_at_a_standard_scale_and_its_links_measure_length_times_scale() {
+    for (name, text) in tasks() {
+        for sheet in [SheetFormat::A1, SheetFormat::A2] {
+            let task = TaskSource::new(&name, text.clone()).with_sheet(sheet);
+            let l = load(&task).unwrap().unwrap();
+            let (docs, ..) = run(&name, &text, Language::Ru, sheet);
+            let svg = docs.get("positions.svg").unwrap().as_text().unwrap();
+            let scale = attr(&paper(svg).2, "data-scale").unwrap();
+            let &(factor, _) = STANDARD_SCALES
+                .iter()
+                .find(|s| s.1 == scale)
+                .unwrap_or_else(|| panic!("{name}: {scale} is not a GOST 2.302 scale"));
+            assert!(svg.contains(&scale), "{name}: the scale is written");
+            // the bold position's links
+            let bold = &svg[svg.find("<g id=\"bold-position\">").unwrap()..];
+            let bold = &bold[..bold.find("</g>").unwrap()];
+            let lens: Vec<f64> = bold
+                .lines()
+                .filter(|l| l.starts_with("<line") && l.contains("stroke-width=\"0.700\""))
+                .map(|l| ((num(l, "x2") - num(l, "x1")).powi(2) + (num(l, "y2") - num(l, "y1")).powi(2)).sqrt())
+                .collect();
+            for link in l.def.links.iter().filter(|k| k.points.len() >= 2) {
+                let (a, b) = (link.points[0].1, link.points[1].1);
+                let want = (b - a).hypot() * 1e3 * factor;
+                assert!(
+                    lens.iter().any(|x| (x - want).abs() < 0.01),
+                    "{name} {sheet:?}: link {} of {want} mm at {scale} not among {lens:?}",
+                    link.name
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn russian_drawings_have_no_english_words_and_use_the_decimal_comma() {
+    for (name, text) in tasks() {
+        let (docs, ..) = run(&name, &text, Language::Ru, SheetFormat::A1);
+        for d in docs.iter() {
+            for (t, _) in texts(d.as_text().unwrap()) {
+                // Latin letters are the points' and quantities' names (B, CB, s, v):
+                // a run of three lower-case Latin letters is a word
+                let mut run = 0;
+                for ch in t.chars() {
+                    run = if ch.is_ascii_lowercase() { run + 1 } else { 0 };
+                    assert!(run < 3, "{name} {}: English in \"{t}\"", d.path);
+                }
+                let b = t.as_bytes();
+                for i in 1..b.len().saturating_sub(1) {
+                    assert!(
+                        !(b[i] == b'.' && b[i - 1].is_ascii_digit() && b[i + 1].is_ascii_digit()),
+                        "{name} {}: a decimal point in \"{t}\"",
+                        d.path
+                    );
+                }
+            }
+        }
+        let (docs, ..) = run(&name, &text, Language::En, SheetFormat::A1);
+        let svg = docs.get("velocity-plan.svg").unwrap().as_text().unwrap();
+        assert!(svg.contains("Velocity plan"), "{name}: the English words come from en.toml");
+    }
+}
