@@ -429,7 +429,7 @@ impl Canvas {
         };
         let _ = writeln!(
             self.body,
-            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
+            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\" xml:space=\"preserve\">{}</text>",
             at.0,
             at.1,
             rich(text, size_mm)

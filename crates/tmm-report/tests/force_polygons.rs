@@ -12,10 +12,22 @@ fn read_back(svg: &str) -> (f64, f64) {
     let mut closure = None;
     let mut largest = 0.0f64;
     for line in svg.lines().filter(|l| l.contains("<text")) {
-        let text = &line[line.find('>').unwrap() + 1..line.find("</text>").unwrap()];
-        if let Some(v) = text.strip_prefix("closure ").and_then(|t| t.strip_suffix(" N")) {
+        // the words are Russian (the default), numbers with a decimal comma
+        // and the subscripts' markup (tspans) dropped: the text as shown
+        let inner = &line[line.find('>').unwrap() + 1..line.rfind("</text>").unwrap()];
+        let mut text = String::new();
+        let mut in_tag = false;
+        for ch in inner.chars() {
+            match ch {
+                '<' => in_tag = true,
+                '>' => in_tag = false,
+                c if !in_tag => text.push(if c == ',' { '.' } else { c }),
+                _ => {}
+            }
+        }
+        if let Some(v) = text.strip_prefix("замыкание ").and_then(|t| t.strip_suffix(" Н")) {
             closure = Some(v.parse::<f64>().unwrap());
-        } else if let Some(v) = text.strip_suffix(" N") {
+        } else if let Some(v) = text.strip_suffix(" Н") {
             // "R12 5199.3 N": a force arrow's label with its magnitude
             if let Some(num) = v.rsplit(' ').next().and_then(|n| n.parse::<f64>().ok()) {
                 largest = largest.max(num);
@@ -36,7 +48,7 @@ fn every_drawn_polygon_closes() {
         for k in 0..24 {
             let at = (k as f64 * 15.0 + 7.0).to_radians();
             let Ok(a) = analyse(&task, &l, &t, Some(at)) else { continue };
-            let docs = drawings(&l, &t, &a).unwrap();
+            let docs = drawings(&l, &t, &a, &task).unwrap();
             for d in docs.iter().filter(|d| d.path.starts_with("group-") || d.path == "input-link.svg") {
                 let (closure, largest) = read_back(d.as_text().unwrap());
                 assert!(largest > 0.0, "{name} {}: no force read", d.path);

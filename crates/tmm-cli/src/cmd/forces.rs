@@ -49,7 +49,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
         checked(text_report(&l, &t, &an))?
     };
     let files = match &a.svg {
-        Some(dir) => write_dir(dir, &drawings(&l, &t, &an)?)?,
+        Some(dir) => write_dir(dir, &drawings(&l, &t, &an, &task)?)?,
         None => Vec::new(),
     };
     print(&if a.json { out } else { out + &written(&files) })

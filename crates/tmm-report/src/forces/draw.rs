@@ -8,10 +8,44 @@ use tmm_geom::Vec2;
 
 use super::task::ForcesTask;
 use super::{Analysis, Row, json::pair_name};
-use crate::Error;
 use crate::linkage::Loaded;
 use crate::output::Documents;
-use crate::svg::{Anchor, Canvas, Series, Style, plot};
+use crate::paper::{Slot, round_mu, slot_mm};
+use crate::project::Language;
+use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot};
+use crate::words::word;
+use crate::{Error, TaskSource};
+
+/// Lettering heights, mm (GOST 2.304).
+const H_TITLE: f64 = 5.0;
+const H_LABEL: f64 = 3.5;
+
+/// A force's label in the course's notation: `R12` → `R_{12}`, the frame
+/// as link 0 (`Rframe1` → `R_{01}`), `Pb` → `P_b`, the inertia force `Fu2`
+/// → `F_{и2}` (ru), `M2'` → `M_{2'}`; sums of forces part by part.
+///
+/// ```ignore
+/// assert_eq!(force_label("Rframe1", Language::Ru), "R_{01}");
+/// ```
+fn force_label(label: &str, lang: Language) -> String {
+    let l = label.replace("frame", "0");
+    l.split('+')
+        .map(|part| {
+            let mut ch = part.chars();
+            let Some(head) = ch.next() else { return String::new() };
+            let rest: String = ch.collect();
+            let (low, tail) = rest.split_at(rest.find(|c: char| !c.is_ascii_lowercase()).unwrap_or(rest.len()));
+            let low = if low == "u" { word(lang, "forces.inertia") } else { low };
+            let sub = format!("{low}{tail}");
+            if sub.is_empty() {
+                head.to_string()
+            } else {
+                format!("{head}_{{{sub}}}")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("+")
+}
 
 const COLORS: [&str; 6] = ["#c00000", "#0050c0", "#008000", "#a05000", "#7000a0", "#007070"];
 
@@ -30,7 +64,8 @@ struct Arrow {
 /// forces are the core's polygon number `which` (the groups in order, then
 /// the input link with the balancing force), so the drawn polygon is the one
 /// whose closure the core guarantees.
-fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str) -> String {
+fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, task: &TaskSource) -> String {
+    let lang = task.lang;
     let m = &l.mech;
     let f = &r.fs;
     let sol = &r.sol;
@@ -38,7 +73,17 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str) ->
     for &li in links {
         let lf = &f.links[li];
         if lf.moment != 0.0 {
-            couples.push((lf.s, lf.moment, format!("M{} = {:.2} N·m", m.link_names[li], lf.moment)));
+            couples.push((
+                lf.s,
+                lf.moment,
+                format!(
+                    "M_{{{}{}}} = {} {}",
+                    word(lang, "forces.inertia"),
+                    m.link_names[li],
+                    num(lf.moment.abs(), 2, lang),
+                    word(lang, "forces.unit_nm")
+                ),
+            ));
         }
     }
     let polygons = f.polygons(m);
@@ -106,21 +151,37 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str) ->
         pymin = pymin.min(p.y);
         pymax = pymax.max(p.y);
     }
-    let mut c = Canvas::new(297.0, 210.0);
+    // the body at a length scale and the polygon at a round μ_F, side by side
+    let (w, h) = slot_mm(Slot::Plan, task.sheet);
+    let mut c = Canvas::new(w, h);
     let pad = 0.08 * (pxmax - pxmin).max(pymax - pymin);
-    c.fit((pxmin - pad, pxmax + pad, pymin - pad, pymax + pad), (10.0, 10.0, 277.0, 175.0));
-    c.text_paper((10.0, 10.0), title, 4.0, Anchor::Start, "#000000");
-    c.text_paper(
-        (10.0, 16.0),
+    let k = c.fit((pxmin - pad, pxmax + pad, pymin - pad, pymax + pad), (6.0, 6.0, w - 12.0, h - 30.0));
+    // round the scale factors: the world scale is kept, the forces' factors rounded
+    let mu_body = round_mu(1.0 / (mu * k));
+    let mu_poly = round_mu(1.0 / (mup * k));
+    let mu = 1.0 / (mu_body * k);
+    let mup = 1.0 / (mu_poly * k);
+    let mut poly = vec![origin];
+    for a in &arrows {
+        let last = *poly.last().unwrap_or(&origin);
+        poly.push(last + a.f * mup);
+    }
+    c.root_attr("data-mu-f", &format!("{mu_poly}"));
+    c.rich_paper((w / 2.0, 8.0), title, H_TITLE, Anchor::Middle, "#000000");
+    c.rich_paper(
+        (w / 2.0, 15.0),
         &format!(
-            "φ = {:.2}°; forces: μ_F = {:.4e} N/mm on the body, {:.4e} N/mm in the polygon (план сил)",
-            r.phi.to_degrees(),
-            1.0 / (mu * c.scale()),
-            1.0 / (mup * c.scale())
+            "φ = {}°;  μ_F = {} {u} ({}),  μ_F = {} {u} ({})",
+            num(r.phi.to_degrees(), 1, lang),
+            mu_text(mu_body, lang),
+            word(lang, "forces.on_body"),
+            mu_text(mu_poly, lang),
+            word(lang, "forces.in_polygon"),
+            u = word(lang, "forces.unit_n_per_mm"),
         ),
-        3.0,
-        Anchor::Start,
-        "#404040",
+        H_LABEL - 0.5,
+        Anchor::Middle,
+        "#000",
     );
     c.begin_group("links");
     for (a, b) in &segs {
@@ -128,51 +189,75 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str) ->
     }
     for p in &pts {
         c.dot(t(*p), 0.8, "#000000");
+        c.reserve_point(t(*p), 1.2);
     }
     c.end_group();
     c.begin_group("forces");
     for (i, a) in arrows.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.arrow(t(a.at), t(a.at + a.f * mu), Style::THIN.colored(col).widened(0.5), 3.0);
-        c.text_colored(
-            t(a.at + a.f * mu),
-            &format!("{} {:.1} N", a.label, a.f.hypot()),
-            2.8,
-            Anchor::Start,
-            col,
-        );
     }
+    let mut arcs = Vec::new();
     for (p, mo, label) in &couples {
-        let r0 = 0.08 * size;
+        let r0 = 6.0 / k;
         let (a0, a1) = if *mo > 0.0 { (0.0, 4.5) } else { (4.5, 0.0) };
         c.arc(t(*p), r0, a0, a1, Style::THIN.colored("#606060"));
         let tip = *p + Vec2::new(a1.cos(), a1.sin()) * r0;
         let back = *p + Vec2::new((a1 - 0.3 * (a1 - a0).signum()).cos(), (a1 - 0.3 * (a1 - a0).signum()).sin()) * r0;
         c.arrow(t(back), t(tip), Style::THIN.colored("#606060"), 2.0);
-        c.text_colored(t(*p + Vec2::new(0.0, -1.6 * r0)), label, 2.6, Anchor::Middle, "#606060");
+        arcs.push((*p + Vec2::new(0.0, -r0), label.clone()));
     }
     c.end_group();
     c.begin_group("force-polygon");
-    for (i, a) in arrows.iter().enumerate() {
+    for (i, _) in arrows.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.arrow(t(poly[i]), t(poly[i + 1]), Style::THIN.colored(col).widened(0.5), 3.0);
-        let mid = (poly[i] + poly[i + 1]) * 0.5;
-        c.text_colored(t(mid), &a.label, 2.6, Anchor::Start, col);
+    }
+    c.end_group();
+    c.begin_group("labels");
+    for (i, a) in arrows.iter().enumerate() {
+        let col = COLORS[i % COLORS.len()];
+        c.label(
+            t(a.at + a.f * mu),
+            &format!(
+                "{} {} {}",
+                force_label(&a.label, lang),
+                num(a.f.hypot(), 1, lang),
+                word(lang, "forces.unit_n")
+            ),
+            H_LABEL - 0.5,
+            col,
+        );
+    }
+    for (p, label) in &arcs {
+        c.label(t(*p), label, H_LABEL - 0.5, "#404040");
+    }
+    for (i, a) in arrows.iter().enumerate() {
+        let col = COLORS[i % COLORS.len()];
+        c.label(t((poly[i] + poly[i + 1]) * 0.5), &force_label(&a.label, lang), H_LABEL - 0.5, col);
     }
     let gap = (*poly.last().unwrap_or(&origin) - origin).hypot();
-    c.text_colored(
-        t(origin + Vec2::new(0.0, -0.1 * size)),
-        &format!("closure {:.2e} N", gap / mup),
-        2.6,
-        Anchor::Start,
+    c.rich_paper(
+        (w / 2.0, h - 4.0),
+        &format!(
+            "{} {} {}",
+            word(lang, "forces.closure"),
+            crate::svg::comma(&format!("{:.2e}", gap / mup), lang),
+            word(lang, "forces.unit_n")
+        ),
+        H_LABEL - 0.5,
+        Anchor::Middle,
         "#404040",
     );
     c.end_group();
     c.finish()
 }
 
-/// Zhukovsky's lever: the velocity plan turned by 90° with the forces.
-fn lever(l: &Loaded, a: &Analysis) -> String {
+/// Zhukovsky's lever: the velocity plan turned by 90° with the forces at
+/// the images of their points, at a round μ_v; the labels placed clear of
+/// the lines and of each other.
+fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
+    let lang = task.lang;
     let m = &l.mech;
     let r = &a.detail;
     let imgs: Vec<Vec2> = r.sol.points.iter().map(|p| tmm_geom::perp(p.v)).collect();
@@ -190,36 +275,59 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
         ymin = ymin.min(p.y);
         ymax = ymax.max(p.y);
     }
-    let mut c = Canvas::new(297.0, 210.0);
-    let pad = 0.08 * (xmax - xmin).max(ymax - ymin).max(1e-9);
-    c.fit((xmin - pad, xmax + pad, ymin - pad, ymax + pad), (10.0, 10.0, 277.0, 170.0));
-    c.text_paper(
-        (10.0, 10.0),
-        &format!(
-            "Zhukovsky's lever at φ = {:.2}°: the velocity plan turned by +90°, forces at the images of their points",
-            r.phi.to_degrees()
+    let (w, h) = slot_mm(Slot::Plan, task.sheet);
+    let mut c = Canvas::new(w, h);
+    let (margin, top) = (16.0, 26.0);
+    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
+    let mu_v = round_mu(raw.max(1e-12));
+    let s = 1.0 / mu_v;
+    c.set_transform(
+        s,
+        (
+            0.5 * w - s * 0.5 * (xmin + xmax),
+            0.5 * (h - top + margin) - s * 0.5 * (ymin + ymax) - 0.5 * margin,
         ),
-        4.0,
-        Anchor::Start,
+    );
+    c.root_attr("data-mu", &format!("{mu_v}"));
+    c.rich_paper(
+        (w / 2.0, 8.0),
+        &format!("{}, φ = {}°", word(lang, "forces.lever"), num(r.phi.to_degrees(), 1, lang)),
+        H_TITLE,
+        Anchor::Middle,
         "#000000",
     );
-    c.text_paper(
-        (10.0, 16.0),
+    c.rich_paper(
+        (w / 2.0, 15.0),
         &format!(
-            "Σ moments about the pole = 0 ⇒ M_Zh = {:.4} N·m, P_b = {:.4} N (kinetostatics: M_b = {:.4} N·m)",
-            r.fs.zhukovsky_moment,
-            r.fs.zhukovsky_moment / m.crank.radius,
-            r.fs.balancing_moment
+            "μ_v = {} {};  M_b = P_b·l_1 = {} {}",
+            mu_text(mu_v, lang),
+            word(lang, "forces.mu_v_unit"),
+            num(r.fs.zhukovsky_moment, 3, lang),
+            word(lang, "forces.unit_nm")
         ),
-        3.0,
-        Anchor::Start,
+        H_LABEL - 0.5,
+        Anchor::Middle,
+        "#404040",
+    );
+    c.rich_paper(
+        (w / 2.0, 21.0),
+        &format!(
+            "P_b = {} {};  {}: M_b = {} {}",
+            num(r.fs.zhukovsky_moment / m.crank.radius, 3, lang),
+            word(lang, "forces.unit_n"),
+            word(lang, "forces.kinetostatics"),
+            num(r.fs.balancing_moment, 3, lang),
+            word(lang, "forces.unit_nm")
+        ),
+        H_LABEL - 0.5,
+        Anchor::Middle,
         "#404040",
     );
     c.begin_group("plan");
-    for (i, p) in imgs.iter().enumerate() {
-        c.line((0.0, 0.0), t(*p), Style::THIN.colored("#a0a0a0"));
-        c.dot(t(*p), 0.6, "#000000");
-        c.text(t(*p), &m.points[i].name.to_lowercase(), 3.0, Anchor::Start);
+    for p in &imgs {
+        if p.hypot() * s > 0.05 {
+            c.line((0.0, 0.0), t(*p), Style::THIN.colored("#a0a0a0"));
+        }
     }
     // images of the same link joined
     for li in 1..m.link_names.len() {
@@ -236,17 +344,45 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
         }
     }
     c.fixed_pivot((0.0, 0.0), 1.5);
-    c.text((0.0, 0.0), "p", 3.0, Anchor::End);
     c.end_group();
     c.begin_group("forces");
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.arrow(t(x.image), t(x.image + x.force * mu), Style::THIN.colored(col).widened(0.5), 3.0);
-        c.text_colored(
+    }
+    c.end_group();
+    for p in &imgs {
+        c.dot(t(*p), 0.6, "#000000");
+        c.reserve_point(t(*p), 1.0);
+    }
+    c.begin_group("labels");
+    c.label((0.0, 0.0), "p", H_LABEL, "#000");
+    let mut named: Vec<Vec2> = vec![Vec2::ZERO];
+    for (i, p) in imgs.iter().enumerate() {
+        if named.iter().any(|q| (*q - *p).hypot() * s < 0.5) {
+            continue;
+        }
+        named.push(*p);
+        let n = m.points[i].name.to_lowercase();
+        let cut = n.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+        let n = if cut > 0 && cut < n.len() {
+            format!("{}_{}", &n[..cut], &n[cut..])
+        } else {
+            n
+        };
+        c.label(t(*p), &n, H_LABEL, "#000");
+    }
+    for (i, x) in a.lever.iter().enumerate() {
+        let col = COLORS[i % COLORS.len()];
+        c.label(
             t(x.image + x.force * mu),
-            &format!("{} {:.1} N", x.label, x.force.hypot()),
-            2.6,
-            Anchor::Start,
+            &format!(
+                "{} {} {}",
+                force_label(&x.label, lang),
+                num(x.force.hypot(), 1, lang),
+                word(lang, "forces.unit_n")
+            ),
+            H_LABEL - 0.5,
             col,
         );
     }
@@ -255,44 +391,50 @@ fn lever(l: &Loaded, a: &Analysis) -> String {
 }
 
 /// Every drawing, as documents whose paths start with `dir` (`"forces/"`).
-pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &str, docs: &mut Documents) -> Result<(), Error> {
+pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, dir: &str, docs: &mut Documents) -> Result<(), Error> {
+    let lang = task.lang;
     let m = &l.mech;
     for (g, grp) in m.groups.iter().enumerate().rev() {
         let names: Vec<String> = grp.info.pair_ids.iter().map(|&p| pair_name(l, p)).collect();
         let title = format!(
-            "Group {} — {} (pairs {}): free body and force polygon",
+            "{} {} ({}: {}), {}",
+            word(lang, "forces.group"),
             g + 1,
-            grp.label(),
-            names.join(", ")
+            word(lang, "forces.pairs"),
+            names.join(", ").replace("frame", "0"),
+            word(lang, "forces.force_plan")
         );
         docs.add_text(
             format!("{dir}group-{}.svg", g + 1),
-            free_body(l, &a.detail, &grp.info.link_ids, g, &title),
+            free_body(l, &a.detail, &grp.info.link_ids, g, &title, task),
         )?;
     }
     let title = format!(
-        "Input link {} with the balancing force P_b = {:.3} N at the crank pin",
-        m.link_names[m.crank.link], a.detail.fs.balancing_force
+        "{} {}, P_b = {} {}",
+        word(lang, "forces.input_link"),
+        m.link_names[m.crank.link],
+        num(a.detail.fs.balancing_force, 1, lang),
+        word(lang, "forces.unit_n")
     );
     docs.add_text(
         format!("{dir}input-link.svg"),
-        free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title),
+        free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title, task),
     )?;
-    docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a))?;
+    docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a, task))?;
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
     let mz: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[3])).collect();
     let svg = plot(
-        "Balancing torque on the input link over the cycle",
-        "crank travel from the start of the working stroke ψ, °",
-        "M_b, N·m",
+        word(lang, "forces.torque_title"),
+        word(lang, "forces.torque_x"),
+        word(lang, "forces.torque_y"),
         &[
             Series {
-                name: "kinetostatics",
+                name: word(lang, "forces.kinetostatics"),
                 points: &mb,
                 color: "#c00000",
             },
             Series {
-                name: "Zhukovsky's lever",
+                name: word(lang, "forces.lever"),
                 points: &mz,
                 color: "#0050c0",
             },
@@ -304,15 +446,21 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, dir: &str, docs: &mut
     if let Some(b) = &a.beam {
         let link = &m.link_names[b.beam.link];
         for (key, name, unit, idx) in [
-            ("N", "axial force N(z)", "N, N", 0),
-            ("Q", "shear force Q(z)", "Q, N", 1),
-            ("M", "bending moment M(z)", "M, N·m", 2),
+            ("N", "forces.strength_n", "forces.unit_n", 0),
+            ("Q", "forces.strength_q", "forces.unit_n", 1),
+            ("M", "forces.strength_m", "forces.unit_nm", 2),
         ] {
             let pts: Vec<(f64, f64)> = b.samples.iter().map(|s| (s.z * 1e3, [s.n, s.q, s.m][idx])).collect();
             let svg = plot(
-                &format!("Link {link} ({}–{}): {name}", b.names.0, b.names.1),
-                "z, mm",
-                unit,
+                &format!(
+                    "{} {link} ({}–{}): {}",
+                    word(lang, "forces.link"),
+                    b.names.0,
+                    b.names.1,
+                    word(lang, name)
+                ),
+                &format!("z, {}", word(lang, "forces.unit_mm")),
+                &format!("{key}, {}", word(lang, unit)),
                 &[Series {
                     name: key,
                     points: &pts,

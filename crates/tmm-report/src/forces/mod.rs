@@ -223,7 +223,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((l, t)) = load(task)? else { return Ok(None) };
     let a = analyse(task, &l, &t, None)?;
     let mut docs = Documents::new();
-    draw::draw_all(&l, &t, &a, "forces/", &mut docs)?;
+    draw::draw_all(&l, &t, &a, task, "forces/", &mut docs)?;
     let json = json::document(&l, &t, &a);
     docs.add_json("forces/forces.json", &json)?;
     let text = text::report(&l, &t, &a);
@@ -246,9 +246,10 @@ pub fn json_document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> serde_json::Va
     json::document(l, t, a)
 }
 
-/// The drawings, as documents named by file name only (`group-1.svg`, …).
-pub fn drawings(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Result<Documents, Error> {
+/// The drawings, as documents named by file name only (`group-1.svg`, …),
+/// in the task's language and for its sheet format.
+pub fn drawings(l: &Loaded, t: &ForcesTask, a: &Analysis, task: &TaskSource) -> Result<Documents, Error> {
     let mut docs = Documents::new();
-    draw::draw_all(l, t, a, "", &mut docs)?;
+    draw::draw_all(l, t, a, task, "", &mut docs)?;
     Ok(docs)
 }
