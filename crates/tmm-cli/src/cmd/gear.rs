@@ -168,7 +168,7 @@ fn pair(a: &PairArgs) -> Result<(), Error> {
     };
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     if let Some(p) = &a.svg {
-        files.push((p.clone(), mesh::mesh_svg(pair, &t1, &t2).into_bytes()));
+        files.push((p.clone(), mesh::mesh_svg(pair, &t1, &t2, Default::default(), Default::default()).into_bytes()));
     }
     if let Some(p) = &a.dxf {
         files.push((p.clone(), mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?));

@@ -62,7 +62,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let pair = &solved.pair;
     let (t1, t2) = profiles(pair, &origin)?;
     let mut docs = Documents::new();
-    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2))?;
+    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2, task.lang, task.sheet))?;
     docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
     docs.add_text("gear/sliding.svg", sliding_svg(pair))?;
     docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
