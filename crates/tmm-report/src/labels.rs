@@ -217,7 +217,7 @@ impl Placer {
         // the baseline: the box's middle plus a third of the height
         let _ = write!(
             self.svg,
-            "<text class=\"label\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
+            "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
             c.0,
             c.1 + 0.35 * h,
             if start { "start" } else { "middle" }
