@@ -86,6 +86,13 @@ function analyse() {
   showPlanetary();
   showCam();
 }
+// the median time of n analyses of the editor's text (for the browser test)
+state.timeAnalyse = (n) => {
+  const ts = [];
+  for (let k = 0; k < n; k++) { const t0 = performance.now(); tmm.analyse(state.name, $("editor").value, $("lang").value); ts.push(performance.now() - t0); }
+  ts.sort((a, b) => a - b);
+  return ts[Math.floor(n / 2)];
+};
 let analyseTimer = 0;
 function scheduleAnalyse() { clearTimeout(analyseTimer); analyseTimer = setTimeout(analyse, 150); }
 
