@@ -8,7 +8,7 @@
 use std::f64::consts::TAU;
 
 use serde_json::{Value, json};
-use tmm_linkage::model::Pair;
+use tmm_linkage::mechanism::Pair;
 use tmm_linkage::cycle::Cycle;
 
 use crate::page::Page;
