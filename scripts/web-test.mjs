@@ -29,6 +29,8 @@ function finish(code) {
   process.exit(code);
 }
 setTimeout(() => { console.log("FAIL timed out"); finish(1); }, 240000).unref();
+process.on("uncaughtException", (e) => { console.log("FAIL", e.message); finish(1); });
+process.on("unhandledRejection", (e) => { console.log("FAIL", e && e.message); finish(1); });
 const wsUrl = await new Promise((resolve, reject) => {
   let buf = "";
   browser.stderr.on("data", (d) => { buf += d; const m = buf.match(/DevTools listening on (ws:\/\/\S+)/); if (m) resolve(m[1]); });
@@ -115,15 +117,15 @@ results.figures.reanalysis_ms = await js("window.tmmPage.timeAnalyse(20)");
 console.log("re-analysis of the default task (median of 20):", results.figures.reanalysis_ms.toFixed(1), "ms");
 
 // ---------- screenshots ----------
-async function shot(view) {
+async function shot(view, name = view) {
   await js(`document.querySelector('#tabs [data-view="${view}"]').click(), true`);
   await sleep(300);
   const { data } = await send("Page.captureScreenshot", { format: "png" });
-  const file = join(outDir, `web-${view}.png`);
+  const file = join(outDir, `web-${name}.png`);
   writeFileSync(file, Buffer.from(data, "base64"));
   const colours = await js(`new Promise(res => { const i = new Image(); i.onload = () => { const c = document.createElement('canvas'); c.width = i.width; c.height = i.height; const g = c.getContext('2d'); g.drawImage(i, 0, 0); const d = g.getImageData(0, 0, c.width, c.height).data; const s = new Set(); for (let k = 0; k < d.length; k += 4 * 7) s.add((d[k] << 16) | (d[k + 1] << 8) | d[k + 2]); res(s.size); }; i.src = 'data:image/png;base64,${data}'; })`);
-  results.screenshots.push({ view, file, colours });
-  check(`screenshot of ${view} is not blank`, colours >= 16, `${colours} colours, ${file}`);
+  results.screenshots.push({ view: name, file, colours });
+  check(`screenshot of ${name} is not blank`, colours >= 16, `${colours} colours, ${file}`);
 }
 
 // ---------- the crank slider changes the angle and the plan ----------
@@ -164,7 +166,7 @@ const nFrames = await js("(document.getElementById('play').click(), window.tmmPa
 results.figures.animation_fps = nFrames / ((Date.now() - t0) / 1000);
 results.figures.at_angle_ms = await js("window.tmmPage.lastAngleMs");
 console.log("animation of seed-003 with plans:", results.figures.animation_fps.toFixed(1), "frames/s");
-await shot("mechanism-seed-003");
+await shot("mechanism", "mechanism-seed-003");
 
 // ---------- bundle size ----------
 const wasm = readFileSync(join(distDir, "tmm_web_bg.wasm"));
