@@ -145,10 +145,11 @@ function setAngleIndex(i) {
   $("angle-out").dataset.phi = phi;
   drawMechanism();
   const t0 = performance.now();
-  const a = JSON.parse(tmm.at_angle(phi));
+  const a = JSON.parse(tmm.at_angle(phi, !state.playing));
   state.lastAngleMs = performance.now() - t0;
   if (!a.ok) return;
   fill("plans", [["Velocity plan", a.velocity_plan], ["Acceleration plan", a.acceleration_plan]]);
+  if (state.playing) return; // the forces and the cursors when the crank stops
   if (a.forces) {
     fill("force-plans", Object.entries(a.forces.files));
     $("torque").textContent = `Mb = ${fmt(a.forces.balancing_moment)} N·m (Zhukovsky: ${fmt(a.forces.zhukovsky_moment)} N·m)`;
@@ -219,6 +220,7 @@ $("play").onclick = () => {
   state.playing = !state.playing;
   $("play").textContent = state.playing ? "❚❚ Pause" : "▶ Play";
   if (state.playing) requestAnimationFrame(playLoop);
+  else setAngleIndex(state.frame);
 };
 
 // ---------- diagrams with a cursor ----------

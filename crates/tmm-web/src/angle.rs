@@ -8,8 +8,8 @@
 use std::f64::consts::TAU;
 
 use serde_json::{Value, json};
-use tmm_linkage::mechanism::Pair;
 use tmm_linkage::cycle::Cycle;
+use tmm_linkage::mechanism::Pair;
 
 use crate::page::Page;
 use crate::reply;
@@ -83,20 +83,21 @@ pub fn frames(p: &Page, n: usize) -> String {
 }
 
 /// The drawings at the crank angle `phi` (rad): `{"ok", "phi", "psi",
-/// "velocity_plan", "acceleration_plan"}` (SVG text) and, when the task has
-/// forces, `"forces": {"files": {name: svg}, "balancing_moment",
-/// "zhukovsky_moment"}`.
-pub fn at_angle(p: &Page, phi: f64) -> String {
+/// "velocity_plan", "acceleration_plan"}` (SVG text) and, when `with_forces`
+/// and the task has forces, `"forces": {"files": {name: svg},
+/// "balancing_moment", "zhukovsky_moment"}` (the animation asks for the plans
+/// only; a still angle gets the forces too).
+pub fn at_angle(p: &Page, phi: f64, with_forces: bool) -> String {
     if !phi.is_finite() {
         return reply::error_json("the crank angle must be a finite number", None, None);
     }
-    match try_at_angle(p, phi) {
+    match try_at_angle(p, phi, with_forces) {
         Ok(v) => v.to_string(),
         Err(e) => reply::from_error(&p.task, &e).to_string(),
     }
 }
 
-fn try_at_angle(p: &Page, phi: f64) -> Result<Value, tmm_report::Error> {
+fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_report::Error> {
     let Some(l) = tmm_report::linkage::load(&p.task)? else {
         return Ok(json!({ "none": true }));
     };
@@ -110,7 +111,8 @@ fn try_at_angle(p: &Page, phi: f64) -> Result<Value, tmm_report::Error> {
         "velocity_plan": text("velocity-plan.svg"),
         "acceleration_plan": text("acceleration-plan.svg"),
     });
-    if p.has("forces")
+    if with_forces
+        && p.has("forces")
         && let Some((fl, ft)) = tmm_report::forces::load(&p.task)?
     {
         let fa = tmm_report::forces::analyse(&p.task, &fl, &ft, Some(phi))?;

@@ -53,8 +53,7 @@ pub fn axes(task: &TaskSource) -> Result<Option<ContourAxes>, Error> {
         return Ok(None);
     };
     let job = raw.job(&origin, false)?;
-    let c = blocking_contour(&job.spec, &ContourOptions::default())
-        .map_err(|e| tmm_report::gear::input::gear_error(&origin, &e))?;
+    let c = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| tmm_report::gear::input::gear_error(&origin, &e))?;
     let mut cv = Canvas::new(PAPER.0, PAPER.1);
     let scale = cv.fit((c.x1.0, c.x1.1, c.x2.0, c.x2.1), PLOT_BOX);
     Ok(Some(ContourAxes {
@@ -97,9 +96,7 @@ pub fn task_with_shifts(task: &TaskSource, x1: f64, x2: f64) -> Result<TaskSourc
     g.remove("aw");
     g.remove("criterion");
     let text = toml::to_string(&t).map_err(|e| Error::input("gear", e))?;
-    Ok(TaskSource::new(task.name.clone(), text)
-        .with_lang(task.lang)
-        .with_sheet(task.sheet))
+    Ok(TaskSource::new(task.name.clone(), text).with_lang(task.lang).with_sheet(task.sheet))
 }
 
 /// The pair at (x1, x2): `{"ok", "gear": <gear.json>, "text", "files":

@@ -59,7 +59,12 @@ pub fn analyse(name: &str, text: &str, lang: &str) -> String {
 /// One text file of the last successful run (`linkage/positions.svg`, …).
 #[wasm_bindgen]
 pub fn file_text(path: &str) -> Option<String> {
-    PAGE.with(|s| s.borrow().as_ref().and_then(|p| p.file(path)).and_then(|d| d.as_text().map(str::to_string)))
+    PAGE.with(|s| {
+        s.borrow()
+            .as_ref()
+            .and_then(|p| p.file(path))
+            .and_then(|d| d.as_text().map(str::to_string))
+    })
 }
 
 /// The bytes of one file of the last successful run, for a download.
@@ -76,10 +81,11 @@ pub fn frames(n: usize) -> String {
 }
 
 /// The velocity and acceleration plans, the force drawings and Zhukovsky's
-/// lever at the crank angle `phi` (rad), as JSON (see [`angle::at_angle`]).
+/// lever at the crank angle `phi` (rad), as JSON (see [`angle::at_angle`]);
+/// the forces only when `with_forces`.
 #[wasm_bindgen]
-pub fn at_angle(phi: f64) -> String {
-    with_page(|p| angle::at_angle(p, phi))
+pub fn at_angle(phi: f64, with_forces: bool) -> String {
+    with_page(|p| angle::at_angle(p, phi, with_forces))
 }
 
 /// The blocking contour's axes and where they lie on its drawing, as JSON

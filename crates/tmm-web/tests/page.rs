@@ -103,8 +103,8 @@ fn frames_keep_the_link_lengths() {
 #[test]
 fn plans_follow_the_angle() {
     let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
-    let a = parse(&tmm_web::angle::at_angle(&p, 0.3));
-    let b = parse(&tmm_web::angle::at_angle(&p, 1.3));
+    let a = parse(&tmm_web::angle::at_angle(&p, 0.3, true));
+    let b = parse(&tmm_web::angle::at_angle(&p, 1.3, false));
     assert_eq!(a["ok"], true);
     assert!((a["phi"].as_f64().unwrap() - 0.3).abs() < 1e-12);
     assert_ne!(a["velocity_plan"], b["velocity_plan"]);
@@ -115,7 +115,8 @@ fn plans_follow_the_angle() {
         a["forces"]["zhukovsky_moment"].as_f64().unwrap(),
     );
     assert!((mb - mz).abs() <= 1e-6 * mb.abs().max(1.0), "{mb} vs {mz}");
-    assert_eq!(parse(&tmm_web::angle::at_angle(&p, f64::NAN))["ok"], false);
+    assert!(b["forces"].is_null());
+    assert_eq!(parse(&tmm_web::angle::at_angle(&p, f64::NAN, true))["ok"], false);
 }
 
 #[test]
