@@ -232,13 +232,14 @@ function cursorPsi() {
   const F = state.frames; const p = F.phi[state.frame];
   return (((F.direction * (p - F.start)) % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
 }
-// The diagrams run over one revolution: the longest curve spans ψ = 0…2π.
+// The diagrams run over one revolution: the longest curve (polyline or
+// path) spans ψ = 0…2π.
 function moveCursors(psi) {
   document.querySelectorAll("#diagrams svg").forEach((svg) => {
     svg.querySelector(".cursor")?.remove();
     if (psi == null) return;
     let best = null, bl = 0;
-    svg.querySelectorAll("polyline").forEach((pl) => { const n = pl.points.numberOfItems; if (n > bl) { bl = n; best = pl; } });
+    svg.querySelectorAll("polyline, path").forEach((pl) => { const n = (pl.getAttribute("points") || pl.getAttribute("d") || "").length; if (n > bl) { bl = n; best = pl; } });
     if (!best) return;
     const bb = best.getBBox();
     const x = bb.x + bb.width * psi / (2 * Math.PI);
