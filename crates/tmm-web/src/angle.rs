@@ -43,10 +43,8 @@ fn link_segments(m: &tmm_linkage::Mechanism) -> Vec<(usize, usize)> {
 /// "xy": [n][points][2]}` (m, rad). `{"none": true}` without a linkage.
 pub fn frames(p: &Page, n: usize) -> String {
     let n = n.clamp(2, 3600);
-    let loaded = match tmm_report::linkage::load(&p.task) {
-        Ok(Some(l)) => l,
-        Ok(None) => return json!({ "none": true }).to_string(),
-        Err(e) => return reply::from_error(&p.task, &e).to_string(),
+    let Some(loaded) = &p.linkage else {
+        return json!({ "none": true }).to_string();
     };
     let m = &loaded.mech;
     let cycle = match Cycle::new(m, loaded.task.working) {
@@ -98,11 +96,11 @@ pub fn at_angle(p: &Page, phi: f64, with_forces: bool) -> String {
 }
 
 fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_report::Error> {
-    let Some(l) = tmm_report::linkage::load(&p.task)? else {
+    let Some(l) = &p.linkage else {
         return Ok(json!({ "none": true }));
     };
-    let a = tmm_report::linkage::analyse(&l, &p.task, Some(phi), 1)?;
-    let docs = tmm_report::linkage::drawings(&l, &a)?;
+    let a = tmm_report::linkage::analyse(l, &p.task, Some(phi), 1)?;
+    let docs = tmm_report::linkage::drawings(l, &a)?;
     let text = |name: &str| docs.get(name).and_then(|d| d.as_text()).unwrap_or_default().to_string();
     let mut v = json!({
         "ok": true,
@@ -111,17 +109,14 @@ fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_repo
         "velocity_plan": text("velocity-plan.svg"),
         "acceleration_plan": text("acceleration-plan.svg"),
     });
-    if with_forces
-        && p.has("forces")
-        && let Some((fl, ft)) = tmm_report::forces::load(&p.task)?
-    {
-        let fa = tmm_report::forces::analyse(&p.task, &fl, &ft, Some(phi))?;
-        let fd = tmm_report::forces::drawings(&fl, &ft, &fa)?;
+    if with_forces && let Some((fl, ft)) = &p.forces {
+        let fa = tmm_report::forces::analyse(&p.task, fl, ft, Some(phi))?;
+        let fd = tmm_report::forces::drawings(fl, ft, &fa)?;
         let mut files = serde_json::Map::new();
         for d in fd.iter().filter(|d| d.extension() == "svg" && !d.path.starts_with("strength")) {
             files.insert(d.path.clone(), d.as_text().unwrap_or_default().into());
         }
-        let j = tmm_report::forces::json_document(&fl, &ft, &fa);
+        let j = tmm_report::forces::json_document(fl, ft, &fa);
         v["forces"] = json!({
             "files": files,
             "balancing_moment": j["detail"]["balancing_moment"],

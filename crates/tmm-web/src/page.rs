@@ -18,6 +18,11 @@ pub struct Page {
     pub task: TaskSource,
     /// Everything the run produced.
     pub run: Run,
+    /// The `[linkage]` section read and compiled once, for the views at
+    /// one crank angle.
+    pub linkage: Option<tmm_report::linkage::Loaded>,
+    /// The `[forces]` section with its mechanism, read once.
+    pub forces: Option<(tmm_report::linkage::Loaded, tmm_report::forces::ForcesTask)>,
 }
 
 impl Page {
@@ -33,7 +38,14 @@ impl Page {
         let run = run_task_in(&src, lang)?;
         let prepared = src.with_lang(run.project.lang).with_sheet(run.project.sheet);
         let task = tmm_report::synthesis::with_linkage(&prepared)?.into_owned();
-        Ok(Page { task, run })
+        let linkage = tmm_report::linkage::load(&task)?;
+        let forces = tmm_report::forces::load(&task)?;
+        Ok(Page {
+            task,
+            run,
+            linkage,
+            forces,
+        })
     }
 
     /// One file of the run.
