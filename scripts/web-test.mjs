@@ -95,6 +95,9 @@ writeFileSync(join(editedDir, "edited.toml"), edited);
 const expEdited = JSON.parse(execFileSync(tmmBin, ["run", "--json", join(editedDir, "edited.toml")], { maxBuffer: 64 << 20 }).toString());
 const kv1 = await js(`+document.querySelector('[data-key="linkage.kv"]').dataset.value`);
 check("the edited Kv equals the CLI's for the edited file", Math.abs(kv1 - expEdited.linkage.kv) <= 1e-12, `page ${kv1}, cli ${expEdited.linkage.kv}`);
+check("the edited task is kept in the URL", await until("location.hash.startsWith('#task=') && !location.hash.includes('undefined')"));
+await sleep(500);
+const editedUrl = await js("location.href");
 
 // ---------- a bad value shows the CLI's error at its line ----------
 const bad = lines.map((l, i) => (i === lineNo - 1 ? 'length = "-480 mm"' : l)).join("\n");
@@ -167,6 +170,14 @@ results.figures.animation_fps = nFrames / ((Date.now() - t0) / 1000);
 results.figures.at_angle_ms = await js("window.tmmPage.lastAngleMs");
 console.log("animation of seed-003 with plans:", results.figures.animation_fps.toFixed(1), "frames/s");
 await shot("mechanism", "mechanism-seed-003");
+
+// ---------- a link reproduces the task ----------
+await send("Page.navigate", { url: "about:blank" });
+await sleep(200);
+await send("Page.navigate", { url: editedUrl });
+check("the page opened from the link is ready", await until("document.body && document.body.dataset.ready === '1'"));
+const kvLink = await js(`+document.querySelector('[data-key="linkage.kv"]').dataset.value`);
+check("the link reproduces the edited task", Math.abs(kvLink - expEdited.linkage.kv) <= 1e-12, `Kv ${kvLink}`);
 
 // ---------- bundle size ----------
 const wasm = readFileSync(join(distDir, "tmm_web_bg.wasm"));
