@@ -186,8 +186,14 @@ function drawMechanism() {
     g.beginPath(); g.arc(u, v, 4, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.lineWidth = 1.5; g.strokeStyle = "#000"; g.stroke();
     g.fillStyle = "#000"; g.fillText(n, u + 6, v - 6);
   });
-  const [pu, pv] = T.to(fr[F.pivot]);
-  g.beginPath(); g.moveTo(pu, pv); g.lineTo(pu - 8, pv + 12); g.lineTo(pu + 8, pv + 12); g.closePath(); g.stroke();
+  // the frame's pivots: the points that do not move over the cycle
+  const half = F.xy[Math.floor(F.xy.length / 2)];
+  F.names.forEach((_, j) => {
+    if (Math.hypot(fr[j][0] - half[j][0], fr[j][1] - half[j][1]) > 1e-9 || Math.hypot(fr[j][0] - F.xy[0][j][0], fr[j][1] - F.xy[0][j][1]) > 1e-9) return;
+    const [pu, pv] = T.to(fr[j]);
+    g.beginPath(); g.moveTo(pu, pv + 4); g.lineTo(pu - 8, pv + 14); g.lineTo(pu + 8, pv + 14); g.closePath(); g.stroke();
+    g.beginPath(); g.moveTo(pu - 12, pv + 14); g.lineTo(pu + 12, pv + 14); g.stroke();
+  });
 }
 function nearestFrame(phi) {
   const F = state.frames; let best = 0, bd = Infinity;
