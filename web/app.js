@@ -269,13 +269,13 @@ function showGear(svgs) {
   if (!has) { $("contour").replaceChildren(); $("gear-drawings").replaceChildren(); $("gear-numbers").textContent = "no [gear] in the task"; return; }
   const text = (p) => (svgs ? svgs[p] : tmm.file_text(p));
   if (!svgs) gearNumbers(state.reply.report.gear);
-  state.contourAxes = JSON.parse(tmm.gear_contour());
+  if (!svgs) state.contourAxes = null; // a new task: its contour is computed on the first click
   $("contour").replaceChildren(drawing("gear/contour.svg", text("gear/contour.svg")));
   fill("gear-drawings", ["gear/mesh.svg", "gear/sliding.svg", "gear/profiles.svg"].map((p) => [p, text(p)]));
   const svg = $("contour").querySelector("svg");
   svg.style.cursor = "crosshair";
   svg.addEventListener("click", (e) => {
-    const A = state.contourAxes; if (!A.ok) return;
+    const A = (state.contourAxes ??= JSON.parse(tmm.gear_contour())); if (!A.ok) return;
     const pt = new DOMPoint(e.clientX, e.clientY).matrixTransform(svg.getScreenCTM().inverse());
     const x1 = (pt.x - A.origin[0]) / A.scale, x2 = (A.origin[1] - pt.y) / A.scale;
     const r = JSON.parse(tmm.gear_at(+x1.toFixed(3), +x2.toFixed(3)));
