@@ -110,7 +110,11 @@ pub fn frame_marks(format: SheetFormat) -> Vec<Mark> {
     let mut rect = |r: Rect, thick: bool| {
         let c = [(r.x, r.y), (r.right(), r.y), (r.right(), r.bottom()), (r.x, r.bottom())];
         for i in 0..4 {
-            out.push(Mark::Line { a: c[i], b: c[(i + 1) % 4], thick });
+            out.push(Mark::Line {
+                a: c[i],
+                b: c[(i + 1) % 4],
+                thick,
+            });
         }
     };
     rect(Rect { x: 0.0, y: 0.0, w, h }, false);
@@ -134,17 +138,32 @@ pub fn marks_svg(marks: &[Mark]) -> String {
                     if *thick { MAIN_LINE_MM } else { THIN_LINE_MM }
                 );
             }
-            Mark::Text { at, size, align, text, squeeze } => {
+            Mark::Text {
+                at,
+                size,
+                align,
+                text,
+                squeeze,
+            } => {
                 let anchor = match align {
                     Align::Start => "start",
                     Align::Middle => "middle",
                 };
-                let fit = squeeze.map_or(String::new(), |w| format!(" textLength=\"{w:.2}\" lengthAdjust=\"spacingAndGlyphs\""));
+                // a text too long for its place is narrowed by a scale (not every
+                // viewer honours textLength)
+                let k = squeeze.map_or(1.0, |w| (w / text_width(text, *size)).min(1.0));
+                let (x, y, tr) = if k < 1.0 {
+                    (
+                        0.0,
+                        0.0,
+                        format!(" transform=\"translate({:.2} {:.2}) scale({k:.4} 1)\"", at.0, at.1),
+                    )
+                } else {
+                    (at.0, at.1, String::new())
+                };
                 let _ = writeln!(
                     s,
-                    "<text x=\"{:.2}\" y=\"{:.2}\" font-size=\"{size}\" font-family=\"{FONTS}\" font-style=\"italic\" text-anchor=\"{anchor}\" fill=\"#000000\"{fit}>{}</text>",
-                    at.0,
-                    at.1,
+                    "<text x=\"{x:.2}\" y=\"{y:.2}\"{tr} font-size=\"{size}\" font-family=\"{FONTS}\" font-style=\"italic\" text-anchor=\"{anchor}\" fill=\"#000000\">{}</text>",
                     escape(text)
                 );
             }

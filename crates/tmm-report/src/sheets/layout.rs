@@ -72,13 +72,21 @@ impl Packer {
                 next.push(Rect { w: r.x - f.x, ..*f });
             }
             if r.right() < f.right() {
-                next.push(Rect { x: r.right(), w: f.right() - r.right(), ..*f });
+                next.push(Rect {
+                    x: r.right(),
+                    w: f.right() - r.right(),
+                    ..*f
+                });
             }
             if r.y > f.y {
                 next.push(Rect { h: r.y - f.y, ..*f });
             }
             if r.bottom() < f.bottom() {
-                next.push(Rect { y: r.bottom(), h: f.bottom() - r.bottom(), ..*f });
+                next.push(Rect {
+                    y: r.bottom(),
+                    h: f.bottom() - r.bottom(),
+                    ..*f
+                });
             }
         }
         // keep only the maximal ones
@@ -87,7 +95,10 @@ impl Packer {
             if a.w <= 1e-9 || a.h <= 1e-9 {
                 continue;
             }
-            let inside_other = next.iter().enumerate().any(|(j, b)| j != i && b.contains(a) && !(a.contains(b) && j > i));
+            let inside_other = next
+                .iter()
+                .enumerate()
+                .any(|(j, b)| j != i && b.contains(a) && !(a.contains(b) && j > i));
             if !inside_other {
                 keep.push(*a);
             }
@@ -109,13 +120,25 @@ impl Packer {
     /// assert!(p.place(40.0, 30.0).is_none());
     /// ```
     pub fn place(&mut self, w: f64, h: f64) -> Option<Rect> {
+        self.place_by(w, h, false)
+    }
+
+    /// As [`Packer::place`], or, with `columns`, the left-most, then
+    /// top-most place (the drawings fill columns instead of rows).
+    pub fn place_by(&mut self, w: f64, h: f64, columns: bool) -> Option<Rect> {
+        let key = |r: &Rect| if columns { (r.x, r.y) } else { (r.y, r.x) };
         let best = self
             .free
             .iter()
             .filter(|f| w <= f.w + 1e-9 && h <= f.h + 1e-9)
-            .min_by(|a, b| (a.y, a.x).partial_cmp(&(b.y, b.x)).unwrap_or(std::cmp::Ordering::Equal))
+            .min_by(|a, b| key(a).partial_cmp(&key(b)).unwrap_or(std::cmp::Ordering::Equal))
             .copied()?;
-        let r = Rect { x: best.x, y: best.y, w, h };
+        let r = Rect {
+            x: best.x,
+            y: best.y,
+            w,
+            h,
+        };
         self.occupy(r);
         Some(r)
     }

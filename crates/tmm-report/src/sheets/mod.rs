@@ -35,11 +35,11 @@ use frame::{Align, FONTS, Mark, inner_frame, marks_svg, text_width};
 use layout::{Packer, Rect};
 
 /// The clear distance between drawings and from the frame, mm.
-pub const GAP_MM: f64 = 6.0;
+pub const GAP_MM: f64 = 5.0;
 /// The caption's font size above each drawing, mm (GOST 2.304).
 pub const CAPTION_MM: f64 = 5.0;
 /// The height of the caption strip above each drawing, mm.
-pub const CAPTION_STRIP_MM: f64 = 8.0;
+pub const CAPTION_STRIP_MM: f64 = 7.0;
 
 /// One sheet of the course: its title key and the drawings it holds, in
 /// the course's order; `*` ends a prefix (`forces/group-*`); `!` marks a
@@ -85,11 +85,23 @@ const TEMPLATES: [Template; 4] = [
     },
     Template {
         folders: &["gear", "planetary"],
-        order: &["!gear/mesh", "!gear/contour", "!gear/sliding", "!planetary/planetary", "gear/profiles"],
+        order: &[
+            "!gear/mesh",
+            "!gear/contour",
+            "!gear/sliding",
+            "!planetary/planetary",
+            "gear/profiles",
+        ],
     },
     Template {
         folders: &["cam"],
-        order: &["!cam/cam", "!cam/cam-motion", "!cam/cam-sizing", "cam/cam-analogs", "cam/cam-pressure"],
+        order: &[
+            "!cam/cam",
+            "!cam/cam-motion",
+            "!cam/cam-sizing",
+            "cam/cam-analogs",
+            "cam/cam-pressure",
+        ],
     },
 ];
 
@@ -178,7 +190,12 @@ fn matches(pattern: &str, stem: &str) -> bool {
 fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize) -> Option<Drawing> {
     let toks = xml::tokens(text).ok()?;
     let (root, body_from) = toks.iter().find_map(|t| match t {
-        xml::Token::Start { name: "svg", to, empty: false, .. } => Some((t, *to)),
+        xml::Token::Start {
+            name: "svg",
+            to,
+            empty: false,
+            ..
+        } => Some((t, *to)),
         _ => None,
     })?;
     let body_to = text.rfind("</svg>")?;
@@ -192,9 +209,18 @@ fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize
     }
     let vb: Vec<f64> = root
         .attr("viewBox")
-        .map(|v| v.split([' ', ',']).filter(|s| !s.is_empty()).filter_map(|s| s.parse().ok()).collect())
+        .map(|v| {
+            v.split([' ', ','])
+                .filter(|s| !s.is_empty())
+                .filter_map(|s| s.parse().ok())
+                .collect()
+        })
         .unwrap_or_default();
-    let view_box = if vb.len() == 4 && vb[2] > 0.0 && vb[3] > 0.0 { [vb[0], vb[1], vb[2], vb[3]] } else { [0.0, 0.0, w, h] };
+    let view_box = if vb.len() == 4 && vb[2] > 0.0 && vb[3] > 0.0 {
+        [vb[0], vb[1], vb[2], vb[3]]
+    } else {
+        [0.0, 0.0, w, h]
+    };
     let mut body = text[body_from..body_to].to_string();
     // unique ids: every id of the drawing gets the drawing's prefix
     let mut ids: Vec<&str> = toks.iter().filter_map(|t| t.attr("id")).collect();
@@ -253,7 +279,11 @@ fn collect(docs: &Documents, t: &Template, lang: Language, next_id: &mut usize) 
 
 /// The size of a drawing's box with its caption: (width, height, caption size).
 fn item_size(d: &Drawing) -> (f64, f64, f64) {
-    let size = if text_width(&d.caption, CAPTION_MM) <= d.w { CAPTION_MM } else { 3.5 };
+    let size = if text_width(&d.caption, CAPTION_MM) <= d.w {
+        CAPTION_MM
+    } else {
+        3.5
+    };
     let w = d.w.max(text_width(&d.caption, size));
     (w, d.h + CAPTION_STRIP_MM, size)
 }
@@ -273,10 +303,20 @@ fn field(format: crate::project::SheetFormat) -> Rect {
 /// trailing gap, the title block (and the note strip, when `note_h > 0`)
 /// is occupied first. Returns the placed (index, box without the gap) and
 /// the note's box.
-fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>) -> (Vec<(usize, Rect)>, Option<Rect>) {
+fn pack(
+    ds: &[Drawing],
+    order: &[usize],
+    format: crate::project::SheetFormat,
+    note: Option<(f64, f64)>,
+    columns: bool,
+) -> (Vec<(usize, Rect)>, Option<Rect>) {
     let f = field(format);
     let tb = title_block::place(inner_frame(format));
-    let mut p = Packer::new(Rect { w: f.w + GAP_MM, h: f.h + GAP_MM, ..f });
+    let mut p = Packer::new(Rect {
+        w: f.w + GAP_MM,
+        h: f.h + GAP_MM,
+        ..f
+    });
     p.occupy(Rect {
         x: tb.x - GAP_MM + GAP_MM,
         y: tb.y - GAP_MM + GAP_MM,
@@ -292,32 +332,59 @@ fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, no
             w: nw,
             h: nh,
         };
-        p.occupy(Rect { w: nw + GAP_MM, h: nh + GAP_MM, ..r });
+        p.occupy(Rect {
+            w: nw + GAP_MM,
+            h: nh + GAP_MM,
+            ..r
+        });
         note_rect = Some(r);
     }
     let mut placed = Vec::new();
     for &i in order {
         let (w, h, _) = item_size(&ds[i]);
-        if let Some(r) = p.place(w + GAP_MM, h + GAP_MM) {
+        if let Some(r) = p.place_by(w + GAP_MM, h + GAP_MM, columns) {
             placed.push((i, Rect { x: r.x, y: r.y, w, h }));
         }
     }
     (placed, note_rect)
 }
 
-/// The better of two packing orders (the course's, and the largest first):
-/// the one placing more required drawings, then more drawings.
-fn best_pack(ds: &[Drawing], left: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>) -> (Vec<(usize, Rect)>, Option<Rect>) {
-    let mut by_area = left.to_vec();
-    by_area.sort_by(|&a, &b| {
-        let (wa, ha, _) = item_size(&ds[a]);
-        let (wb, hb, _) = item_size(&ds[b]);
-        (ds[b].required, hb, wb * hb).partial_cmp(&(ds[a].required, ha, wa * ha)).unwrap_or(std::cmp::Ordering::Equal)
-    });
-    let a = pack(ds, left, format, note);
-    let b = pack(ds, &by_area, format, note);
-    let score = |p: &(Vec<(usize, Rect)>, Option<Rect>)| (p.0.iter().filter(|(i, _)| ds[*i].required).count(), p.0.len());
-    if score(&b) > score(&a) { b } else { a }
+/// The best of several packings: the course's order, the tallest first,
+/// the widest first and the largest first, each filling rows and filling
+/// columns; the best places the most required drawings, then the most
+/// drawings, then the most area.
+fn best_pack(
+    ds: &[Drawing],
+    left: &[usize],
+    format: crate::project::SheetFormat,
+    note: Option<(f64, f64)>,
+) -> (Vec<(usize, Rect)>, Option<Rect>) {
+    let sorted = |key: &dyn Fn(f64, f64) -> f64| {
+        let mut v = left.to_vec();
+        v.sort_by(|&a, &b| {
+            let (wa, ha, _) = item_size(&ds[a]);
+            let (wb, hb, _) = item_size(&ds[b]);
+            (ds[b].required, key(wb, hb))
+                .partial_cmp(&(ds[a].required, key(wa, ha)))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        v
+    };
+    let orders = [left.to_vec(), sorted(&|_, h| h), sorted(&|w, _| w), sorted(&|w, h| w * h)];
+    let score = |p: &(Vec<(usize, Rect)>, Option<Rect>)| {
+        let area: f64 = p.0.iter().map(|(_, r)| r.w * r.h).sum();
+        (p.0.iter().filter(|(i, _)| ds[*i].required).count(), p.0.len(), area)
+    };
+    let mut best: Option<(Vec<(usize, Rect)>, Option<Rect>)> = None;
+    for columns in [false, true] {
+        for o in &orders {
+            let p = pack(ds, o, format, note, columns);
+            if best.as_ref().is_none_or(|b| score(&p) > score(b)) {
+                best = Some(p);
+            }
+        }
+    }
+    best.unwrap_or_default()
 }
 
 const NOTE_MM: f64 = 3.5;
@@ -381,7 +448,11 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
                 let nh = NOTE_LINE_MM * (lines.len() as f64 + 2.0);
                 let (placed, note) = best_pack(&ds, &left, format, Some((nw, nh)));
                 out = left_out.clone();
-                out.extend(left.iter().filter(|i| !placed.iter().any(|(j, _)| j == *i)).map(|&i| ds[i].caption.clone()));
+                out.extend(
+                    left.iter()
+                        .filter(|i| !placed.iter().any(|(j, _)| j == *i))
+                        .map(|&i| ds[i].caption.clone()),
+                );
                 (placed, note)
             };
             pages.push((ti, ds.clone(), to_placed(&ds, &placed), out, note, continued));
@@ -466,10 +537,15 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
         project.sheet.name(),
         sheet.number
     );
-    let _ = writeln!(s, "<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\" stroke=\"none\"/>");
+    let _ = writeln!(
+        s,
+        "<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\" stroke=\"none\"/>"
+    );
     s.push_str("<g id=\"drawings\">\n");
     for p in &sheet.placed {
-        let Some(d) = ds.iter().find(|d| d.path == p.source) else { continue };
+        let Some(d) = ds.iter().find(|d| d.path == p.source) else {
+            continue;
+        };
         let (_, _, size) = item_size(d);
         let mut cap = String::new();
         let _ = write!(
@@ -519,7 +595,6 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
     let fields = title_block::Fields {
         designation: project.designation.clone(),
         title: sheet.title.clone(),
-        project_title: project.title.clone(),
         scale: sheet.scale.clone(),
         sheet: sheet.number,
         sheets: count,
@@ -548,7 +623,8 @@ pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents,
     let mut out = Documents::new();
     for sheet in layout_sheets(docs, project) {
         let mut dxf = DxfDoc::new();
-        svg_to_dxf::convert(&sheet.svg, &mut dxf, h).map_err(|e| Error::Io(format!("sheet {}: cannot convert to DXF: {e}", sheet.number)))?;
+        svg_to_dxf::convert(&sheet.svg, &mut dxf, h)
+            .map_err(|e| Error::Io(format!("sheet {}: cannot convert to DXF: {e}", sheet.number)))?;
         out.add_text(format!("sheets/sheet-{}.svg", sheet.number), sheet.svg)?;
         out.add_bytes(format!("sheets/sheet-{}.dxf", sheet.number), dxf.to_bytes()?)?;
     }

@@ -226,7 +226,11 @@ impl Out<'_> {
         let inside = |p: &(f64, f64)| p.0 >= clip.0 - 1e-6 && p.0 <= clip.2 + 1e-6 && p.1 >= clip.1 - 1e-6 && p.1 <= clip.3 + 1e-6;
         if pts.iter().all(inside) {
             let q: Vec<(f64, f64)> = pts.iter().map(|&p| self.flip(p)).collect();
-            self.dxf.polyline(&q, closed);
+            if q.len() == 2 && !closed {
+                self.dxf.line(q[0], q[1]);
+            } else {
+                self.dxf.polyline(&q, closed);
+            }
             self.count += 1;
             return;
         }
@@ -334,7 +338,10 @@ fn path_points(d: &str) -> Vec<(Vec<(f64, f64)>, bool)> {
     let (mut p, mut start) = ((0.0, 0.0), (0.0, 0.0));
     // split into (command, numbers)
     let mut cmds: Vec<(char, Vec<f64>)> = Vec::new();
-    let idx: Vec<(usize, char)> = d.char_indices().filter(|(_, c)| c.is_ascii_alphabetic() && *c != 'e' && *c != 'E').collect();
+    let idx: Vec<(usize, char)> = d
+        .char_indices()
+        .filter(|(_, c)| c.is_ascii_alphabetic() && *c != 'e' && *c != 'E')
+        .collect();
     for (n, &(i, c)) in idx.iter().enumerate() {
         let end = idx.get(n + 1).map_or(d.len(), |x| x.0);
         cmds.push((c, numbers(&d[i + 1..end])));
@@ -400,11 +407,17 @@ fn path_points(d: &str) -> Vec<(Vec<(f64, f64)>, bool)> {
                         let q = if k == 6 {
                             let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
                             let all = [p, pts[0], pts[1], pts[2]];
-                            (all.iter().zip(w).map(|(a, w)| a.0 * w).sum(), all.iter().zip(w).map(|(a, w)| a.1 * w).sum())
+                            (
+                                all.iter().zip(w).map(|(a, w)| a.0 * w).sum(),
+                                all.iter().zip(w).map(|(a, w)| a.1 * w).sum(),
+                            )
                         } else {
                             let w = [u * u, 2.0 * u * t, t * t];
                             let all = [p, pts[0], pts[1]];
-                            (all.iter().zip(w).map(|(a, w)| a.0 * w).sum(), all.iter().zip(w).map(|(a, w)| a.1 * w).sum())
+                            (
+                                all.iter().zip(w).map(|(a, w)| a.0 * w).sum(),
+                                all.iter().zip(w).map(|(a, w)| a.1 * w).sum(),
+                            )
                         };
                         cur.push(q);
                     }
@@ -451,7 +464,11 @@ pub fn convert(svg: &str, dxf: &mut DxfDoc, sheet_h_mm: f64) -> Result<usize, St
         dxf.layer(name, aci);
     }
     let toks = tokens(svg)?;
-    let mut out = Out { dxf, sheet_h: sheet_h_mm, count: 0 };
+    let mut out = Out {
+        dxf,
+        sheet_h: sheet_h_mm,
+        count: 0,
+    };
     let big = 1e9;
     let root = State {
         m: Affine::ID,
@@ -479,7 +496,10 @@ pub fn convert(svg: &str, dxf: &mut DxfDoc, sheet_h_mm: f64) -> Result<usize, St
                     }
                     continue;
                 }
-                if matches!(*name, "defs" | "title" | "desc" | "metadata" | "style" | "clipPath" | "marker" | "symbol") {
+                if matches!(
+                    *name,
+                    "defs" | "title" | "desc" | "metadata" | "style" | "clipPath" | "marker" | "symbol"
+                ) {
                     if !empty {
                         skip_depth = 1;
                     }
@@ -615,6 +635,7 @@ fn emit_text(out: &mut Out<'_>, s: &State, at: (f64, f64), value: &str) {
     let h = CAP * s.font_size * s.m.scale();
     let value: String = value.split_whitespace().collect::<Vec<_>>().join(" ");
     out.dxf.layer("text", 0);
-    out.dxf.text_aligned(out.flip(p), h, &value, if rot.abs() < 1e-9 { 0.0 } else { rot }, align);
+    out.dxf
+        .text_aligned(out.flip(p), h, &value, if rot.abs() < 1e-9 { 0.0 } else { rot }, align);
     out.count += 1;
 }

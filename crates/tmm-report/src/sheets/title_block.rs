@@ -31,8 +31,6 @@ pub struct Fields {
     pub designation: String,
     /// The sheet's title (наименование, графа 1).
     pub title: String,
-    /// The project's title, above the sheet's (тема проекта).
-    pub project_title: String,
     /// The scale of the sheet's main drawing (масштаб, графа 6).
     pub scale: String,
     /// This sheet's number (лист, графа 7).
@@ -109,7 +107,9 @@ pub fn marks(at: Rect, f: &Fields, lang: Language) -> Vec<Mark> {
         if s.trim().is_empty() {
             return;
         }
-        let Mark::Text { size, .. } = fitted((0.0, 0.0), max, align, s, width) else { return };
+        let Mark::Text { size, .. } = fitted((0.0, 0.0), max, align, s, width) else {
+            return;
+        };
         let mark = fitted((x0 + x, y0 + y_mid + 0.35 * size), max, align, s, width);
         m.push(mark);
     };
@@ -146,16 +146,20 @@ pub fn marks(at: Rect, f: &Fields, lang: Language) -> Vec<Mark> {
     text(177.0, 37.5, 2.5, Align::Middle, &f.sheets.to_string(), 14.0);
     // designation, name, organisation
     text(125.0, 7.5, 7.0, Align::Middle, &f.designation, 116.0);
-    let name = wrap(&f.title, 30, 3);
-    let n = name.len() as f64 + if f.project_title.is_empty() { 0.0 } else { 1.0 };
-    let mut y = 27.5 - 3.5 * (n - 1.0);
-    if !f.project_title.is_empty() {
-        text(100.0, y, 3.5, Align::Middle, &f.project_title, 67.0);
-        y += 7.0;
-    }
+    let name = wrap(&f.title, 24, 3);
+    // one size for all the lines of the name
+    let size = name
+        .iter()
+        .map(|l| match fitted((0.0, 0.0), 5.0, Align::Middle, l, 67.0) {
+            Mark::Text { size, .. } => size,
+            Mark::Line { .. } => 5.0,
+        })
+        .fold(5.0, f64::min);
+    let step = 1.6 * size;
+    let mut y = 27.5 - step * (name.len() as f64 - 1.0) / 2.0;
     for l in &name {
-        text(100.0, y, 5.0, Align::Middle, l, 67.0);
-        y += 7.0;
+        text(100.0, y, size, Align::Middle, l, 67.0);
+        y += step;
     }
     let org: Vec<&String> = f.organisation.iter().filter(|s| !s.trim().is_empty()).take(3).collect();
     let step = 4.5;

@@ -110,7 +110,11 @@ pub fn tokens(s: &str) -> Result<Vec<Token<'_>>, String> {
             continue;
         }
         let rest = &s[i..];
-        let skip_to = |end: &str| rest.find(end).map(|k| i + k + end.len()).ok_or_else(|| format!("unclosed markup at byte {i}"));
+        let skip_to = |end: &str| {
+            rest.find(end)
+                .map(|k| i + k + end.len())
+                .ok_or_else(|| format!("unclosed markup at byte {i}"))
+        };
         if rest.starts_with("<?") {
             i = skip_to("?>")?;
         } else if rest.starts_with("<!--") {
@@ -123,7 +127,10 @@ pub fn tokens(s: &str) -> Result<Vec<Token<'_>>, String> {
             i = skip_to(">")?;
         } else if let Some(r) = rest.strip_prefix("</") {
             let k = r.find('>').ok_or_else(|| format!("unclosed end tag at byte {i}"))?;
-            out.push(Token::End { name: r[..k].trim(), from: i });
+            out.push(Token::End {
+                name: r[..k].trim(),
+                from: i,
+            });
             i += 2 + k + 1;
         } else {
             let (tok, next) = start_tag(s, i)?;
@@ -137,7 +144,11 @@ pub fn tokens(s: &str) -> Result<Vec<Token<'_>>, String> {
 fn start_tag(s: &str, from: usize) -> Result<(Token<'_>, usize), String> {
     let b = s.as_bytes();
     let mut i = from + 1;
-    let name_end = |i: usize| (i..b.len()).find(|&k| b[k].is_ascii_whitespace() || b[k] == b'>' || b[k] == b'/').unwrap_or(b.len());
+    let name_end = |i: usize| {
+        (i..b.len())
+            .find(|&k| b[k].is_ascii_whitespace() || b[k] == b'>' || b[k] == b'/')
+            .unwrap_or(b.len())
+    };
     let e = name_end(i);
     let name = &s[i..e];
     if name.is_empty() {
@@ -153,11 +164,29 @@ fn start_tag(s: &str, from: usize) -> Result<(Token<'_>, usize), String> {
             return Err(format!("unclosed tag <{name}> at byte {from}"));
         }
         if b[i] == b'>' {
-            return Ok((Token::Start { name, attrs, empty: false, from, to: i + 1 }, i + 1));
+            return Ok((
+                Token::Start {
+                    name,
+                    attrs,
+                    empty: false,
+                    from,
+                    to: i + 1,
+                },
+                i + 1,
+            ));
         }
         if b[i] == b'/' {
             if b.get(i + 1) == Some(&b'>') {
-                return Ok((Token::Start { name, attrs, empty: true, from, to: i + 2 }, i + 2));
+                return Ok((
+                    Token::Start {
+                        name,
+                        attrs,
+                        empty: true,
+                        from,
+                        to: i + 2,
+                    },
+                    i + 2,
+                ));
             }
             return Err(format!("stray '/' in <{name}> at byte {i}"));
         }
@@ -181,7 +210,10 @@ fn start_tag(s: &str, from: usize) -> Result<(Token<'_>, usize), String> {
             return Err(format!("attribute {key} of <{name}> is not quoted (byte {i})"));
         }
         let v0 = i + 1;
-        let v1 = (v0..b.len()).find(|&k| b[k] == q || b[k] == b'<').filter(|&k| b[k] == q).ok_or_else(|| format!("unclosed value of {key} in <{name}> at byte {from}"))?;
+        let v1 = (v0..b.len())
+            .find(|&k| b[k] == q || b[k] == b'<')
+            .filter(|&k| b[k] == q)
+            .ok_or_else(|| format!("unclosed value of {key} in <{name}> at byte {from}"))?;
         attrs.push((key, unescape(&s[v0..v1])));
         i = v1 + 1;
     }
