@@ -73,8 +73,11 @@ fn drawings(svg: &str) -> Vec<(String, Rect)> {
         .collect()
 }
 
+/// A line's ends: x1, y1, x2, y2.
+type Segment = (f64, f64, f64, f64);
+
 /// The lines and texts inside `<g id="{group}">`.
-fn group(svg: &str, id: &str) -> (Vec<(f64, f64, f64, f64)>, Vec<String>) {
+fn group(svg: &str, id: &str) -> (Vec<Segment>, Vec<String>) {
     let toks = tokens(svg).unwrap();
     let (mut lines, mut texts) = (Vec::new(), Vec::new());
     let mut inside = 0usize;

@@ -303,13 +303,7 @@ fn field(format: crate::project::SheetFormat) -> Rect {
 /// trailing gap, the title block (and the note strip, when `note_h > 0`)
 /// is occupied first. Returns the placed (index, box without the gap) and
 /// the note's box.
-fn pack(
-    ds: &[Drawing],
-    order: &[usize],
-    format: crate::project::SheetFormat,
-    note: Option<(f64, f64)>,
-    columns: bool,
-) -> (Vec<(usize, Rect)>, Option<Rect>) {
+fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>, columns: bool) -> Packing {
     let f = field(format);
     let tb = title_block::place(inner_frame(format));
     let mut p = Packer::new(Rect {
@@ -353,12 +347,7 @@ fn pack(
 /// the widest first and the largest first, each filling rows and filling
 /// columns; the best places the most required drawings, then the most
 /// drawings, then the most area.
-fn best_pack(
-    ds: &[Drawing],
-    left: &[usize],
-    format: crate::project::SheetFormat,
-    note: Option<(f64, f64)>,
-) -> (Vec<(usize, Rect)>, Option<Rect>) {
+fn best_pack(ds: &[Drawing], left: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>) -> Packing {
     let sorted = |key: &dyn Fn(f64, f64) -> f64| {
         let mut v = left.to_vec();
         v.sort_by(|&a, &b| {
@@ -371,11 +360,11 @@ fn best_pack(
         v
     };
     let orders = [left.to_vec(), sorted(&|_, h| h), sorted(&|w, _| w), sorted(&|w, h| w * h)];
-    let score = |p: &(Vec<(usize, Rect)>, Option<Rect>)| {
+    let score = |p: &Packing| {
         let area: f64 = p.0.iter().map(|(_, r)| r.w * r.h).sum();
         (p.0.iter().filter(|(i, _)| ds[*i].required).count(), p.0.len(), area)
     };
-    let mut best: Option<(Vec<(usize, Rect)>, Option<Rect>)> = None;
+    let mut best: Option<Packing> = None;
     for columns in [false, true] {
         for o in &orders {
             let p = pack(ds, o, format, note, columns);
@@ -386,6 +375,12 @@ fn best_pack(
     }
     best.unwrap_or_default()
 }
+
+/// A packing: the placed (drawing index, box) and the note's box.
+type Packing = (Vec<(usize, Rect)>, Option<Rect>);
+
+/// A page before numbering: template, drawings, placed, left out, note, continued.
+type Page = (usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool);
 
 const NOTE_MM: f64 = 3.5;
 const NOTE_LINE_MM: f64 = 5.5;
@@ -404,7 +399,7 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
     let format = project.sheet;
     let mut next_id = 0;
     // (template index, drawings placed, left out, note box, continued)
-    let mut pages: Vec<(usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool)> = Vec::new();
+    let mut pages: Vec<Page> = Vec::new();
     for (ti, t) in TEMPLATES.iter().enumerate() {
         let (ds, unreadable) = collect(docs, t, lang, &mut next_id);
         if ds.is_empty() && unreadable.is_empty() {
@@ -432,8 +427,13 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
             let rest: Vec<usize> = left.iter().copied().filter(|i| !placed.iter().any(|(j, _)| j == i)).collect();
             let more_required = rest.iter().any(|&i| ds[i].required);
             if more_required && !placed.is_empty() {
+                // a sheet to be continued shows the required drawings first;
+                // the optional ones wait for the last sheet of the topic
+                let required: Vec<usize> = left.iter().copied().filter(|&i| ds[i].required).collect();
+                let (only, _) = best_pack(&ds, &required, format, None);
+                let placed = if only.is_empty() { placed } else { only };
                 pages.push((ti, ds.clone(), to_placed(&ds, &placed), Vec::new(), None, continued));
-                left = rest;
+                left = left.iter().copied().filter(|i| !placed.iter().any(|(j, _)| j == i)).collect();
                 continued = true;
                 continue;
             }

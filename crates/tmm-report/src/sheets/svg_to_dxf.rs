@@ -286,7 +286,7 @@ fn clip_segment(a: (f64, f64), b: (f64, f64), c: (f64, f64, f64, f64)) -> Option
             }
         }
     }
-    (t0 <= t1).then(|| ((a.0 + t0 * dx, a.1 + t0 * dy), (a.0 + t1 * dx, a.1 + t1 * dy)))
+    (t0 <= t1).then_some(((a.0 + t0 * dx, a.1 + t0 * dy), (a.0 + t1 * dx, a.1 + t1 * dy)))
 }
 
 /// The points of an SVG elliptical arc (SVG 1.1 appendix F.6.5, endpoint to
