@@ -456,8 +456,12 @@ fn circle_points(c: (f64, f64), r: f64) -> Vec<(f64, f64)> {
 ///   <line x1=\"10\" y1=\"10\" x2=\"90\" y2=\"10\" stroke=\"#000\" stroke-width=\"0.7\"/>\
 ///   <text x=\"5\" y=\"45\" font-size=\"5\">A</text></svg>";
 /// assert_eq!(convert(svg, &mut d, 50.0).unwrap(), 2);
-/// let text = d.to_text().unwrap();
-/// assert!(text.contains("contour") && text.contains("\n40.0\n")); // y = 50 − 10
+/// let back = dxf::Drawing::load(&mut d.to_bytes().unwrap().as_slice()).unwrap();
+/// let line = back.entities().find_map(|e| match &e.specific {
+///     dxf::entities::EntityType::Line(l) => Some((e.common.layer.clone(), l.p1.y)),
+///     _ => None,
+/// });
+/// assert_eq!(line, Some(("contour".to_string(), 40.0))); // y = 50 − 10, a main line
 /// ```
 pub fn convert(svg: &str, dxf: &mut DxfDoc, sheet_h_mm: f64) -> Result<usize, String> {
     for (name, aci) in LAYERS {
