@@ -140,13 +140,29 @@ fn drawings_stay_inside_the_frame_off_the_title_block_and_apart() {
             assert_eq!(sh.is_empty(), svgs == 0, "{name} {format}: {svgs} drawings, {} sheets", sh.len());
             for (path, svg) in &sh {
                 assert!(svg.contains(&format!("width=\"{w}mm\" height=\"{h}mm\"")), "{name} {path}");
-                let ds = drawings(svg);
+                let mut ds = drawings(svg);
                 assert!(!ds.is_empty(), "{name} {path}: a sheet without drawings");
+                // the note of what was left out takes its own box, checked as a drawing
+                if let Some(t) = tokens(svg).unwrap().iter().find(|t| t.attr("id") == Some("note")) {
+                    let v: Vec<f64> = t.attr("data-box").unwrap().split(' ').map(|x| x.parse().unwrap()).collect();
+                    ds.push((
+                        "note".to_string(),
+                        Rect {
+                            x: v[0],
+                            y: v[1],
+                            w: v[2],
+                            h: v[3],
+                        },
+                    ));
+                }
                 for (i, (src, r)) in ds.iter().enumerate() {
                     assert!(frame.contains(r), "{name} {format} {path}: {src} {r:?} leaves the frame");
                     assert!(!r.intersects(&tb), "{name} {format} {path}: {src} {r:?} meets the title block");
                     for (src2, r2) in &ds[i + 1..] {
                         assert!(!r.intersects(r2), "{name} {format} {path}: {src} and {src2} overlap");
+                    }
+                    if src == "note" {
+                        continue;
                     }
                     // placed at 1:1: the box is the drawing's own size
                     let own = run.docs.get(src).unwrap().as_text().unwrap();

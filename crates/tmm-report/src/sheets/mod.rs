@@ -574,7 +574,14 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
     s.push_str("</g>\n");
     if let Some(r) = sheet.note {
         let lines = note_lines(lang, &sheet.left_out);
-        s.push_str("<g id=\"note\">\n");
+        let _ = writeln!(
+            s,
+            "<g id=\"note\" data-box=\"{} {} {} {}\">",
+            num(r.x),
+            num(r.y),
+            num(r.w),
+            num(r.h)
+        );
         let marks: Vec<Mark> = lines
             .iter()
             .enumerate()
