@@ -319,3 +319,47 @@ fn the_frame_speaks_the_sheets_language() {
         }
     }
 }
+
+fn fake(w: f64, h: f64, extra: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\"{extra}>\n<g id=\"x\"><line x1=\"0\" y1=\"0\" x2=\"{w}\" y2=\"{h}\" stroke=\"#000\" stroke-width=\"0.7\"/></g></svg>\n"
+    )
+}
+
+#[test]
+fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
+    use tmm_report::project::Project;
+    use tmm_report::sheets::layout_sheets;
+    let mut docs = Documents::new();
+    docs.add_text("cam/cam.svg", fake(200.0, 200.0, " data-scale=\"2:1\"")).unwrap();
+    docs.add_text("cam/cam-motion.svg", fake(200.0, 150.0, " data-scale=\"1:5\""))
+        .unwrap();
+    docs.add_text("cam/cam-pressure.svg", fake(900.0, 100.0, "")).unwrap(); // wider than any A1 field
+    docs.add_text("cam/extra-7.svg", fake(100.0, 100.0, "")).unwrap();
+    let sheets = layout_sheets(&docs, &Project::default());
+    assert_eq!(sheets.len(), 1);
+    let s = &sheets[0];
+    assert_eq!(s.scale, "2:1");
+    assert_eq!(s.placed.len(), 3);
+    assert_eq!(s.left_out, vec![word(Language::Ru, "sheet.fig_cam_cam_pressure").to_string()]);
+    assert!(s.svg.contains(word(Language::Ru, "sheet.left_out")));
+    let (_, texts) = group(&s.svg, "title-block");
+    assert!(texts.iter().any(|t| t == "2:1") && texts.iter().any(|t| t == "Кулачковый механизм"));
+    // ids of the nested drawings are made unique
+    assert!(!s.svg.contains("id=\"x\""));
+    let mut ids: Vec<&str> = s
+        .svg
+        .split("id=\"")
+        .skip(1)
+        .filter_map(|t| t.split('"').next())
+        .filter(|t| t.ends_with("-x"))
+        .collect();
+    assert_eq!(ids.len(), 3, "one prefixed id per drawing");
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), 3, "the ids differ");
+    // the placed boxes are the drawings' own sizes
+    let mut sizes: Vec<(f64, f64)> = drawings(&s.svg).iter().map(|(_, r)| (r.w, r.h)).collect();
+    sizes.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(sizes, vec![(100.0, 100.0), (200.0, 150.0), (200.0, 200.0)]);
+}
