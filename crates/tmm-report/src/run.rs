@@ -93,6 +93,9 @@ pub fn run_task_in(task: &TaskSource, lang: Option<crate::project::Language>) ->
     for o in &sections {
         docs.append(o.docs.clone());
     }
+    // the drawing sheets, made of the drawings above
+    let sheets = crate::sheets::sheet_documents(&docs, &project)?;
+    docs.append(sheets);
     Ok(Run {
         sections,
         report,
