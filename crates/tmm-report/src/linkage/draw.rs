@@ -16,7 +16,7 @@ use crate::svg::{Anchor, Canvas, Series, Style, nice_ticks, plot};
 pub fn draw_all(l: &Loaded, a: &Analysis, dir: &str, docs: &mut Documents) -> Result<(), Error> {
     docs.add_text(format!("{dir}positions.svg"), positions(l, a))?;
     let w = l.mech.crank.omega.abs();
-    let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
+    let lin = a.reading.output.kind == tmm_linkage::cycle::OutputKind::Linear;
     let (su, vu) = if lin { ("s, m", "m") } else { ("s, rad", "rad") };
     let (ds_label, dds_label) = (format!("ds/dφ, {vu}"), format!("d²s/dφ², {vu}"));
     /// One kinematic diagram: file, title, axis labels, curve, colour, and
@@ -86,12 +86,19 @@ pub fn draw_all(l: &Loaded, a: &Analysis, dir: &str, docs: &mut Documents) -> Re
         },
     ];
     for g in diagrams {
-        let points: Vec<(f64, f64)> = a.diagram.iter().map(|d| ((g.x)(d, w), (g.y)(d, w))).collect();
-        let series = [Series {
+        let (points, gaps) = split_at_gaps(a, |d| ((g.x)(d, w), (g.y)(d, w)));
+        let mut series = vec![Series {
             name: g.name,
             points: &points,
             color: g.color,
         }];
+        if !gaps.is_empty() {
+            series.push(Series {
+                name: "does not assemble",
+                points: &gaps,
+                color: "#999999",
+            });
+        }
         docs.add_text(
             format!("{dir}{}", g.file),
             plot(g.title, g.x_label, g.y_label, &series, 200.0, 120.0),
@@ -106,6 +113,34 @@ pub fn draw_all(l: &Loaded, a: &Analysis, dir: &str, docs: &mut Documents) -> Re
         plan("Acceleration plan", "π", "m/s²", &a.plans.acceleration, a.plan_row.pos.phi),
     )?;
     Ok(())
+}
+
+/// Points of a plotted line.
+type Polyline = Vec<(f64, f64)>;
+
+/// A diagram's points with a break (a non-finite point, where the plot lifts
+/// its pen) between assembly ranges, and the gaps as
+/// boxes over the curve's height, each followed by a break.
+fn split_at_gaps(a: &Analysis, f: impl Fn(&[f64; 4]) -> (f64, f64)) -> (Polyline, Polyline) {
+    const BREAK: (f64, f64) = (f64::NAN, f64::NAN);
+    let mut points = Vec::with_capacity(a.diagram.len() + a.diagram_breaks.len());
+    for (k, d) in a.diagram.iter().enumerate() {
+        if a.diagram_breaks.contains(&k) {
+            points.push(BREAK);
+        }
+        points.push(f(d));
+    }
+    // each gap framed by a box over the curve's height
+    let (lo, hi) = points
+        .iter()
+        .filter(|p| p.1.is_finite())
+        .fold((0.0f64, 0.0f64), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
+    let mut gaps = Vec::new();
+    for &(from, to) in &a.diagram_gaps {
+        let (x0, x1) = (f(&[from, 0.0, 0.0, 0.0]).0, f(&[to, 0.0, 0.0, 0.0]).0);
+        gaps.extend([(x0, lo), (x0, hi), (x1, hi), (x1, lo), (x0, lo), BREAK]);
+    }
+    (points, gaps)
 }
 
 /// Segments of each link between its joints, at one solution.
@@ -167,7 +202,12 @@ fn positions(l: &Loaded, a: &Analysis) -> String {
             continue;
         }
         let tr: Vec<(f64, f64)> = a.rows.iter().map(|r| xy(r.sol.points[k].p)).collect();
-        c.polyline(&tr, Style::DASHED.colored("#999999"));
+        // one trajectory per assembly range
+        let mut from = 0;
+        for to in a.row_breaks.iter().copied().chain([tr.len()]) {
+            c.polyline(&tr[from..to.max(from)], Style::DASHED.colored("#999999"));
+            from = to;
+        }
     }
     for r in &a.rows {
         for (p, q) in link_segments(l, &r.sol) {
