@@ -479,3 +479,42 @@ fn double_rocker_errors() {
     assert!(err.contains("[forces] needs a crank that turns a full revolution"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issues 10/11: a motor with an absurd torque, a huge inertia on the motor
+/// shaft or a huge number of points is refused at once with the field named,
+/// not run for seconds nor reported as a NaN angle.
+#[test]
+fn dynamics_bounds() {
+    let text = std::fs::read_to_string(example("seed-003-sixbar.toml")).unwrap();
+    let dir = tempdir("dynbounds");
+    let cases = [
+        (
+            text.replace("nominal_torque = \"26.7 N m\"", "nominal_torque = \"1e300 N m\""),
+            "dynamics.motor.nominal_torque: must be > 0 and at most 1e9",
+        ),
+        (
+            text.replace("nominal_torque = \"26.7 N m\"", "nominal_torque = \"1e9 N m\""),
+            "so steep",
+        ),
+        (
+            text.replace("motor_shaft = \"0.015 kg m^2\"", "motor_shaft = \"1e5 kg m^2\""),
+            "time constant",
+        ),
+        (
+            text.replace("delta = 0.05", "delta = 0.05\npoints = 1000008"),
+            "360…36000 intervals",
+        ),
+    ];
+    for (i, (t, want)) in cases.iter().enumerate() {
+        assert_ne!(t, &text, "case {i} did not change the file");
+        let f = dir.join(format!("case{i}.toml"));
+        std::fs::write(&f, t).unwrap();
+        let (code, _, err) = run(&["dynamics", &f.to_string_lossy()]);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(want) && !err.contains("NaN") && !err.contains("panicked"),
+            "case {i}: {err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
