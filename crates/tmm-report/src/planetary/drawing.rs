@@ -94,10 +94,7 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let mut lab = Placer::new(W, H);
     // Shared radius scale: the whole train (±big plus rims) in 0.64·H mm of
     // height, at the largest standard scale that fits (GOST 2.302).
-    let scale = standard_scale(2.5 * big * 1e3, 0.64 * H).unwrap_or(crate::paper::Scale {
-        factor: 1.0,
-        text: "1:1",
-    });
+    let scale = standard_scale(2.5 * big * 1e3, 0.64 * H).unwrap_or(crate::paper::Scale { factor: 1.0, text: "1:1" });
     let sr = scale.factor * 1e3; // paper mm per metre
     let axis_y = 0.533 * H; // paper mm from the bottom
     c.set_transform(sr, (22.0 + 0.1 * big * sr, axis_y));
@@ -292,7 +289,12 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     // --- the ratios beside each other ---
     let mm = word(lang, "planetary.mm");
     let lines = [
-        format!("{}: {} = {}", word(lang, "planetary.willis"), fraction_text(b), num(lang, b.ratio.value(), 6)),
+        format!(
+            "{}: {} = {}",
+            word(lang, "planetary.willis"),
+            fraction_text(b),
+            num(lang, b.ratio.value(), 6)
+        ),
         format!("{} = {}", word(lang, "planetary.read_picture"), num(lang, ratio_picture, 6)),
         format!("{} = {}", word(lang, "planetary.read_diagram"), num(lang, ratio_diagram, 6)),
         format!(
