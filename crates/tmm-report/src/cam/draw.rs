@@ -571,16 +571,15 @@ pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) ->
     let mut rows: Vec<(Option<Style>, String)> = vec![
         (Some(Style::THICK), word(lang, "cam.legend_working").to_string()),
         (Some(DASH_DOT.colored("#1f4e9c")), word(lang, "cam.legend_pitch").to_string()),
-        (
-            Some(Style::DASHED),
-            format!("{}, r_0 = {} {mm}", word(lang, "cam.legend_base"), num(lang, d.r0 * 1e3, 2)),
-        ),
+        (Some(Style::DASHED), word(lang, "cam.legend_base").to_string()),
+        (None, format!("r_0 = {} {mm}", num(lang, d.r0 * 1e3, 2))),
     ];
     if d.rb > 0.0 && (d.rb - d.r0).abs() > 1e-12 {
         rows.push((
             Some(Style::DASHED.colored("#777777")),
-            format!("{}, r_b = {} {mm}", word(lang, "cam.legend_working_base"), num(lang, d.rb * 1e3, 2)),
+            word(lang, "cam.legend_working_base").to_string(),
         ));
+        rows.push((None, format!("r_b = {} {mm}", num(lang, d.rb * 1e3, 2))));
     }
     rows.push((Some(Style::THIN), word(lang, "cam.legend_rays").to_string()));
     if d.roller > 0.0 {

@@ -322,7 +322,9 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     c.line((0.0, wy0), (0.0, wy1), DASH_DOT);
     for (o, name) in [(sc.o1, "O_1"), (sc.o2, "O_2")] {
         c.line((o.0 - 2.0 * cross, o.1), (o.0 + 2.0 * cross, o.1), DASH_DOT);
+        c.begin_group(&format!("centre-{}", plain(name)));
         c.dot(o, 0.8, "#000");
+        c.end_group();
         let q = paper(o);
         lab.reserve(label_box(q, 1, 1.6));
         lab.place(&Placer::around(q, name, H_LABEL, 1.0), name, H_LABEL, "#000");
@@ -417,6 +419,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
                 })
                 .collect();
             let mut cand: Vec<(f64, Pt)> = Vec::new();
+            c.begin_group(&format!("circle-{}", plain(&name)));
             for run in pts.split(|q| !in_win(q)) {
                 if run.len() >= 2 {
                     c.polyline(run, st);
@@ -433,6 +436,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
                     }
                 }
             }
+            c.end_group();
             cand.sort_by(|a, b| b.0.total_cmp(&a.0));
             let cs: Vec<Pt> = cand.into_iter().map(|x| x.1).collect();
             lab.place(&cs, &name, H_LABEL, st.color);

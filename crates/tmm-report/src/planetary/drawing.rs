@@ -103,7 +103,7 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         &format!(
             "{} {} — {}. {} {}",
             word(lang, "planetary.title"),
-            sc.name(),
+            word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
             teeth_text(sc, b),
             word(lang, "common.scale"),
             scale.text
@@ -268,7 +268,11 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let pl_y = 130.0; // paper y (from the top) of the pole
     let ax_y = pl_y - hh; // … and of the ω-axis
     c.begin_group("angular-diagram");
-    lab.put_left((dx0 - 34.0, 22.0), word(lang, "planetary.diagram"), H_LABEL, "#000");
+    let head = word(lang, "planetary.diagram");
+    let hw = crate::labels::CHAR_WIDTH * H_LABEL * head.chars().count() as f64;
+    let hx = (dx0 - 34.0 + 0.5 * hw).min(W - 1.0 - 0.5 * hw);
+    let heads: Vec<(f64, f64)> = (0..8).map(|i| (hx, 22.0 + 6.0 * f64::from(i))).collect();
+    lab.place(&heads, head, H_LABEL, "#000");
     c.line_paper((dx0 - 36.0, ax_y), (dx0 + 36.0, ax_y), Style::THIN);
     c.line_paper((dx0, ax_y), (dx0, pl_y), Style::DASHED);
     c.text_paper((dx0 + 1.0, pl_y + 4.0), "P", 3.2, Anchor::Start, "#000");
