@@ -89,7 +89,10 @@ fn tmm_run_no_pdf_writes_no_pdf_and_run_writes_the_note() {
     let (code, _, stderr) = run(&["run", task.to_str().unwrap(), "--no-pdf", "--out", out.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
     assert!(out.join("gear/mesh.svg").exists());
-    let pdfs: Vec<_> = walk(&out).into_iter().filter(|p| p.extension().is_some_and(|e| e == "pdf")).collect();
+    let pdfs: Vec<_> = walk(&out)
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "pdf"))
+        .collect();
     assert!(pdfs.is_empty(), "{pdfs:?}");
     assert!(!stderr.contains("typesetting"));
     let (code, _, stderr) = run(&["run", task.to_str().unwrap(), "--lang", "en", "--out", out.to_str().unwrap()]);

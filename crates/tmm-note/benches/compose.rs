@@ -21,7 +21,11 @@ fn default_task_run_note_and_sheets(bencher: divan::Bencher) {
         let note = tmm_note::compose(&run, &task).expect("the note composes");
         let pdf = tmm_note::typeset(&note).expect("the note typesets");
         let mut sheets = 0;
-        for d in run.docs.iter().filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg")) {
+        for d in run
+            .docs
+            .iter()
+            .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
+        {
             let svg = d.as_text().expect("an SVG is text");
             sheets += tmm_note::sheet_pdf(svg).expect("the sheet typesets").len();
         }

@@ -33,8 +33,8 @@ pub mod sheet;
 pub mod translation;
 pub mod world;
 
-pub use error::NoteError;
 pub use compose::compose;
+pub use error::NoteError;
 pub use model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
 pub use sheet::sheet_pdf;
 pub use translation::Translation;

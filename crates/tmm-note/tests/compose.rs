@@ -47,7 +47,7 @@ fn default_note(lang: Lang) -> (String, serde_json::Value, usize) {
 
 fn check_default(lang: Lang) {
     let (text, r, pages) = default_note(lang);
-    assert!(pages >= 30, "{lang:?}: {pages} pages");
+    assert!(pages >= 20, "{lang:?}: {pages} pages");
     let w = Words::load(lang).unwrap();
     for key in ["sec_synthesis", "sec_linkage", "sec_forces", "sec_dynamics", "sec_gear", "sec_planetary", "sec_cam"] {
         let h = w.get(key).unwrap();

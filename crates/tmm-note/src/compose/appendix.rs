@@ -32,7 +32,11 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
                     num(pos.get("phi").and_then(Value::as_f64).unwrap_or(0.0).to_degrees()),
                 ];
                 for n in &names {
-                    r.push(pos.pointer(&format!("/links/{n}/{key}")).and_then(Value::as_f64).map_or(Cell::Empty, num));
+                    r.push(
+                        pos.pointer(&format!("/links/{n}/{key}"))
+                            .and_then(Value::as_f64)
+                            .map_or(Cell::Empty, num),
+                    );
                 }
                 rows.push(r);
             }
@@ -55,7 +59,11 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
                 let rmax = pos
                     .get("reactions")
                     .and_then(Value::as_array)
-                    .map(|r| r.iter().filter_map(|r| r.get("magnitude").and_then(Value::as_f64)).fold(0.0, f64::max))
+                    .map(|r| {
+                        r.iter()
+                            .filter_map(|r| r.get("magnitude").and_then(Value::as_f64))
+                            .fold(0.0, f64::max)
+                    })
                     .unwrap_or(0.0);
                 vec![
                     text(pos.get("label").and_then(Value::as_str).unwrap_or("")),

@@ -61,7 +61,12 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     let mut results = vec![cx.table(
         "tab_cam_phases",
-        &[("col_phase", ""), ("col_phase_angle", "u_deg"), ("col_ds_max", "u_mm"), ("col_dds_max", "u_mm")],
+        &[
+            ("col_phase", ""),
+            ("col_phase_angle", "u_deg"),
+            ("col_ds_max", "u_mm"),
+            ("col_dds_max", "u_mm"),
+        ],
         rows,
     )?];
     let mut q = vec![

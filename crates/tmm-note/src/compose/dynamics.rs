@@ -12,10 +12,17 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         return Ok(None);
     }
     let statement = vec![
-        Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_friction")?.into(), cx.w("assume_md_constant")?.into()]),
+        Block::List(vec![
+            cx.w("assume_rigid")?.into(),
+            cx.w("assume_friction")?.into(),
+            cx.w("assume_md_constant")?.into(),
+        ]),
         cx.para(
             "dy_given",
-            &[cx.qv("/dynamics/delta_requested", 1.0, "")?, cx.qv("/dynamics/omega_nominal", 1.0, "u_rad_s")?],
+            &[
+                cx.qv("/dynamics/delta_requested", 1.0, "")?,
+                cx.qv("/dynamics/omega_nominal", 1.0, "u_rad_s")?,
+            ],
         )?,
         cx.para("dy_method", &[])?,
         cx.para("dy_sought", &[])?,
@@ -36,7 +43,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             (cx.w("q_md")?, cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?),
             (cx.w("q_energy_swing")?, cx.qv("/dynamics/merkalov/energy_swing", 1.0, "u_j")?),
             (cx.w("q_i_merkalov")?, cx.qv("/dynamics/required_inertia/merkalov", 1.0, "u_kgm2")?),
-            (cx.w("q_i_wittenbauer")?, cx.qv("/dynamics/required_inertia/wittenbauer", 1.0, "u_kgm2")?),
+            (
+                cx.w("q_i_wittenbauer")?,
+                cx.qv("/dynamics/required_inertia/wittenbauer", 1.0, "u_kgm2")?,
+            ),
             (cx.w("q_i_exact")?, cx.qv("/dynamics/required_inertia/exact", 1.0, "u_kgm2")?),
             (cx.w("q_i_flywheel")?, cx.qv("/dynamics/flywheel_inertia", 1.0, "u_kgm2")?),
             (cx.w("q_omega_max")?, cx.qv("/dynamics/omega_max", 1.0, "u_rad_s")?),

@@ -127,7 +127,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         ],
     )?];
     if let Some(cycle) = fo.get("cycle").and_then(Value::as_array) {
-        let m: Vec<f64> = cycle.iter().filter_map(|c| c.get("balancing_moment").and_then(Value::as_f64)).collect();
+        let m: Vec<f64> = cycle
+            .iter()
+            .filter_map(|c| c.get("balancing_moment").and_then(Value::as_f64))
+            .collect();
         if !m.is_empty() {
             let lo = m.iter().copied().fold(f64::INFINITY, f64::min);
             let hi = m.iter().copied().fold(f64::NEG_INFINITY, f64::max);

@@ -6,7 +6,7 @@ use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::error::NoteError;
-use crate::model::{Block, Section};
+use crate::model::Section;
 
 /// The given values of the pair as (name, value) rows.
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
@@ -72,7 +72,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 (cx.w("q_eps")?, cx.qv("/gear/eps_alpha", 1.0, "")?),
             ],
         )?,
-        cx.table("tab_gear_wheels", &[("col_quantity", ""), ("col_wheel1", "u_mm"), ("col_wheel2", "u_mm")], rows)?,
+        cx.table(
+            "tab_gear_wheels",
+            &[("col_quantity", ""), ("col_wheel1", "u_mm"), ("col_wheel2", "u_mm")],
+            rows,
+        )?,
     ];
     let mut rows = Vec::new();
     let mut failed = Vec::new();
@@ -83,7 +87,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             if !pass {
                 failed.push(name.clone());
             }
-            let (scale, digits_mm) = if k.starts_with("interference") || k.starts_with("pointing") { (1000.0, true) } else { (1.0, false) };
+            let (scale, digits_mm) = if k.starts_with("interference") || k.starts_with("pointing") {
+                (1000.0, true)
+            } else {
+                (1.0, false)
+            };
             let v = c.get("value").and_then(Value::as_f64).unwrap_or(0.0) * scale;
             let l = c.get("limit").and_then(Value::as_f64).unwrap_or(0.0) * scale;
             let unit = if digits_mm { "u_mm" } else { "" };

@@ -32,7 +32,9 @@ pub(crate) fn link_lengths(cx: &Ctx) -> Vec<(String, f64)> {
     };
     let mut out = Vec::new();
     for l in links {
-        let Some(name) = l.get("name").and_then(|n| n.as_str()) else { continue };
+        let Some(name) = l.get("name").and_then(|n| n.as_str()) else {
+            continue;
+        };
         let joints: Vec<(f64, f64)> = l
             .get("joints")
             .and_then(|j| j.as_array())
@@ -64,7 +66,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let omega = cx.v("/linkage/input/omega")?;
 
     let statement = vec![
-        Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into(), cx.w("assume_omega")?.into()]),
+        Block::List(vec![
+            cx.w("assume_rigid")?.into(),
+            cx.w("assume_pairs")?.into(),
+            cx.w("assume_omega")?.into(),
+        ]),
         cx.para("lk_given", &[cx.q(omega, "u_rad_s")?, cx.deg("/linkage/plans/phi")?])?,
         cx.para("lk_method", &[])?,
         cx.para("lk_sought", &[])?,
@@ -104,7 +110,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     // the plan position: the point speeds and accelerations from the plans
     if let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) {
-        let acc = lk.pointer("/plans/acceleration").and_then(Value::as_array).cloned().unwrap_or_default();
+        let acc = lk
+            .pointer("/plans/acceleration")
+            .and_then(Value::as_array)
+            .cloned()
+            .unwrap_or_default();
         let mut rows = Vec::new();
         for v in plan.iter().filter(|v| v.get("kind").and_then(Value::as_str) == Some("absolute")) {
             let label = v.get("label").and_then(Value::as_str).unwrap_or("");
@@ -132,11 +142,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
         cx.para(
             "lk_conclusion_kinematics",
-            &[
-                cx.qv("/linkage/kv", 1.0, "")?,
-                cx.deg("/linkage/theta")?,
-                pressure_max(cx)?,
-            ],
+            &[cx.qv("/linkage/kv", 1.0, "")?, cx.deg("/linkage/theta")?, pressure_max(cx)?],
         )?,
     ];
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))

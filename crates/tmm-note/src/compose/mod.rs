@@ -31,9 +31,9 @@ mod words;
 pub use context::DIGITS;
 pub use words::Words;
 
+use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::Run;
-use tmm_report::TaskSource;
 
 use crate::error::NoteError;
 use crate::model::{Lang, Note, ProjectInfo};

@@ -29,7 +29,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if scheme == "sun-planet-ring" {
         formulas.extend([
             cx.para("pl_f_spr", &[])?,
-            formula("u_(1 H) = 1 + z_3 / z_1, quad z_1 + 2 z_2 = z_3, quad (z_1 + z_3) / k in NN, quad (z_1 + z_2) sin(pi / k) > z_2 + 2 h_a^*"),
+            formula(
+                "u_(1 H) = 1 + z_3 / z_1, quad z_1 + 2 z_2 = z_3, quad (z_1 + z_3) / k in NN, quad (z_1 + z_2) sin(pi / k) > z_2 + 2 h_a^*",
+            ),
         ]);
     }
     let z: Vec<String> = pl

@@ -84,7 +84,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
     }
     results.push(cx.quantities("tab_synth_results", q)?);
-    for (path, key) in [("synthesis/construction.svg", "fig_synth_construction"), ("synthesis/pressure.svg", "fig_synth_pressure")] {
+    for (path, key) in [
+        ("synthesis/construction.svg", "fig_synth_construction"),
+        ("synthesis/pressure.svg", "fig_synth_pressure"),
+    ] {
         if let Some(f) = cx.figure(path, key)? {
             results.push(f);
         }
