@@ -32,7 +32,10 @@ fn printed(value: f64, lang: Lang) -> String {
 }
 
 fn ptr(report: &serde_json::Value, p: &str) -> f64 {
-    report.pointer(p).and_then(serde_json::Value::as_f64).unwrap_or_else(|| panic!("no {p}"))
+    report
+        .pointer(p)
+        .and_then(serde_json::Value::as_f64)
+        .unwrap_or_else(|| panic!("no {p}"))
 }
 
 fn default_note(lang: Lang) -> (String, serde_json::Value, usize) {
@@ -49,7 +52,15 @@ fn check_default(lang: Lang) {
     let (text, r, pages) = default_note(lang);
     assert!(pages >= 20, "{lang:?}: {pages} pages");
     let w = Words::load(lang).unwrap();
-    for key in ["sec_synthesis", "sec_linkage", "sec_forces", "sec_dynamics", "sec_gear", "sec_planetary", "sec_cam"] {
+    for key in [
+        "sec_synthesis",
+        "sec_linkage",
+        "sec_forces",
+        "sec_dynamics",
+        "sec_gear",
+        "sec_planetary",
+        "sec_cam",
+    ] {
         let h = w.get(key).unwrap();
         assert!(text.contains(h), "{lang:?}: heading {h:?} missing");
     }
@@ -71,7 +82,9 @@ fn check_default(lang: Lang) {
     assert!(text.contains(eps), "{lang:?}: {eps} missing");
     // the decimal separator of the language, never the other one in a number
     let m_d = ptr(&r, "/dynamics/driving_moment");
-    let other = format_number(m_d, DIGITS, if lang == Lang::En { Lang::Ru } else { Lang::En }).unwrap().mantissa;
+    let other = format_number(m_d, DIGITS, if lang == Lang::En { Lang::Ru } else { Lang::En })
+        .unwrap()
+        .mantissa;
     assert!(!text.contains(&other), "{lang:?}: {other} printed with the wrong separator");
 }
 
@@ -120,11 +133,11 @@ fn the_three_body_word_files_have_the_same_keys() {
 #[test]
 fn a_sheet_is_one_page_of_the_svgs_size() {
     // an A2 sheet with the ESKD frame: 20 mm binding margin, 5 mm elsewhere
-    let svg = r#"<?xml version="1.0" encoding="UTF-8"?>
+    let svg = r##"<?xml version="1.0" encoding="UTF-8"?>
 <svg xmlns="http://www.w3.org/2000/svg" width="594mm" height="420mm" viewBox="0 0 594 420">
 <rect x="20" y="5" width="569" height="410" fill="none" stroke="#000" stroke-width="0.7"/>
 <text x="300" y="200" font-size="7" font-family="DejaVu Sans">Лист 1 Sheet</text>
-</svg>"#;
+</svg>"##;
     let pdf = sheet_pdf(svg).unwrap();
     let doc = pdf_extract::Document::load_mem(&pdf).unwrap();
     let pages = doc.get_pages();
