@@ -44,7 +44,12 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("cam_f_pressure", &[])?,
         formula("tan vartheta = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)"),
         cx.para("cam_f_roller", &[])?,
-        formula("r_r <= 0.4 r_0, quad r_r <= 0.7 rho_min"),
+        // the numbers with the language's decimal separator
+        formula(&format!(
+            "r_r <= {} r_0, quad r_r <= {} rho_min",
+            crate::number::math_number(0.4, 1, cx.lang)?,
+            crate::number::math_number(0.7, 1, cx.lang)?
+        )),
     ];
     let mut rows = Vec::new();
     if let Some(ph) = cam.get("phases").and_then(Value::as_array) {
