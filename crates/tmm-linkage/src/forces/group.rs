@@ -141,8 +141,8 @@ pub fn solve_dyad(
     }
     let id = 1.0 / det;
     let lm = [(u * s - qq * v) * id, (p * v - u * r) * id];
-    let le1 = outer(a10, a11, m10, m11, b1, lm);
-    let le2 = outer(a20, a21, m20, m21, b2, lm);
+    let le1 = outer(pairs[0], x, a10, m10, m11, b1, lm);
+    let le2 = outer(pairs[2], y, a20, m20, m21, b2, lm);
     for (k, l) in [le1, lm, le2].into_iter().enumerate() {
         out[k] = pair_force(pairs[k], states, l[0], l[1]);
     }
@@ -195,18 +195,38 @@ fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` by its 2×2 normal equations.
+/// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` for the outer pair `p`
+/// of link `l` in closed form, from the structure of its two columns (see
+/// [`columns`]): for a revolute pair the first two rows are ±I, so
+/// λ = ±(r₀, r₁); for a prismatic pair a0 = ±(n, c) with |n| = 1 and
+/// a1 = (0, 0, ±1), so λ₀ = ±n·(r₀, r₁) and λ₁ follows from the third row.
+/// No division, the same solution as the least squares of the 3×2 system.
 #[inline(always)]
-fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
+fn outer(p: &Pair, l: usize, a0: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
     let rr = [
         b[0] - m0[0] * lm[0] - m1[0] * lm[1],
         b[1] - m0[1] * lm[0] - m1[1] * lm[1],
         b[2] - m0[2] * lm[0] - m1[2] * lm[1],
     ];
-    let (g00, g01, g11) = (dot3(a0, a0), dot3(a0, a1), dot3(a1, a1));
-    let (h0, h1) = (dot3(a0, rr), dot3(a1, rr));
-    let id = 1.0 / (g00 * g11 - g01 * g01);
-    [(h0 * g11 - g01 * h1) * id, (g00 * h1 - g01 * h0) * id]
+    match *p {
+        Pair::R { a, .. } => {
+            if a == l {
+                [rr[0], rr[1]]
+            } else {
+                [-rr[0], -rr[1]]
+            }
+        }
+        Pair::P { slider, .. } => {
+            // a0 = s·(n, c), a1 = (0, 0, s) with s = ±1: n·(r₀, r₁) = s·λ₀,
+            // c·s·λ₀ + s·λ₁ = r₂
+            let l0 = a0[0] * rr[0] + a0[1] * rr[1];
+            if slider == l {
+                [l0, rr[2] - a0[2] * l0]
+            } else {
+                [l0, a0[2] * l0 - rr[2]]
+            }
+        }
+    }
 }
 
 #[inline(always)]

@@ -70,6 +70,19 @@ pub struct Reaction {
     pub prismatic: bool,
 }
 
+/// Where the reaction of one pair of a group goes: the pair, the link it
+/// acts on (inside the group) and the link exerting it, whether the group
+/// solve's force (on the pair's first link) must be reversed, and whether
+/// its opposite loads a link of an earlier group.
+#[derive(Debug, Clone, Copy)]
+struct PairPlan {
+    pid: usize,
+    on: usize,
+    from: usize,
+    flip: bool,
+    carry: bool,
+}
+
 /// The result at one crank angle.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ForceSolution {
@@ -129,6 +142,8 @@ pub struct Kinetostatics<'m> {
     gpairs: Vec<Vec<&'m Pair>>,
     /// Per group: solved by the dyad elimination (else the general solve).
     dyad: Vec<bool>,
+    /// Per group, per pair: where its reaction goes (found once, not per position).
+    plan: Vec<Vec<PairPlan>>,
     pivot_pair: usize,
     work: GroupWork,
     /// Solve every group by the general Jᵀ·λ system (for cross-checks).
@@ -176,6 +191,29 @@ impl<'m> Kinetostatics<'m> {
             .iter()
             .position(|p| matches!(*p, Pair::R { a, b, .. } if (a == 0 && b == c) || (a == c && b == 0)))
             .ok_or_else(|| ForceError::load("input", "the crank has no revolute pair with the frame"))?;
+        let plan = m
+            .groups
+            .iter()
+            .map(|g| {
+                let links = &g.info.link_ids;
+                g.info
+                    .pair_ids
+                    .iter()
+                    .map(|&pid| {
+                        let (first, other) = m.pairs[pid].links();
+                        let flip = !links.contains(&first);
+                        let (on, from) = if flip { (other, first) } else { (first, other) };
+                        PairPlan {
+                            pid,
+                            on,
+                            from,
+                            flip,
+                            carry: from != 0 && !links.contains(&from),
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
         let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
         Ok(Kinetostatics {
             m,
@@ -183,6 +221,7 @@ impl<'m> Kinetostatics<'m> {
             stroke,
             gpairs,
             dyad,
+            plan,
             pivot_pair,
             work: GroupWork::new(max_links),
             general: false,
@@ -301,20 +340,13 @@ impl<'m> Kinetostatics<'m> {
                     group: grp.label(),
                 });
             }
-            for (k, &pid) in grp.info.pair_ids.iter().enumerate() {
-                let p = &m.pairs[pid];
-                let (first, other) = p.links();
-                let pf = out.pf[k];
-                let (on, from, f, c) = if links.contains(&first) {
-                    (first, other, pf.force, pf.couple)
-                } else {
-                    (other, first, -pf.force, -pf.couple)
-                };
-                out.reactions[pid] = reaction(pid, p, from, on, f, pf.at, c, sol);
-                if from != 0 && !links.contains(&from) {
-                    let (df, dm) = about_origin(sol.links[from].o, -f, pf.at, -c);
-                    out.acc[from].0 += df;
-                    out.acc[from].1 += dm;
+            for (pl, (pf, p)) in self.plan[g].iter().zip(out.pf.iter().zip(prs)) {
+                let (f, c) = if pl.flip { (-pf.force, -pf.couple) } else { (pf.force, pf.couple) };
+                out.reactions[pl.pid] = reaction(pl.pid, p, pl.from, pl.on, f, pf.at, c, sol);
+                if pl.carry {
+                    let (df, dm) = about_origin(sol.links[pl.from].o, -f, pf.at, -c);
+                    out.acc[pl.from].0 += df;
+                    out.acc[pl.from].1 += dm;
                 }
             }
         }
@@ -328,7 +360,7 @@ impl<'m> Kinetostatics<'m> {
         out.reactions[self.pivot_pair] = reaction(self.pivot_pair, &m.pairs[self.pivot_pair], 0, c, -f, pivot, 0.0, sol);
         // the pin from the crank's own state (pivot + radius along the crank)
         let r = crate::state::rot(sol.links[c].u, m.crank.dir_local) * m.crank.radius;
-        let rl = r.hypot();
+        let rl = r.dot(r).sqrt();
         out.balancing_force = out.balancing_moment / rl;
         out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
         out.pin = pivot + r;
