@@ -200,7 +200,8 @@ fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// [`columns`]): for a revolute pair the first two rows are ±I, so
 /// λ = ±(r₀, r₁); for a prismatic pair a0 = ±(n, c) with |n| = 1 and
 /// a1 = (0, 0, ±1), so λ₀ = ±n·(r₀, r₁) and λ₁ follows from the third row.
-/// No division, the same solution as the least squares of the 3×2 system.
+/// Derived here; no division, the same solution as the least squares of the
+/// consistent 3×2 system.
 #[inline(always)]
 fn outer(p: &Pair, l: usize, a0: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
     let rr = [
@@ -272,8 +273,9 @@ pub fn about_origin(o: Vec2, f: Vec2, p: Vec2, c: f64) -> (Vec2, f64) {
 /// the side of each pair, so that a position costs two moment equations and
 /// no branching on the pair kinds.
 ///
-/// The same elimination as [`solve_dyad`] written for revolute pairs (derived
-/// in docs/forces.md, "the dyad"; seed 001 sheet 3: "ΣM(C) = 0 ⇒ R^τ"): with
+/// The same elimination as [`solve_dyad`] (docs/forces.md, "Dyads: the
+/// course's elimination") written out for revolute pairs, derived here
+/// (seed 001 sheet 3: "ΣM(C) = 0 ⇒ R^τ"): with
 /// joints J₁ (outer, link x), J₂ (inner) and J₃ (outer, link y), the force
 /// F on x from y satisfies, by the moments about J₁ of link x and about J₃
 /// of link y,
