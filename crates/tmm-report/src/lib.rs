@@ -26,6 +26,7 @@ pub mod dynamics;
 pub mod error;
 pub mod forces;
 pub mod gear;
+pub mod labels;
 pub mod linkage;
 pub mod output;
 pub mod paper;

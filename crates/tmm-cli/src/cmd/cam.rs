@@ -183,7 +183,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
     let svgs = match &a.svg {
         Some(_) => {
             let mut docs = Documents::new();
-            cam_report::drawings(&task, &design, "", &mut docs)?;
+            cam_report::drawings(&task, &design, "", &mut docs, Default::default(), Default::default())?;
             Some(docs)
         }
         None => None,

@@ -8,9 +8,13 @@ use tmm_cams::mechanism::Mechanism;
 use tmm_cams::sizing;
 use tmm_geom::Vec2;
 
-use tmm_cams::program::{JumpKind, Motion};
+use tmm_cams::program::{JumpKind, Motion, PhaseKind};
 
+use crate::labels::{DASH_DOT, H_LABEL, Placer, finish, num};
+use crate::paper::{Slot, slot_mm, standard_scale};
+use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Impulse, Series, Style, plot, plot_with_impulses};
+use crate::words::word;
 
 /// Put several whole SVG documents one under another in one page.
 fn stack(docs: &[String], w: f64, h: f64) -> String {
@@ -395,9 +399,12 @@ fn clip_line(b: (f64, f64, f64, f64), p: Vec2, q: Vec2) -> Option<(Vec2, Vec2)> 
 }
 
 /// The cam (working and theoretical profiles, base circles) with the
-/// follower in its lowest position (φ = 0), in mm.
-pub fn cam(task: &CamTask, d: &CamDesign) -> String {
-    let _ = task;
+/// follower in its lowest position (φ = 0), made for the Scheme slot of
+/// `sheet` at a GOST 2.302 scale, words in `lang`: the direction of rotation
+/// ω_1 as an arc arrow, the rays dividing the phases at the cam angles of the
+/// task (turned against the rotation: the profile meets the follower at
+/// θ0 − σ·φ), the phase angles, and a legend of the circles and profiles.
+pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
     let p = &d.profile;
     let work: Vec<(f64, f64)> = p.working.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();
     let pitch: Vec<(f64, f64)> = p.pitch.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();
@@ -428,19 +435,87 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
-    let pad = 0.08 * (x1 - x0).max(y1 - y0);
-    let mut c = Canvas::new(210.0, 230.0);
-    c.fit((x0 - pad, x1 + pad, y0 - pad, y1 + pad), (10.0, 10.0, 190.0, 200.0));
-    c.polyline(&[(x0 - pad, 0.0), (x1 + pad, 0.0)], Style::AXIS);
-    c.polyline(&[(0.0, y0 - pad), (0.0, y1 + pad)], Style::AXIS);
-    c.polygon(&pitch, Style::AXIS.colored("#1f4e9c"));
+    // the rays reach beyond the profile
+    let r_ray = 1.12 * pitch.iter().chain(work.iter()).fold(0.0_f64, |m, q| m.max(q.0.hypot(q.1)));
+    for q in [(r_ray, r_ray), (-r_ray, -r_ray)] {
+        x0 = x0.min(q.0);
+        x1 = x1.max(q.0);
+        y0 = y0.min(q.1);
+        y1 = y1.max(q.1);
+    }
+    let (pw, ph) = slot_mm(Slot::Scheme, sheet);
+    let legend_w = 0.3 * pw;
+    let (aw, ah) = (pw - legend_w - 8.0, ph - 16.0);
+    let scale = standard_scale((x1 - x0).max(1e-9), aw - 10.0)
+        .zip(standard_scale((y1 - y0).max(1e-9), ah - 10.0))
+        .map(|(a, b)| if a.factor < b.factor { a } else { b })
+        .unwrap_or(crate::paper::Scale { factor: 1.0, text: "1:1" });
+    let sf = scale.factor;
+    let mut c = Canvas::new(pw, ph);
+    c.set_transform(sf, (4.0 + 0.5 * aw - sf * 0.5 * (x0 + x1), 4.0 + 0.5 * ah - sf * 0.5 * (y0 + y1)));
+    let mut lab = Placer::new(pw, ph);
+    let sigma = task.rotation.sign();
+    c.polyline(&[(x0, 0.0), (x1, 0.0)], DASH_DOT);
+    c.polyline(&[(0.0, y0), (0.0, y1)], DASH_DOT);
+    // the phases: rays from O at the boundaries, the angles between them
+    let theta0 = p.pitch.first().map_or(std::f64::consts::FRAC_PI_2, |q| q.y.atan2(q.x));
+    let phases = task.program.phases();
+    let mut bounds = vec![0.0];
+    for (i, ph_) in phases.iter().enumerate() {
+        bounds.push(task.program.start(i) + ph_.angle);
+    }
+    c.begin_group("phase-rays");
+    for &b in &bounds[..bounds.len().saturating_sub(1)] {
+        let th = theta0 - sigma * b;
+        c.line((0.0, 0.0), (r_ray * th.cos(), r_ray * th.sin()), Style::THIN);
+    }
+    c.end_group();
+    c.begin_group("phase-angles");
+    for (i, ph_) in phases.iter().enumerate() {
+        let (a0, a1) = (theta0 - sigma * bounds[i], theta0 - sigma * bounds[i + 1]);
+        let r_arc = r_ray * (0.93 - 0.05 * (i % 2) as f64);
+        c.arc((0.0, 0.0), r_arc, a0.min(a1), a0.max(a1), Style::THIN);
+        let key = match ph_.kind {
+            PhaseKind::Rise => "cam.phase_rise",
+            PhaseKind::Return => "cam.phase_return",
+            PhaseKind::Dwell if task.program.level_before(i) > 0.5 * task.program.stroke() => "cam.phase_far",
+            PhaseKind::Dwell => "cam.phase_near",
+        };
+        let t = format!("{} = {}°", word(lang, key), num(lang, ph_.angle.to_degrees(), 1));
+        let am = 0.5 * (a0 + a1);
+        let cand: Vec<(f64, f64)> = (0..10)
+            .map(|k| {
+                let r = r_ray * (1.0 + 0.03 * k as f64);
+                let q = c.to_paper(r * am.cos(), r * am.sin());
+                let w = crate::labels::CHAR_WIDTH * H_LABEL * crate::labels::plain(&t).chars().count() as f64;
+                (q.0 + 0.5 * w * am.cos(), q.1 - 0.7 * H_LABEL * am.sin())
+            })
+            .collect();
+        lab.place(&cand, &t, H_LABEL, "#000");
+    }
+    c.end_group();
+    c.polygon(&pitch, DASH_DOT.colored("#1f4e9c"));
     c.polygon(&work, Style::THICK.filled("#eeeeee"));
     c.circle((0.0, 0.0), r0, Style::DASHED);
     if d.rb > 0.0 && (d.rb - d.r0).abs() > 1e-12 {
         c.circle((0.0, 0.0), d.rb * 1e3, Style::DASHED.colored("#777777"));
     }
+    // the direction of rotation: an arc arrow ω_1 around O
+    c.begin_group("rotation");
+    let r_w = 0.45 * r0.max(1e-9);
+    let (b0, b1) = (theta0 + 0.6, theta0 + 0.6 + sigma * 1.4);
+    c.arc((0.0, 0.0), r_w, b0.min(b1), b0.max(b1), Style::THIN.widened(0.35));
+    let tip = (r_w * b1.cos(), r_w * b1.sin());
+    let tang = (-sigma * b1.sin(), sigma * b1.cos());
+    let tail = (tip.0 - tang.0 * 3.0 / sf, tip.1 - tang.1 * 3.0 / sf);
+    c.arrow(tail, tip, Style::THIN.widened(0.35), 3.0);
+    let qm = c.to_paper(r_w * (0.5 * (b0 + b1)).cos(), r_w * (0.5 * (b0 + b1)).sin());
+    lab.place(&Placer::around(qm, "ω_1", H_LABEL, 1.0), "ω_1", H_LABEL, "#000");
+    c.end_group();
     c.fixed_pivot((0.0, 0.0), 1.2);
-    c.text((0.0, 0.0), "  O", 3.5, Anchor::Start);
+    let qo = c.to_paper(0.0, 0.0);
+    lab.reserve(crate::labels::label_box(qo, 3, 3.0));
+    lab.place(&Placer::around(qo, "O", H_LABEL, 2.0), "O", H_LABEL, "#000");
     let follower = Style::THICK.colored("#1f4e9c");
     match d.mechanism {
         Mechanism::TranslatingRoller { e, s0, roller } => {
@@ -454,7 +529,8 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
                 c.circle((x, y), roller * 1e3, follower);
             }
             c.joint((x, y), 0.8);
-            c.text((x, y), "  B₀", 3.5, Anchor::Start);
+            let q = c.to_paper(x, y);
+            lab.place(&Placer::around(q, "B_0", H_LABEL, 1.0), "B_0", H_LABEL, "#000");
         }
         Mechanism::TranslatingFlat { e, r0: b } => {
             let hw = d.face.map_or(0.0, |f| f.width / 2.0) * 1e3;
@@ -473,7 +549,8 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
                 c.circle(b, roller * 1e3, follower);
             }
             c.fixed_pivot(a, 1.2);
-            c.text(a, "  A", 3.5, Anchor::Start);
+            let q = c.to_paper(a.0, a.1);
+            lab.place(&Placer::around(q, "A", H_LABEL, 2.0), "A", H_LABEL, "#000");
             c.joint(b, 0.8);
         }
         Mechanism::OscillatingFlat { a, delta0 } => {
@@ -482,22 +559,42 @@ pub fn cam(task: &CamTask, d: &CamDesign) -> String {
             let end = Vec2::new(a, 0.0) + u * len;
             c.line((a * 1e3, 0.0), (end.x * 1e3, end.y * 1e3), follower);
             c.fixed_pivot((a * 1e3, 0.0), 1.2);
-            c.text((a * 1e3, 0.0), "  A", 3.5, Anchor::Start);
+            let q = c.to_paper(a * 1e3, 0.0);
+            lab.place(&Placer::around(q, "A", H_LABEL, 2.0), "A", H_LABEL, "#000");
         }
     }
-    c.text_paper(
-        (105.0, 222.0),
-        &format!(
-            "{} follower: r0 = {:.3} mm, rb = {:.3} mm, roller {:.3} mm, ρmin = {:.3} mm",
-            task.follower.name(),
-            d.r0 * 1e3,
-            d.rb * 1e3,
-            d.roller * 1e3,
-            d.rho_min * 1e3
-        ),
-        3.2,
-        Anchor::Middle,
+    // the legend and the sizes on the right
+    let lx = pw - legend_w;
+    let mut ly = 8.0;
+    lab.put_left(
+        (lx, ly),
+        &format!("{} {}", word(lang, "common.scale"), scale.text),
+        H_LABEL,
         "#000",
     );
-    c.finish()
+    let mm = word(lang, "cam.mm");
+    let mut rows: Vec<(Option<Style>, String)> = vec![
+        (Some(Style::THICK), word(lang, "cam.legend_working").to_string()),
+        (Some(DASH_DOT.colored("#1f4e9c")), word(lang, "cam.legend_pitch").to_string()),
+        (Some(Style::DASHED), format!("{}, r_0 = {} {mm}", word(lang, "cam.legend_base"), num(lang, d.r0 * 1e3, 2))),
+    ];
+    if d.rb > 0.0 && (d.rb - d.r0).abs() > 1e-12 {
+        rows.push((
+            Some(Style::DASHED.colored("#777777")),
+            format!("{}, r_b = {} {mm}", word(lang, "cam.legend_working_base"), num(lang, d.rb * 1e3, 2)),
+        ));
+    }
+    rows.push((Some(Style::THIN), word(lang, "cam.legend_rays").to_string()));
+    if d.roller > 0.0 {
+        rows.push((None, format!("{}: r_r = {} {mm}", word(lang, "cam.roller"), num(lang, d.roller * 1e3, 2))));
+    }
+    rows.push((None, format!("ρ_min = {} {mm}", num(lang, d.rho_min * 1e3, 2))));
+    for (st, t) in rows {
+        ly += 6.0;
+        if let Some(st) = st {
+            c.line_paper((lx, ly), (lx + 10.0, ly), st);
+        }
+        lab.put_left((lx + 12.0, ly), &t, 3.0, "#000");
+    }
+    finish(c.finish(), &lab, Some(scale.text))
 }

@@ -22,6 +22,7 @@ pub mod text;
 use tmm_cams::design::{CamDesign, CamTask};
 
 use crate::output::Documents;
+use crate::project::{Language, SheetFormat};
 use crate::{Error, SectionOutput, TaskSource};
 use input::Locate;
 
@@ -37,8 +38,8 @@ pub fn solve(task: &CamTask, r0: Option<f64>, loc: &Locate<'_>) -> Result<CamDes
 
 /// The SVG drawings, as documents whose paths start with `dir`
 /// (`"cam/"` gives `cam/cam.svg`, …).
-pub fn drawings(task: &CamTask, d: &CamDesign, dir: &str, docs: &mut Documents) -> Result<(), Error> {
-    docs.add_text(format!("{dir}cam.svg"), draw::cam(task, d))?;
+pub fn drawings(task: &CamTask, d: &CamDesign, dir: &str, docs: &mut Documents, lang: Language, sheet: SheetFormat) -> Result<(), Error> {
+    docs.add_text(format!("{dir}cam.svg"), draw::cam(task, d, lang, sheet))?;
     docs.add_text(format!("{dir}cam-analogs.svg"), draw::analogs(task))?;
     docs.add_text(format!("{dir}cam-motion.svg"), draw::motion(task))?;
     docs.add_text(format!("{dir}cam-pressure.svg"), draw::pressure(task, d))?;
@@ -67,7 +68,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let cam = input::build(&raw, &loc)?;
     let d = solve(&cam, input::given_r0(&raw, &loc)?, &loc)?;
     let mut docs = Documents::new();
-    drawings(&cam, &d, "cam/", &mut docs)?;
+    drawings(&cam, &d, "cam/", &mut docs, task.lang, task.sheet)?;
     docs.add_bytes("cam/cam-profile.dxf", profile_dxf(&d)?)?;
     docs.add_text("cam/cam-profile.csv", profile_csv(&d)?)?;
     let json = json::document(&cam, &d);

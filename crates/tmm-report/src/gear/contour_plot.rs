@@ -1,41 +1,72 @@
-//! The blocking contour drawn like the printed atlases: x1 across, x2 up, the
-//! allowed region shaded, each boundary labelled, the chosen point marked.
+//! The blocking contour (блокирующий контур) drawn like the printed atlases:
+//! x1 across, x2 up, the allowed region shaded, every line in its own colour
+//! and dash with a legend of the same styles, the chosen point marked; made
+//! for the Small slot of the sheet, words in the project's language.
 
 use tmm_gears::contour::{Boundary, Contour};
 
-use crate::svg::{Anchor, Canvas, Style};
+use crate::labels::{CHAR_WIDTH, Placer, finish, num, plain};
+use crate::paper::{Slot, slot_mm};
+use crate::project::{Language, SheetFormat};
+use crate::svg::{Canvas, Style};
+use crate::words::word;
 
-fn color(b: &Boundary) -> (&'static str, Style) {
-    match b {
-        Boundary::Undercut(_) => ("#000000", Style::THICK.widened(0.6)),
-        Boundary::Interference(_) => ("#7a3b00", Style::THICK.colored("#7a3b00").widened(0.6)),
-        Boundary::TipThickness(_, k) if *k == 0.0 => ("#c00000", Style::THICK.colored("#c00000").widened(0.6)),
-        Boundary::TipThickness(_, _) => ("#c00000", Style::DASHED.colored("#c00000").widened(0.35)),
-        Boundary::ContactRatio(e) if *e == 1.0 => ("#1f5fbf", Style::THICK.colored("#1f5fbf").widened(0.6)),
-        Boundary::ContactRatio(_) => ("#1f5fbf", Style::DASHED.colored("#1f5fbf").widened(0.4)),
-        Boundary::EqualSliding => ("#008000", Style::AXIS.colored("#008000").widened(0.45)),
-        Boundary::TipInterference => ("#6a1b9a", Style::THICK.colored("#6a1b9a").widened(0.6)),
+/// Colours of the lines, in order of the contour's lines.
+const COLORS: [&str; 6] = ["#000000", "#c00000", "#1f5fbf", "#008000", "#7a3b00", "#6a1b9a"];
+/// Dash patterns on paper, mm (None: solid), cycled slower than the colours
+/// so that no two of the first 36 lines share a style.
+const DASHES: [Option<(f64, f64)>; 6] = [None, Some((4.0, 1.5)), Some((1.2, 1.2)), Some((8.0, 2.0)), Some((2.5, 2.5)), Some((0.6, 2.0))];
+
+/// The style of the `k`-th line: a colour and a dash of its own.
+///
+/// ```
+/// use tmm_report::gear::contour_plot::line_style;
+/// let s: Vec<_> = (0..36).map(line_style).collect();
+/// for i in 0..36 { for j in 0..i { assert!((s[i].color, s[i].dash) != (s[j].color, s[j].dash)); } }
+/// ```
+pub fn line_style(k: usize) -> Style {
+    let color = COLORS[k % COLORS.len()];
+    let dash = DASHES[(k + k / COLORS.len()) % DASHES.len()];
+    Style {
+        width: if dash.is_none() { 0.6 } else { 0.45 },
+        color,
+        dash,
+        fill: None,
     }
 }
 
-/// The contour as an A4 (landscape) SVG; `chosen` marks a point with its label.
-pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>) -> String {
-    let (pw, ph) = (297.0, 210.0);
+/// The line's name in `lang`, indices marked for typesetting.
+fn line_name(b: &Boundary, lang: Language) -> String {
+    let n = |v: f64| num(lang, v, 2).trim_end_matches('0').trim_end_matches([',', '.']).to_string();
+    match *b {
+        Boundary::Undercut(i) => format!("{} {i}", word(lang, "gear.undercut")),
+        Boundary::Interference(i) => format!("{} {i}", word(lang, "gear.interference")),
+        Boundary::TipThickness(i, k) if k == 0.0 => format!("s_a{i} = 0"),
+        Boundary::TipThickness(i, k) => format!("s_a{i} = {}m", n(k)),
+        Boundary::ContactRatio(e) => format!("ε_α = {}", n(e)),
+        Boundary::EqualSliding => "ϑ_1max = ϑ_2max".into(),
+        Boundary::TipInterference => word(lang, "gear.tip_interference").to_string(),
+    }
+}
+
+/// The contour as SVG for the Small slot of `sheet`; `chosen` marks a point
+/// with its label (the label is written in English drawings only; the
+/// shifts are written in every language).
+pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Language, sheet: SheetFormat) -> String {
+    let (pw, ph) = slot_mm(Slot::Small, sheet);
+    let h = if pw >= 190.0 { 3.5 } else { 2.5 };
+    let hs = 2.5;
     let mut cv = Canvas::new(pw, ph);
+    let mut lab = Placer::new(pw, ph);
+    let legend_w = 0.34 * pw;
+    let (left, bottom) = (10.0 + 2.0 * hs, 6.0 + 2.5 * h);
+    let (aw, ah) = (pw - legend_w - left - 4.0, ph - bottom - 4.0 - 2.0 * h);
     let world = (c.x1.0, c.x1.1, c.x2.0, c.x2.1);
-    cv.fit(world, (22.0, 16.0, 190.0, 176.0));
-    cv.text_paper(
-        (120.0, 9.0),
-        &format!(
-            "Blocking contour z1 = {}, z2 = {} (α = {:.1}°, ha* = {}, c* = {})",
-            c.base.z1,
-            c.base.z2,
-            c.base.rack.alpha.to_degrees(),
-            c.base.rack.ha,
-            c.base.rack.c
-        ),
-        4.0,
-        Anchor::Middle,
+    cv.fit(world, (left, bottom, aw, ah));
+    lab.put_left(
+        (2.0, 1.0 + 0.6 * h),
+        &format!("{}: z_1 = {}, z_2 = {}", word(lang, "gear.contour_title"), c.base.z1, c.base.z2),
+        h,
         "#000",
     );
     // shaded allowed cells
@@ -58,74 +89,78 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>) -> String 
         }
     }
     cv.end_group();
-    // frame, grid and ticks
     let grid = Style {
         width: 0.1,
         color: "#bbbbbb",
         dash: None,
         fill: None,
     };
-    let tx = crate::svg::Ticks::new(c.x1.0, c.x1.1, 10);
+    let tx = crate::svg::Ticks::new(c.x1.0, c.x1.1, 8);
     for i in tx.first..=tx.last {
         let x = tx.value(i);
         if x >= c.x1.0 - 1e-9 && x <= c.x1.1 + 1e-9 {
             cv.line((x, c.x2.0), (x, c.x2.1), grid);
-            cv.text((x, c.x2.0), &tx.label(i), 2.6, Anchor::Middle);
+            let p = cv.to_paper(x, c.x2.0);
+            lab.put((p.0, p.1 + 0.9 * hs + 0.5), &tx.label(i).replace('.', dot(lang)), hs, "#000");
         }
     }
-    let ty = crate::svg::Ticks::new(c.x2.0, c.x2.1, 10);
+    let ty = crate::svg::Ticks::new(c.x2.0, c.x2.1, 8);
     for i in ty.first..=ty.last {
         let y = ty.value(i);
         if y >= c.x2.0 - 1e-9 && y <= c.x2.1 + 1e-9 {
             cv.line((c.x1.0, y), (c.x1.1, y), grid);
-            cv.text((c.x1.0, y), &format!("{} ", ty.label(i)), 2.6, Anchor::End);
+            let p = cv.to_paper(c.x1.0, y);
+            let t = ty.label(i).replace('.', dot(lang));
+            let w = CHAR_WIDTH * hs * t.chars().count() as f64;
+            lab.put((p.0 - 1.0 - 0.5 * w, p.1), &t, hs, "#000");
         }
     }
     cv.polygon(
         &[(c.x1.0, c.x2.0), (c.x1.1, c.x2.0), (c.x1.1, c.x2.1), (c.x1.0, c.x2.1)],
         Style::THIN,
     );
-    cv.text(
-        (0.5 * (c.x1.0 + c.x1.1), c.x2.0 - 0.06 * (c.x2.1 - c.x2.0)),
-        "x1",
-        3.5,
-        Anchor::Middle,
-    );
-    cv.text(
-        (c.x1.0 - 0.07 * (c.x1.1 - c.x1.0), 0.5 * (c.x2.0 + c.x2.1)),
-        "x2",
-        3.5,
-        Anchor::Middle,
-    );
-    // lines
-    let mut legend_y = 24.0;
+    let p = cv.to_paper(c.x1.1, c.x2.0);
+    lab.put((p.0 - 4.0, p.1 + 2.0 * hs + 1.0), "x_1", h, "#000");
+    let p = cv.to_paper(c.x1.0, c.x2.1);
+    lab.put((p.0 - 5.0, p.1 - 0.5 * h - 1.0), "x_2", h, "#000");
+    // the lines, each with its own style, and the legend in the same styles
+    let lx = pw - legend_w + 2.0;
+    let mut ly = 4.0 + 2.5 * h;
+    let mut k = 0;
     for l in &c.lines {
-        let (col, st) = color(&l.boundary);
+        if l.polylines.is_empty() {
+            continue;
+        }
+        let st = line_style(k);
+        k += 1;
         cv.begin_group(&l.boundary.key());
         for pl in &l.polylines {
             cv.polyline(pl, st);
         }
-        if let Some(pl) = l.polylines.iter().max_by_key(|p| p.len()) {
-            let mid = pl[pl.len() / 2];
-            cv.text_colored(mid, &l.boundary.label(), 2.4, Anchor::Start, col);
-        }
         cv.end_group();
-        if !l.polylines.is_empty() {
-            cv.line_paper((222.0, legend_y - 1.0), (230.0, legend_y - 1.0), st);
-            cv.text_paper((232.0, legend_y), &l.boundary.label(), 2.8, Anchor::Start, col);
-            legend_y += 5.0;
-        }
+        let name = line_name(&l.boundary, lang);
+        cv.line_paper((lx, ly), (lx + 9.0, ly), st.widened(0.6));
+        lab.put_left((lx + 11.0, ly), &name, hs.max(h - 1.0), st.color);
+        ly += 1.5 * hs.max(h - 1.0) + 0.6;
     }
-    cv.text_paper(
-        (222.0, legend_y + 3.0),
-        "shaded: every blocking condition holds",
-        2.6,
-        Anchor::Start,
-        "#000",
-    );
+    lab.put_left((lx, ly + 1.0), word(lang, "gear.contour_allowed"), hs, "#000");
     if let Some(((x1, x2), label)) = chosen {
-        cv.dot((x1, x2), 1.2, "#000");
-        cv.text((x1, x2), &format!("  {label} ({x1:.3}, {x2:.3})"), 3.0, Anchor::Start);
+        cv.dot((x1, x2), 1.0, "#000");
+        let t = if lang == Language::En {
+            format!("{label} ({}; {})", num(lang, x1, 3), num(lang, x2, 3))
+        } else {
+            format!("({}; {})", num(lang, x1, 3), num(lang, x2, 3))
+        };
+        let q = cv.to_paper(x1, x2);
+        lab.place(&Placer::around(q, &t, hs, 1.0), &t, hs, "#000");
+        let _ = plain(&t);
     }
-    cv.finish()
+    finish(cv.finish(), &lab, None)
+}
+
+fn dot(lang: Language) -> &'static str {
+    match lang {
+        Language::En => ".",
+        _ => ",",
+    }
 }

@@ -15,7 +15,13 @@ use tmm_gears::generate::ToothProfile;
 use tmm_gears::{Kind, Pair};
 
 use crate::dxf_out::DxfDoc;
-use crate::svg::{Anchor, Canvas, Style};
+use crate::labels::{
+    CHAR_WIDTH, DASH_DOT, DASH_DOT_DOT, H_HEAD, H_LABEL, Placer, Rect, finish, label_box, num, plain,
+};
+use crate::paper::{Scale, Slot, slot_mm, standard_scale};
+use crate::project::{Language, SheetFormat};
+use crate::svg::{Canvas, Style};
+use crate::words::word;
 
 type Pt = (f64, f64);
 
@@ -30,7 +36,6 @@ struct Scene {
     b: Pt,
     rot1: f64,
     rot2: f64,
-    internal: bool,
     /// (centre, radius, name, DXF layer, style)
     circles: Vec<(Pt, f64, &'static str, &'static str, Style)>,
     work1: Vec<Pt>,
@@ -124,7 +129,6 @@ fn scene(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> Scene {
         b,
         rot1,
         rot2,
-        internal,
         circles,
         work1,
         work2,
@@ -174,133 +178,329 @@ fn sliding_curves(pair: &Pair, n: usize) -> (Vec<Pt>, Vec<Pt>) {
     )
 }
 
-/// The meshing drawing as SVG on an A3 landscape sheet.
-pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> String {
+/// The parameter table rows in `lang` (indices marked for [`crate::labels::parts`]).
+fn table_rows(pair: &Pair, lang: Language) -> Vec<String> {
+    let mm = word(lang, "gear.mm");
+    let n = |v: f64, d: usize| num(lang, v, d);
+    let l = |v: f64| num(lang, v * 1e3, 3);
+    let (w1, w2) = (&pair.w1, &pair.w2);
+    let th = |v: Option<f64>| v.map_or("∞".to_string(), |x| n(x, 3));
+    vec![
+        format!("z_1 = {}, z_2 = {}, m = {} {mm}", w1.z, w2.z, l(pair.spec.m)),
+        format!("x_1 = {}, x_2 = {}", n(w1.x, 4), n(w2.x, 4)),
+        format!("α_w = {}°", n(pair.alpha_w.to_degrees(), 4)),
+        format!("a_w = {} {mm}", l(pair.aw)),
+        format!("y = {}, Δy = {}", n(pair.y, 4), n(pair.dy, 4)),
+        format!("d_1 = {}, d_2 = {} {mm}", l(w1.d), l(w2.d)),
+        format!("d_b1 = {}, d_b2 = {} {mm}", l(w1.db), l(w2.db)),
+        format!("d_w1 = {}, d_w2 = {} {mm}", l(w1.dw), l(w2.dw)),
+        format!("d_a1 = {}, d_a2 = {} {mm}", l(w1.da), l(w2.da)),
+        format!("d_f1 = {}, d_f2 = {} {mm}", l(w1.df), l(w2.df)),
+        format!("s_1 = {}, s_2 = {} {mm}", l(w1.s), l(w2.s)),
+        format!("s_a1 = {}, s_a2 = {} {mm}", l(w1.sa), l(w2.sa)),
+        format!("p = {}, p_b = {} {mm}", l(pair.p), l(pair.pb)),
+        format!("ε_α = {}", n(pair.eps_alpha, 4)),
+        format!("ϑ_1max = {}, ϑ_2max = {}", th(pair.theta1_max()), th(pair.theta2_max())),
+    ]
+}
+
+/// Where the meshing drawing puts the pair: the standard scale and the
+/// paper position of the world origin (O1), mm from the bottom-left corner.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshLayout {
+    /// The GOST 2.302 scale.
+    pub scale: Scale,
+    /// Paper = origin + scale · world (mm, y up).
+    pub origin: (f64, f64),
+    /// Width of the paper, mm.
+    pub width: f64,
+    /// Height of the paper, mm.
+    pub height: f64,
+    /// Left edge of the parameter table, mm.
+    pub table_x: f64,
+}
+
+/// Width of the parameter table and legend on the right, mm.
+const TABLE_W: f64 = 92.0;
+/// Room for the title above the wheels, mm.
+const TITLE_H: f64 = 14.0;
+
+/// The largest standard scale at which both centres O1, O2, the pole, the
+/// ends N1, N2 of the line of action and three pitches either side of the
+/// pole fit the drawing's part of the Scheme slot (derived here: the spans
+/// of these points plus 24 mm for the centres' marks and labels).
+pub fn mesh_layout(pair: &Pair, sheet: SheetFormat) -> Option<MeshLayout> {
+    let (w, h) = slot_mm(Slot::Scheme, sheet);
+    let sc = key_points(pair);
+    let (xmin, xmax, ymin, ymax) = sc.iter().fold(
+        (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY),
+        |a, p| (a.0.min(p.0), a.1.max(p.0), a.2.min(p.1), a.3.max(p.1)),
+    );
+    let (dw, dh) = (w - TABLE_W - 4.0, h - TITLE_H - 4.0);
+    let sx = standard_scale(xmax - xmin, dw - 24.0)?;
+    let sy = standard_scale(ymax - ymin, dh - 24.0)?;
+    let scale = if sx.factor < sy.factor { sx } else { sy };
+    let s = scale.factor;
+    let origin = (2.0 + 0.5 * dw - s * 0.5 * (xmin + xmax), 2.0 + 0.5 * dh - s * 0.5 * (ymin + ymax));
+    Some(MeshLayout {
+        scale,
+        origin,
+        width: w,
+        height: h,
+        table_x: w - TABLE_W,
+    })
+}
+
+/// The points the meshing drawing must show (mm): O1, O2, P, N1, N2 and the
+/// pole ± three pitches along the pole tangent, ± the tooth height.
+fn key_points(pair: &Pair) -> Vec<Pt> {
+    let k = 1e3;
+    let internal = pair.spec.kind == Kind::Internal;
+    let aw = pair.aw * k;
+    let rw1 = pair.w1.dw / 2.0 * k;
+    let p = (0.0, rw1);
+    let t = (pair.alpha_w.cos(), pair.alpha_w.sin());
+    let n1 = (p.0 - rw1 * pair.alpha_w.sin() * t.0, p.1 - rw1 * pair.alpha_w.sin() * t.1);
+    let g = if internal { -pair.g } else { pair.g } * k;
+    let n2 = (n1.0 + g * t.0, n1.1 + g * t.1);
+    let o2 = if internal { (0.0, -aw) } else { (0.0, aw) };
+    let (pitch, m) = (pair.p * k, pair.spec.m * k);
+    vec![
+        (0.0, 0.0),
+        o2,
+        p,
+        n1,
+        n2,
+        (p.0 - 3.0 * pitch, p.1 - 2.5 * m),
+        (p.0 + 3.0 * pitch, p.1 + 2.5 * m),
+    ]
+}
+
+/// The meshing drawing (картина зацепления) as SVG, made for the Scheme
+/// slot of `sheet` at a GOST 2.302 scale, words in `lang`: the wheels' teeth
+/// near the pole, both centres O1 and O2, the circles d, d_b, d_a, d_f, d_w
+/// of both wheels labelled, the line of action N1N2 with its active part AB
+/// and the pole P, the working parts of the profiles, the arcs of action,
+/// the centre distance a_w and the working pressure angle α_w dimensioned,
+/// the parameter table and the legend.
+pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Language, sheet: SheetFormat) -> String {
     let sc = scene(pair, t1, t2);
-    let (pw, ph) = (420.0, 297.0);
+    let Some(lay) = mesh_layout(pair, sheet) else {
+        return Canvas::new(10.0, 10.0).finish();
+    };
+    let (pw, ph) = (lay.width, lay.height);
+    let s = lay.scale.factor;
     let mut c = Canvas::new(pw, ph);
-    let pitch = pair.p * 1e3;
-    let half_w = 2.8 * pitch;
-    let half_h = 2.8 * pitch;
-    let world = (sc.p.0 - half_w, sc.p.0 + half_w, sc.p.1 - half_h, sc.p.1 + half_h);
-    let scale = c.fit(world, (10.0, 10.0, 270.0, 277.0));
-    let in_win = |q: &Pt| q.0 >= world.0 && q.0 <= world.1 && q.1 >= world.2 && q.1 <= world.3;
-    c.text_paper(
-        (145.0, 8.0),
-        &format!("Meshing drawing, scale {:.2} : 1", scale),
-        4.5,
-        Anchor::Middle,
+    c.set_transform(s, lay.origin);
+    let mut lab = Placer::new(pw, ph);
+    // the drawing's window in world mm
+    let (wx0, wx1) = ((2.0 - lay.origin.0) / s, (lay.table_x - 4.0 - lay.origin.0) / s);
+    let (wy0, wy1) = ((2.0 - lay.origin.1) / s, (ph - TITLE_H - lay.origin.1) / s);
+    let in_win = |q: &Pt| q.0 >= wx0 && q.0 <= wx1 && q.1 >= wy0 && q.1 <= wy1;
+    let paper = |q: Pt| c_to_paper(&lay, q, ph);
+    lab.put(
+        (0.5 * (lay.table_x - 2.0), 7.0),
+        &format!("{} {}", word(lang, "gear.mesh_title"), lay.scale.text),
+        H_HEAD,
         "#000",
     );
-    c.begin_group("circles");
-    for &(cen, r, name, _, st) in &sc.circles {
-        // the part of the circle inside the window, as runs of a fine polyline
-        let n = 720;
-        let pts: Vec<Pt> = (0..=n)
-            .map(|i| {
-                let a = 2.0 * PI * i as f64 / n as f64;
-                (cen.0 + r * a.cos(), cen.1 + r * a.sin())
-            })
-            .collect();
-        let mut label_at: Option<Pt> = None;
-        for run in pts.split(|q| !in_win(q)) {
-            if run.len() >= 2 {
-                c.polyline(run, st);
-                label_at = label_at.or(run.last().copied());
-            }
-        }
-        if let Some(q) = label_at {
-            c.text(q, name, 2.0, Anchor::Start);
-        }
-    }
-    c.end_group();
+    let k_line = Style::THICK.widened(0.6);
     c.begin_group("teeth");
     for (t, rot, cen) in [(t1, sc.rot1, sc.o1), (t2, sc.rot2, sc.o2)] {
-        let n = ((half_w * 1.2 / (pitch)).ceil() as i32 + 1).min(t.z as i32 / 2);
+        let n = t.z as i32 / 2 + 1;
         for tooth in teeth_near(t, rot, cen, n) {
             for run in tooth.split(|q| !in_win(q)) {
-                c.polyline(run, Style::THICK.widened(0.5));
+                if run.len() >= 2 {
+                    c.polyline(run, k_line);
+                }
             }
         }
     }
     c.end_group();
-    c.begin_group("line-of-action");
-    c.line(sc.n1, sc.n2, Style::THIN);
-    c.line(sc.a, sc.b, Style::THICK.colored("#c00000").widened(0.6));
-    c.polyline(&sc.work1, Style::THICK.colored("#d000d0").widened(0.8));
-    c.polyline(&sc.work2, Style::THICK.colored("#ff8c00").widened(0.8));
-    for &(cen, r, a0, a1) in &sc.arcs {
-        c.arc(cen, r, a0, a1, Style::THICK.colored("#008000").widened(0.9));
+    // centre lines and centres
+    c.begin_group("centres");
+    let cross = 6.0 / s;
+    c.line((0.0, wy0), (0.0, wy1), DASH_DOT);
+    for (o, name) in [(sc.o1, "O_1"), (sc.o2, "O_2")] {
+        c.line((o.0 - 2.0 * cross, o.1), (o.0 + 2.0 * cross, o.1), DASH_DOT);
+        c.dot(o, 0.8, "#000");
+        let q = paper(o);
+        lab.reserve(label_box(q, 1, 1.6));
+        lab.place(&Placer::around(q, name, H_LABEL, 1.0), name, H_LABEL, "#000");
     }
-    for (q, name) in [(sc.p, "P"), (sc.n1, "N1"), (sc.n2, "N2"), (sc.a, "A"), (sc.b, "B")] {
-        if in_win(&q) {
-            c.dot(q, 0.7, "#000");
-            c.text((q.0 + 0.02 * half_w, q.1 + 0.02 * half_w), name, 3.0, Anchor::Start);
+    c.end_group();
+    // the line of action, the perpendiculars O1N1, O2N2, the active part
+    c.begin_group("line-of-action");
+    c.line(sc.o1, sc.n1, Style::THIN);
+    c.line(sc.o2, sc.n2, Style::THIN);
+    c.line(sc.n1, sc.n2, Style::THIN.widened(0.35));
+    c.line(sc.a, sc.b, Style::THICK.colored(RED).widened(0.7));
+    c.polyline(&sc.work1, Style::THICK.colored(MAGENTA).widened(0.8));
+    c.polyline(&sc.work2, Style::THICK.colored(ORANGE).widened(0.8));
+    for &(cen, r, a0, a1) in &sc.arcs {
+        c.arc(cen, r, a0, a1, Style::THICK.colored(GREEN).widened(0.9));
+    }
+    for q in [sc.p, sc.n1, sc.n2, sc.a, sc.b] {
+        c.dot(q, 0.7, "#000");
+        lab.reserve(label_box(paper(q), 1, 1.4));
+    }
+    for (q, name) in [(sc.p, "P"), (sc.n1, "N_1"), (sc.n2, "N_2"), (sc.a, "A"), (sc.b, "B")] {
+        lab.place(&Placer::around(paper(q), name, H_LABEL, 1.2), name, H_LABEL, "#000");
+    }
+    c.end_group();
+    // the working pressure angle: between the pole tangent and N1N2
+    c.begin_group("dimensions");
+    let r_ang = (3.2 * pair.spec.m * 1e3 * s).clamp(22.0, 40.0);
+    let pp = paper(sc.p);
+    c.line_paper((pp.0 - r_ang - 6.0, pp.1), (pp.0 + r_ang + 6.0, pp.1), Style::THIN);
+    let aw_ang = pair.alpha_w;
+    let arc_pt = |a: f64, r: f64| (pp.0 + r * a.cos(), pp.1 - r * a.sin());
+    let n_arc = 24;
+    let arc_pts: Vec<Pt> = (0..=n_arc).map(|i| arc_pt(aw_ang * i as f64 / n_arc as f64, r_ang)).collect();
+    for w in arc_pts.windows(2) {
+        c.line_paper(w[0], w[1], Style::THIN);
+    }
+    // arrowheads at both ends, along the arc
+    let head = 2.5;
+    let e0 = arc_pts[0];
+    let e1 = arc_pts[n_arc];
+    c.arrow_paper((e0.0, e0.1 - head), e0, Style::THIN, head);
+    c.arrow_paper(
+        (e1.0 + head * aw_ang.sin(), e1.1 + head * aw_ang.cos()),
+        e1,
+        Style::THIN,
+        head,
+    );
+    let ang_txt = format!("α_w = {}°", num(lang, aw_ang.to_degrees(), 2));
+    let ang_c: Vec<Pt> = (0..12)
+        .flat_map(|i| {
+            let r = r_ang + 4.0 + 2.0 * i as f64;
+            let w = CHAR_WIDTH * H_LABEL * plain(&ang_txt).chars().count() as f64;
+            [
+                (pp.0 + r * (0.5 * aw_ang).cos() + 0.5 * w, pp.1 - r * (0.5 * aw_ang).sin()),
+                (pp.0 - r * (0.5 * aw_ang).cos() - 0.5 * w, pp.1 + r * (0.5 * aw_ang).sin()),
+            ]
+        })
+        .collect();
+    lab.place(&ang_c, &ang_txt, H_LABEL, "#000");
+    // the centre distance: a dimension line left of the wheels
+    let o1p = paper(sc.o1);
+    let o2p = paper(sc.o2);
+    let xd = 10.0;
+    c.line_paper((o1p.0 - 2.0, o1p.1), (xd - 2.0, o1p.1), Style::THIN);
+    c.line_paper((o2p.0 - 2.0, o2p.1), (xd - 2.0, o2p.1), Style::THIN);
+    let mid = (xd, 0.5 * (o1p.1 + o2p.1));
+    c.arrow_paper(mid, (xd, o1p.1), Style::THIN, 3.0);
+    c.arrow_paper(mid, (xd, o2p.1), Style::THIN, 3.0);
+    let aw_txt = format!("a_w = {}", num(lang, pair.aw * 1e3, 2));
+    let naw = plain(&aw_txt).chars().count() as f64 * CHAR_WIDTH * H_LABEL;
+    let aw_c: Vec<Pt> = (0..16)
+        .flat_map(|i| {
+            let dy = 5.0 * i as f64;
+            [
+                (xd + 1.5 + 0.5 * naw, mid.1 - dy),
+                (xd + 1.5 + 0.5 * naw, mid.1 + dy),
+            ]
+        })
+        .collect();
+    lab.place(&aw_c, &aw_txt, H_LABEL, "#000");
+    c.end_group();
+    // the circles, clipped to the window, each labelled where there is room
+    c.begin_group("circles");
+    for (wheel, (cen, w)) in [(sc.o1, &pair.w1), (sc.o2, &pair.w2)].into_iter().enumerate() {
+        let i = wheel + 1;
+        let circles = [
+            (w.d / 2.0, format!("d_{i}"), DASH_DOT),
+            (w.db / 2.0, format!("d_b{i}"), Style::THIN.colored(BLUE)),
+            (w.da / 2.0, format!("d_a{i}"), Style::THIN),
+            (w.df / 2.0, format!("d_f{i}"), Style::THIN),
+            (w.dw / 2.0, format!("d_w{i}"), DASH_DOT_DOT.colored(BROWN)),
+        ];
+        for (r, name, st) in circles {
+            let r = r * 1e3;
+            let n = 1440;
+            let pts: Vec<Pt> = (0..=n)
+                .map(|j| {
+                    let a = 2.0 * PI * j as f64 / n as f64;
+                    (cen.0 + r * a.cos(), cen.1 + r * a.sin())
+                })
+                .collect();
+            let mut cand: Vec<(f64, Pt)> = Vec::new();
+            for run in pts.split(|q| !in_win(q)) {
+                if run.len() >= 2 {
+                    c.polyline(run, st);
+                }
+                for q in run.iter().step_by(4) {
+                    let (dx, dy) = (q.0 - cen.0, q.1 - cen.1);
+                    let u = (dx / r, dy / r);
+                    let qp = paper(*q);
+                    let wl = CHAR_WIDTH * H_LABEL * plain(&name).chars().count() as f64;
+                    // outside and inside the circle, the box clear of the point
+                    for sg in [1.0, -1.0] {
+                        let cpt = (qp.0 + sg * u.0 * (0.8 + 0.5 * wl), qp.1 - sg * u.1 * (0.8 + 0.6 * H_LABEL));
+                        cand.push(((q.0 - sc.p.0).abs(), cpt));
+                    }
+                }
+            }
+            cand.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let cs: Vec<Pt> = cand.into_iter().map(|x| x.1).collect();
+            lab.place(&cs, &name, H_LABEL, st.color);
         }
     }
     c.end_group();
-    let _ = sc.internal;
-    // parameter table and the sliding diagram on the right
-    let mut y = 20.0;
-    c.text_paper((290.0, y), "Parameters", 4.0, Anchor::Start, "#000");
-    for row in table(pair) {
-        y += 6.0;
-        c.text_paper((290.0, y), &row, 3.0, Anchor::Start, "#000");
+    // the table and the legend on the right
+    let tx = lay.table_x;
+    lab.reserve(Rect {
+        x0: tx - 2.0,
+        y0: 0.0,
+        x1: pw,
+        y1: ph,
+    });
+    let mut side = Placer::new(pw, ph);
+    let left = |p: &mut Placer, y: f64, text: &str, h: f64| p.put_left((tx, y), text, h, "#000");
+    let mut y = 8.0;
+    left(&mut side, y, word(lang, "gear.parameters"), H_LABEL);
+    y += 2.0;
+    for row in table_rows(pair, lang) {
+        y += 5.5;
+        left(&mut side, y, &row, 3.0);
     }
-    let legend: [(&str, Style); 6] = [
-        ("active line of action AB", Style::THICK.colored("#c00000").widened(0.6)),
-        ("working profile, wheel 1", Style::THICK.colored("#d000d0").widened(0.8)),
-        ("working profile, wheel 2", Style::THICK.colored("#ff8c00").widened(0.8)),
-        ("arcs of action (operating circles)", Style::THICK.colored("#008000").widened(0.9)),
-        ("operating circles", Style::DASHED.colored("#b03000")),
-        ("base circles", Style::THIN.colored("#1f5fbf")),
-    ];
     y += 4.0;
+    let legend: [(String, Style); 8] = [
+        (word(lang, "gear.legend_active").to_string(), Style::THICK.colored(RED).widened(0.7)),
+        (word(lang, "gear.legend_work1").to_string(), Style::THICK.colored(MAGENTA).widened(0.8)),
+        (word(lang, "gear.legend_work2").to_string(), Style::THICK.colored(ORANGE).widened(0.8)),
+        (word(lang, "gear.legend_arcs").to_string(), Style::THICK.colored(GREEN).widened(0.9)),
+        (word(lang, "gear.legend_reference").to_string(), DASH_DOT),
+        (word(lang, "gear.legend_operating").to_string(), DASH_DOT_DOT.colored(BROWN)),
+        (word(lang, "gear.legend_base").to_string(), Style::THIN.colored(BLUE)),
+        (word(lang, "gear.legend_tip_root").to_string(), Style::THIN),
+    ];
     for (name, st) in legend {
-        y += 5.0;
-        c.line_paper((290.0, y - 1.0), (298.0, y - 1.0), st);
-        c.text_paper((300.0, y), name, 2.8, Anchor::Start, "#000");
+        y += 5.5;
+        c.line_paper((tx, y), (tx + 12.0, y), st);
+        side.put_left((tx + 14.0, y), &name, 3.0, "#000");
     }
-    let (th1, th2) = sliding_curves(pair, 81);
-    let (bx, by, bw, bh) = (292.0, 170.0, 118.0, 105.0);
-    let (s0, s1) = (pair.s_start * 1e3, pair.s_end * 1e3);
-    let mapx = |s: f64| bx + (s - s0) / (s1 - s0).max(1e-9) * bw;
-    let mapy = |v: f64| by + (1.0 - v) / 5.0 * bh;
-    c.text_paper(
-        (bx, by - 6.0),
-        "Specific sliding on the active line AB (clipped to [−4, 1])",
-        2.8,
-        Anchor::Start,
-        "#000",
-    );
-    c.line_paper((bx, mapy(0.0)), (bx + bw, mapy(0.0)), Style::THIN);
-    c.line_paper((bx, by), (bx, by + bh), Style::THIN);
-    for v in [1.0, 0.0, -1.0, -2.0, -3.0, -4.0] {
-        c.text_paper((bx - 1.5, mapy(v) + 1.0), &format!("{v}"), 2.5, Anchor::End, "#000");
-        c.line_paper(
-            (bx, mapy(v)),
-            (bx + bw, mapy(v)),
-            Style {
-                width: 0.1,
-                color: "#bbbbbb",
-                dash: None,
-                fill: None,
-            },
-        );
+    let mut svg = finish(c.finish(), &lab, Some(lay.scale.text));
+    if let Some(i) = svg.rfind("</svg>") {
+        svg.insert_str(i, side.svg());
     }
-    for (curve, col, name) in [(&th1, "#c00000", "ϑ1"), (&th2, "#1f5fbf", "ϑ2")] {
-        let pts: Vec<Pt> = curve.iter().filter(|q| q.1.is_finite()).map(|&(s, v)| (mapx(s), mapy(v))).collect();
-        for w in pts.windows(2) {
-            c.line_paper(w[0], w[1], Style::THICK.colored(col).widened(0.5));
-        }
-        if let Some(&l) = pts.last() {
-            c.text_paper((l.0 + 1.0, l.1), name, 3.0, Anchor::Start, col);
-        }
-    }
-    c.text_paper((bx, by + bh + 6.0), "A", 3.0, Anchor::Middle, "#000");
-    c.text_paper((bx + bw, by + bh + 6.0), "B", 3.0, Anchor::Middle, "#000");
-    c.finish()
+    svg
 }
+
+fn c_to_paper(lay: &MeshLayout, q: Pt, ph: f64) -> Pt {
+    (
+        lay.origin.0 + lay.scale.factor * q.0,
+        ph - (lay.origin.1 + lay.scale.factor * q.1),
+    )
+}
+
+const RED: &str = "#c00000";
+const MAGENTA: &str = "#b000b0";
+const ORANGE: &str = "#e07000";
+const GREEN: &str = "#008000";
+const BLUE: &str = "#1f5fbf";
+const BROWN: &str = "#8a3a00";
 
 /// The meshing drawing as DXF (mm, 1:1) with layers.
 pub fn mesh_dxf(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile) -> DxfDoc {

@@ -62,9 +62,9 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let pair = &solved.pair;
     let (t1, t2) = profiles(pair, &origin)?;
     let mut docs = Documents::new();
-    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2))?;
+    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2, task.lang, task.sheet))?;
     docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
-    docs.add_text("gear/sliding.svg", sliding_svg(pair))?;
+    docs.add_text("gear/sliding.svg", sliding_svg(pair, task.lang, task.sheet))?;
     docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
     docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2))?;
     docs.add_bytes("gear/profiles.dxf", profile::profiles_dxf(&t1, &t2).to_bytes()?)?;
@@ -72,7 +72,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let label = solved.criterion.map_or("given".to_string(), |c| c.name().to_string());
     docs.add_text(
         "gear/contour.svg",
-        contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label))),
+        contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label)), task.lang, task.sheet),
     )?;
     let text = text::pair_text(&solved, &job.limits);
     let json = json::pair_json(&solved, &job.limits, None);

@@ -7,10 +7,11 @@ use tmm_planetary::scheme::Mesh;
 
 use super::analysis::Analysis;
 use super::text::{fraction_text, teeth_text};
+use crate::labels::{H_LABEL, Placer, finish, num};
+use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
+use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Style};
-
-const W: f64 = 297.0;
-const H: f64 = 210.0;
+use crate::words::word;
 const BLUE: &str = "#1f5fbf";
 const GREEN: &str = "#2e8b3a";
 const RED: &str = "#c0392b";
@@ -58,8 +59,23 @@ fn ground(c: &mut Canvas, x: f64, y: f64, len: f64, dir: f64) {
     }
 }
 
-/// Draw the sheet.
-pub fn sheet(a: &Analysis) -> Sheet {
+/// μ written as the course does: 0,05 — no exponent.
+fn mu_text(lang: Language, mu: f64) -> String {
+    let digits = (-(mu.log10().floor()) as i64 + 1).clamp(0, 12) as usize;
+    let t = num(lang, mu, digits);
+    if t.contains([',', '.']) {
+        t.trim_end_matches('0').trim_end_matches([',', '.']).to_string()
+    } else {
+        t
+    }
+}
+
+/// Draw the sheet for the Scheme slot of `format`, words in `lang`: the
+/// scheme at a GOST 2.302 scale, the velocity picture at a round μ_v.
+pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
+    let (w_paper, h_paper) = slot_mm(Slot::Scheme, format);
+    #[allow(non_snake_case)]
+    let (W, H) = (w_paper, h_paper);
     let r = &a.params.request;
     let sc = r.scheme;
     let b = &a.best;
@@ -75,15 +91,27 @@ pub fn sheet(a: &Analysis) -> Sheet {
     let (mesh1, mesh2) = sc.meshes();
 
     let mut c = Canvas::new(W, H);
-    // Shared radius scale: the whole train (±big plus rims) in 150 mm of height.
-    let sr = 135.0 / (2.5 * big);
-    let axis_y = 112.0; // paper mm from the bottom
+    let mut lab = Placer::new(W, H);
+    // Shared radius scale: the whole train (±big plus rims) in 0.64·H mm of
+    // height, at the largest standard scale that fits (GOST 2.302).
+    let scale = standard_scale(2.5 * big * 1e3, 0.64 * H).unwrap_or(crate::paper::Scale {
+        factor: 1.0,
+        text: "1:1",
+    });
+    let sr = scale.factor * 1e3; // paper mm per metre
+    let axis_y = 0.533 * H; // paper mm from the bottom
     c.set_transform(sr, (22.0 + 0.1 * big * sr, axis_y));
-    c.text_paper(
-        (10.0, 12.0),
-        &format!("Planetary train, scheme {} — {}", sc.name(), teeth_text(sc, b)),
-        4.5,
-        Anchor::Start,
+    lab.put_left(
+        (10.0, 10.0),
+        &format!(
+            "{} {} — {}. {} {}",
+            word(lang, "planetary.title"),
+            sc.name(),
+            teeth_text(sc, b),
+            word(lang, "common.scale"),
+            scale.text
+        ),
+        H_LABEL,
         "#000",
     );
 
@@ -166,20 +194,28 @@ pub fn sheet(a: &Analysis) -> Sheet {
     let vals = [0.0, p.a.v, p.b.v, planet_v(lo), planet_v(hi)];
     let vlo = vals.iter().fold(0.0_f64, |m, v| m.min(*v));
     let vhi = vals.iter().fold(0.0_f64, |m, v| m.max(*v));
-    let span = 85.0; // paper mm for the picture's width
-    let sv_paper = span / (vhi - vlo).max(1e-300); // paper mm per m/s
+    let span = (85.0 - (297.0 - W)).max(50.0); // paper mm at most for the picture's width
+    let mu_v = round_mu((vhi - vlo).max(1e-300) / span); // (m/s)/mm, a round value
+    let sv_paper = 1.0 / mu_v; // paper mm per m/s
     let scheme_right = 22.0 + (0.1 * big + xh + 0.35 * big) * sr;
     let px0 = scheme_right + 15.0 - vlo * sv_paper; // paper x of the picture's radius axis
     // world for the picture: x = velocity·(sv/sr) so that the transform's scale sr applies to both axes
     let k = sv_paper / sr;
     c.set_transform(sr, (px0, axis_y));
     c.begin_group("velocity-picture");
-    c.text_paper((scheme_right + 15.0, 22.0), "Linear-velocity picture", 4.0, Anchor::Start, "#000");
+    lab.put_left((scheme_right + 15.0, 22.0), word(lang, "planetary.picture"), H_LABEL, "#000");
+    lab.put_left(
+        (scheme_right + 15.0, 28.0),
+        &format!("μ_v = {} {}", mu_text(lang, mu_v), word(lang, "planetary.mu_v_unit")),
+        H_LABEL,
+        "#000",
+    );
     c.line((0.0, 0.0), (0.0, 1.08 * rmax), Style::THIN);
     c.line((vlo * k, 0.0), (vhi * k, 0.0), Style::THIN);
     c.text((vhi * k, -0.04 * big), "v", 3.0, Anchor::End);
     c.text((0.02 * big, 1.08 * rmax), "r", 3.0, Anchor::Start);
     let x_of = |v: f64| v * k;
+    let mut pts: Vec<((f64, f64), &str)> = Vec::new();
     for (name, rr, v) in [("a", p.a.r, p.a.v), ("b", p.b.r, p.b.v), ("c", p.c.r, p.c.v)] {
         // projection line from the scheme
         c.line(
@@ -188,7 +224,13 @@ pub fn sheet(a: &Analysis) -> Sheet {
             Style::DASHED.colored("#888888"),
         );
         c.dot((x_of(v), rr), 0.6, "#000000");
-        c.text((x_of(v) + 0.02 * big, rr - 0.06 * big), name, 3.2, Anchor::Start);
+        pts.push((c.to_paper(x_of(v), rr), name));
+    }
+    for &(q, _) in &pts {
+        lab.reserve(crate::labels::label_box(q, 1, 1.2));
+    }
+    for &(q, name) in &pts {
+        lab.place(&Placer::around(q, name, H_LABEL, 0.8), name, H_LABEL, "#000");
     }
     c.line((0.0, 0.0), (x_of(p.a.v), p.a.r), Style::THICK.widened(0.45).colored(BLUE));
     c.line(
@@ -197,9 +239,22 @@ pub fn sheet(a: &Analysis) -> Sheet {
         Style::THICK.widened(0.45).colored(GREEN),
     );
     c.line((0.0, 0.0), (x_of(p.b.v), p.b.r), Style::THICK.widened(0.45).colored(RED));
-    c.text_colored((x_of(p.a.v) * 0.5, p.a.r * 0.5), "1", 3.2, Anchor::End, BLUE);
-    c.text_colored((x_of(p.b.v) * 0.6, p.b.r * 0.6), "H", 3.2, Anchor::Start, RED);
-    c.text_colored((x_of(planet_v(hi)), hi), "2", 3.2, Anchor::Start, GREEN);
+    // the lines' names beside them, where no other label is
+    let along = |c: &Canvas, a: (f64, f64), b: (f64, f64)| -> Vec<(f64, f64)> {
+        (0..=20)
+            .flat_map(|i| {
+                let t = 0.3 + 0.6 * f64::from(i) / 20.0;
+                let q = c.to_paper(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+                [(q.0 + 3.0, q.1), (q.0 - 3.0, q.1)]
+            })
+            .collect()
+    };
+    let c1 = along(&c, (0.0, 0.0), (x_of(p.a.v), p.a.r));
+    lab.place(&c1, "1", H_LABEL, BLUE);
+    let ch = along(&c, (0.0, 0.0), (x_of(p.b.v), p.b.r));
+    lab.place(&ch, "H", H_LABEL, RED);
+    let c2 = along(&c, (x_of(planet_v(lo)), lo), (x_of(planet_v(hi)), hi));
+    lab.place(&c2, "2", H_LABEL, GREEN);
     c.end_group();
     // The ratio read off the drawn lines: tan ψ = (paper x)/(paper y) from the origin.
     let (pa, pb, po) = (c.to_paper(x_of(p.a.v), p.a.r), c.to_paper(x_of(p.b.v), p.b.r), c.to_paper(0.0, 0.0));
@@ -216,7 +271,7 @@ pub fn sheet(a: &Analysis) -> Sheet {
     let pl_y = 130.0; // paper y (from the top) of the pole
     let ax_y = pl_y - hh; // … and of the ω-axis
     c.begin_group("angular-diagram");
-    c.text_paper((dx0 - 34.0, 22.0), "Angular-velocity diagram", 4.0, Anchor::Start, "#000");
+    lab.put_left((dx0 - 34.0, 22.0), word(lang, "planetary.diagram"), H_LABEL, "#000");
     c.line_paper((dx0 - 36.0, ax_y), (dx0 + 36.0, ax_y), Style::THIN);
     c.line_paper((dx0, ax_y), (dx0, pl_y), Style::DASHED);
     c.text_paper((dx0 + 1.0, pl_y + 4.0), "P", 3.2, Anchor::Start, "#000");
@@ -235,29 +290,31 @@ pub fn sheet(a: &Analysis) -> Sheet {
     let ratio_diagram = x1d / xhd;
 
     // --- the ratios beside each other ---
+    let mm = word(lang, "planetary.mm");
     let lines = [
-        format!("u_1H by Willis: {} = {:.6}", fraction_text(b), b.ratio.value()),
-        format!("u_1H read off the velocity picture: tan ψ1 / tan ψH = {ratio_picture:.6}"),
-        format!("u_1H read off the angular-velocity diagram: 0–1 / 0–H = {ratio_diagram:.6}"),
+        format!("{}: {} = {}", word(lang, "planetary.willis"), fraction_text(b), num(lang, b.ratio.value(), 6)),
+        format!("{} = {}", word(lang, "planetary.read_picture"), num(lang, ratio_picture, 6)),
+        format!("{} = {}", word(lang, "planetary.read_diagram"), num(lang, ratio_diagram, 6)),
         format!(
-            "k = {} planets, radial size {:.1} modules, a_w = {:.2} mm, m = {} mm, efficiency {:.4} ({} drives)",
+            "k = {}; {} {}; a_w = {} {mm}; m = {} {mm}; η = {} ({})",
             r.planets,
-            b.radial_size,
-            a.centre_distance * 1e3,
-            m1 * 1e3,
-            a.efficiency,
+            word(lang, "planetary.radial"),
+            num(lang, b.radial_size, 1),
+            num(lang, a.centre_distance * 1e3, 2),
+            num(lang, m1 * 1e3, 2),
+            num(lang, a.efficiency, 4),
             if a.driver == tmm_planetary::Driver::Sun {
-                "wheel 1"
+                word(lang, "planetary.drives_sun")
             } else {
-                "carrier"
+                word(lang, "planetary.drives_carrier")
             }
         ),
     ];
     for (i, l) in lines.iter().enumerate() {
-        c.text_paper((10.0, 180.0 + 6.0 * i as f64), l, 3.6, Anchor::Start, "#000");
+        lab.put_left((10.0, H - 30.0 + 6.0 * i as f64), l, H_LABEL, "#000");
     }
     Sheet {
-        svg: c.finish(),
+        svg: finish(c.finish(), &lab, Some(scale.text)),
         ratio_picture,
         ratio_diagram,
     }
@@ -281,7 +338,7 @@ mod tests {
             (Scheme::IntInt, -0.05, 3),
         ] {
             let a = analyse(&Params::new(Request::new(scheme, u, k)), &Origin::cli()).unwrap();
-            let s = sheet(&a);
+            let s = sheet(&a, Default::default(), Default::default());
             let w = a.best.ratio.value();
             assert!(
                 (s.ratio_picture - w).abs() < 1e-9 * w.abs().max(1.0),

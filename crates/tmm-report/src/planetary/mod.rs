@@ -34,7 +34,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     };
     let a = analyse(&params, &origin)?;
     let mut docs = Documents::new();
-    let sheet = drawing::sheet(&a);
+    let sheet = drawing::sheet(&a, task.lang, task.sheet);
     let text = text::report(&a);
     let json = json::document(&a);
     docs.add_text("planetary/planetary.svg", sheet.svg)?;

@@ -1,0 +1,311 @@
+//! Lettering of the drawings (надписи на чертежах): GOST 2.304 lettering
+//! sizes, typeset indices (d_w1 → d with the subscript w1, a^τ_CB), numbers
+//! with the decimal comma of ru/uk, a placer that keeps the labels' boxes
+//! apart and inside the paper, and the GOST 2.303 dash-dot lines.
+//!
+//! The drawings draw their lines on a [`Canvas`](crate::svg::Canvas); the
+//! labels are collected by a [`Placer`] and written into the finished SVG by
+//! [`finish`], which also writes the drawing's standard scale on the root
+//! element (`data-scale="1:2"`, read by the sheets' title block).
+
+use std::fmt::Write as _;
+
+use crate::project::Language;
+use crate::svg::{Style, escape};
+
+/// Lettering heights of GOST 2.304, mm (шрифт чертёжный): labels of points
+/// and circles, headings, titles.
+pub const H_LABEL: f64 = 3.5;
+/// Heading lettering height, mm.
+pub const H_HEAD: f64 = 5.0;
+/// Title lettering height, mm.
+pub const H_TITLE: f64 = 7.0;
+
+/// The advance of one character as a share of the lettering size (DejaVu
+/// Sans / GOST type B: about 0.6; taken generously).
+pub const CHAR_WIDTH: f64 = 0.62;
+
+/// Thin dash-dot line of GOST 2.303 (штрихпунктирная тонкая): axes, centre
+/// lines, reference circles. Written by the canvas as a marker dash pattern
+/// that [`finish`] turns into dash 12, gap 3, dot, gap 3.
+pub const DASH_DOT: Style = Style {
+    width: 0.25,
+    color: "#000000",
+    dash: Some((12.01, 3.0)),
+    fill: None,
+};
+/// Thin dash-dot line with two dots (штрихпунктирная с двумя точками), used
+/// for the operating circles.
+pub const DASH_DOT_DOT: Style = Style {
+    width: 0.25,
+    color: "#000000",
+    dash: Some((12.02, 3.0)),
+    fill: None,
+};
+
+/// A number with `digits` decimals and the decimal separator of `lang`
+/// (comma in ru/uk, GOST 2.105; point in en); `-0` is printed as `0`.
+///
+/// ```
+/// use tmm_report::{labels::num, project::Language};
+/// assert_eq!(num(Language::Ru, 87.5, 2), "87,50");
+/// assert_eq!(num(Language::En, -0.0001, 2), "0.00");
+/// ```
+pub fn num(lang: Language, v: f64, digits: usize) -> String {
+    let mut s = format!("{v:.digits$}");
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s.remove(0);
+    }
+    match lang {
+        Language::En => s,
+        _ => s.replace('.', ","),
+    }
+}
+
+/// The parts of a label: (text, shift) with shift 0 on the line, −1 a
+/// subscript, +1 a superscript. `_x` and `^x` take the rest of the word
+/// (up to a space or the other mark); `_{…}` a group.
+///
+/// ```
+/// use tmm_report::labels::parts;
+/// assert_eq!(parts("d_w1"), vec![("d".to_string(), 0), ("w1".to_string(), -1)]);
+/// assert_eq!(parts("a^τ_CB = 2"), vec![("a".into(), 0), ("τ".into(), 1), ("CB".into(), -1), (" = 2".into(), 0)]);
+/// ```
+pub fn parts(text: &str) -> Vec<(String, i8)> {
+    let mut out: Vec<(String, i8)> = Vec::new();
+    let mut cur = String::new();
+    let mut shift = 0i8;
+    let mut chars = text.chars().peekable();
+    let mut group = false;
+    while let Some(ch) = chars.next() {
+        match ch {
+            '_' | '^' if !group => {
+                if !cur.is_empty() {
+                    out.push((std::mem::take(&mut cur), shift));
+                }
+                shift = if ch == '_' { -1 } else { 1 };
+                if chars.peek() == Some(&'{') {
+                    chars.next();
+                    group = true;
+                }
+            }
+            '}' if group => {
+                out.push((std::mem::take(&mut cur), shift));
+                shift = 0;
+                group = false;
+            }
+            ' ' | '=' | ',' | '(' | ')' | '/' if shift != 0 && !group => {
+                out.push((std::mem::take(&mut cur), shift));
+                shift = 0;
+                cur.push(ch);
+            }
+            _ => cur.push(ch),
+        }
+    }
+    if !cur.is_empty() {
+        out.push((cur, shift));
+    }
+    out
+}
+
+/// The label as plain text, marks dropped (`d_w1` → `dw1`).
+pub fn plain(text: &str) -> String {
+    parts(text).into_iter().map(|p| p.0).collect()
+}
+
+/// A box on the paper, mm from the top-left corner.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rect {
+    /// Left edge.
+    pub x0: f64,
+    /// Top edge.
+    pub y0: f64,
+    /// Right edge.
+    pub x1: f64,
+    /// Bottom edge.
+    pub y1: f64,
+}
+
+impl Rect {
+    /// Do the boxes overlap (with a gap `gap` mm counted as overlap)?
+    pub fn hits(&self, o: &Rect, gap: f64) -> bool {
+        self.x0 < o.x1 + gap && o.x0 < self.x1 + gap && self.y0 < o.y1 + gap && o.y0 < self.y1 + gap
+    }
+    /// Is the box inside `o`?
+    pub fn inside(&self, o: &Rect) -> bool {
+        self.x0 >= o.x0 && self.y0 >= o.y0 && self.x1 <= o.x1 && self.y1 <= o.y1
+    }
+}
+
+/// The box of a label of `chars` visible characters, `h` mm lettering,
+/// centred at `c` (paper mm): width `CHAR_WIDTH·h·chars`, height `1.2·h`.
+pub fn label_box(c: (f64, f64), chars: usize, h: f64) -> Rect {
+    let w = CHAR_WIDTH * h * chars as f64;
+    let hh = 1.2 * h;
+    Rect {
+        x0: c.0 - 0.5 * w,
+        y0: c.1 - 0.5 * hh,
+        x1: c.0 + 0.5 * w,
+        y1: c.1 + 0.5 * hh,
+    }
+}
+
+/// Collects the labels of one drawing, each at the first of its candidate
+/// places whose box is inside the paper and clear of the boxes placed
+/// before it and of the reserved areas.
+#[derive(Debug, Clone)]
+pub struct Placer {
+    paper: Rect,
+    taken: Vec<Rect>,
+    svg: String,
+}
+
+impl Placer {
+    /// A placer for a paper `width × height` mm.
+    pub fn new(width: f64, height: f64) -> Self {
+        Placer {
+            paper: Rect {
+                x0: 0.5,
+                y0: 0.5,
+                x1: width - 0.5,
+                y1: height - 0.5,
+            },
+            taken: Vec::new(),
+            svg: String::new(),
+        }
+    }
+
+    /// Keep labels out of `r` (a table, a legend, a title).
+    pub fn reserve(&mut self, r: Rect) {
+        self.taken.push(r);
+    }
+
+    /// Would a label of `text` at `h` fit centred at `c`?
+    pub fn fits(&self, c: (f64, f64), text: &str, h: f64) -> bool {
+        let b = label_box(c, plain(text).chars().count(), h);
+        b.inside(&self.paper) && !self.taken.iter().any(|t| t.hits(&b, 0.4))
+    }
+
+    /// Place `text` (with `_`/`^` marks) at the first candidate centre that
+    /// fits; returns the centre used, `None` when none fits (then nothing is
+    /// written).
+    pub fn place(&mut self, candidates: &[(f64, f64)], text: &str, h: f64, color: &str) -> Option<(f64, f64)> {
+        let c = candidates
+            .iter()
+            .copied()
+            .find(|&c| c.0.is_finite() && c.1.is_finite() && self.fits(c, text, h))?;
+        self.put(c, text, h, color);
+        Some(c)
+    }
+
+    /// Place `text` centred at `c` whatever is there (a title).
+    pub fn put(&mut self, c: (f64, f64), text: &str, h: f64, color: &str) {
+        self.write(c, text, h, color, false);
+    }
+
+    /// Write `text` starting at `x`, its box's middle at height `y` (a
+    /// table row), whatever is there.
+    pub fn put_left(&mut self, (x, y): (f64, f64), text: &str, h: f64, color: &str) {
+        self.write((x, y), text, h, color, true);
+    }
+
+    fn write(&mut self, c: (f64, f64), text: &str, h: f64, color: &str, start: bool) {
+        let n = plain(text).chars().count();
+        let w = CHAR_WIDTH * h * n as f64;
+        let centre = if start { (c.0 + 0.5 * w, c.1) } else { c };
+        self.taken.push(label_box(centre, n, h));
+        // the baseline: the box's middle plus a third of the height
+        let _ = write!(
+            self.svg,
+            "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
+            c.0,
+            c.1 + 0.35 * h,
+            if start { "start" } else { "middle" }
+        );
+        let mut level = 0i8;
+        for (t, s) in parts(text) {
+            let dy = f64::from(level - s) * 0.35 * h;
+            if s == 0 {
+                let _ = write!(self.svg, "<tspan dy=\"{dy:.3}\">{}</tspan>", escape(&t));
+            } else {
+                let _ = write!(self.svg, "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>", 0.7 * h, escape(&t));
+            }
+            level = s;
+        }
+        self.svg.push_str("</text>\n");
+    }
+
+    /// Candidate centres around a point `p` (paper mm) for a label of
+    /// `text`: right, above-right, above, left, below … at `gap` mm clear.
+    pub fn around(p: (f64, f64), text: &str, h: f64, gap: f64) -> Vec<(f64, f64)> {
+        let w = CHAR_WIDTH * h * plain(text).chars().count() as f64;
+        let (dx, dy) = (0.5 * w + gap, 0.6 * h + gap);
+        let mut v = Vec::new();
+        for k in 1..=3 {
+            let f = k as f64;
+            for (sx, sy) in [(1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (0.0, -1.0), (0.0, 1.0)] {
+                v.push((p.0 + sx * dx * f, p.1 + sy * dy * f));
+            }
+        }
+        v
+    }
+
+    /// The boxes taken so far.
+    pub fn boxes(&self) -> &[Rect] {
+        &self.taken
+    }
+
+    /// The labels as SVG elements.
+    pub fn svg(&self) -> &str {
+        &self.svg
+    }
+}
+
+/// Finish a drawing: the labels go in before the closing tag, the dash-dot
+/// markers become GOST 2.303 patterns, the root carries `data-scale` when the
+/// drawing is at a length scale.
+pub fn finish(svg: String, labels: &Placer, scale: Option<&str>) -> String {
+    let mut s = svg
+        .replace("stroke-dasharray=\"12.01 3.00\"", "stroke-dasharray=\"12 3 1 3\"")
+        .replace("stroke-dasharray=\"12.02 3.00\"", "stroke-dasharray=\"12 3 1 3 1 3\"");
+    if let Some(i) = s.rfind("</svg>") {
+        s.insert_str(i, labels.svg());
+    }
+    if let Some(sc) = scale {
+        s = s.replacen("<svg xmlns=", &format!("<svg data-scale=\"{}\" xmlns=", escape(sc)), 1);
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn placed_labels_never_overlap() {
+        let mut p = Placer::new(100.0, 50.0);
+        let mut n = 0;
+        for i in 0..40 {
+            let at = (10.0 + (i % 8) as f64 * 3.0, 10.0 + (i / 8) as f64 * 2.0);
+            if p.place(&Placer::around(at, "d_a1", 3.5, 0.5), "d_a1", 3.5, "#000").is_some() {
+                n += 1;
+            }
+        }
+        assert!(n > 5);
+        let b = p.boxes();
+        for i in 0..b.len() {
+            assert!(b[i].inside(&Rect { x0: 0.0, y0: 0.0, x1: 100.0, y1: 50.0 }));
+            for j in 0..i {
+                assert!(!b[i].hits(&b[j], 0.0), "{i} {j}");
+            }
+        }
+    }
+
+    #[test]
+    fn finish_marks_the_scale_and_dash_dot() {
+        let mut c = crate::svg::Canvas::new(10.0, 10.0);
+        c.line((0.0, 0.0), (5.0, 5.0), DASH_DOT);
+        let s = finish(c.finish(), &Placer::new(10.0, 10.0), Some("1:2"));
+        assert!(s.contains("data-scale=\"1:2\"") && s.contains("12 3 1 3"));
+    }
+}

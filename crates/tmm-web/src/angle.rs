@@ -1,0 +1,127 @@
+//! The mechanism at any crank angle (положение механизма при заданном угле
+//! кривошипа): the frames of the animation with the traced paths of its
+//! points, and the plans, force drawings and Zhukovsky's lever at the angle
+//! the slider or the dragged crank sets. The drawings come from the same
+//! code as the CLI's files (`tmm_report::linkage::drawings`,
+//! `tmm_report::forces::drawings`), asked for one position.
+
+use std::f64::consts::TAU;
+
+use serde_json::{Value, json};
+use tmm_linkage::cycle::Cycle;
+use tmm_linkage::mechanism::Pair;
+
+use crate::page::Page;
+use crate::reply;
+
+/// The links drawn as segments between their turning joints, as pairs of
+/// point indices (a link with more than three joints is drawn as a chain).
+fn link_segments(m: &tmm_linkage::Mechanism) -> Vec<(usize, usize)> {
+    let mut segs = Vec::new();
+    for li in 1..m.link_names.len() {
+        let mut joints: Vec<usize> = Vec::new();
+        for p in m.pairs.iter().filter(|p| matches!(p, Pair::R { .. })) {
+            let (a, b) = p.links();
+            if (a == li || b == li) && !joints.contains(&p.point()) {
+                joints.push(p.point());
+            }
+        }
+        for i in 0..joints.len() {
+            for j in i + 1..joints.len() {
+                if joints.len() <= 3 || j == i + 1 {
+                    segs.push((joints[i], joints[j]));
+                }
+            }
+        }
+    }
+    segs
+}
+
+/// The mechanism at `n` crank angles equally spaced over one revolution from
+/// the start of the working stroke, in the direction of rotation:
+/// `{"names", "segments", "pivot", "pin", "start", "direction", "phi": [n],
+/// "xy": [n][points][2]}` (m, rad). `{"none": true}` without a linkage.
+pub fn frames(p: &Page, n: usize) -> String {
+    let n = n.clamp(2, 3600);
+    let Some(loaded) = &p.linkage else {
+        return json!({ "none": true }).to_string();
+    };
+    let m = &loaded.mech;
+    let cycle = match Cycle::new(m, loaded.task.working) {
+        Ok(c) => c,
+        Err(e) => return reply::from_error(&p.task, &tmm_report::linkage::locate(&p.task, &loaded.task, &e)).to_string(),
+    };
+    let sg = m.crank.omega.signum();
+    let mut sol = m.solution();
+    let mut phis = Vec::with_capacity(n);
+    let mut xy = Vec::with_capacity(n);
+    for k in 0..n {
+        let phi = tmm_geom::angle::wrap_2pi(cycle.start + sg * TAU * k as f64 / n as f64);
+        if let Err(e) = m.solve(phi, &mut sol) {
+            return reply::from_error(&p.task, &tmm_report::linkage::locate(&p.task, &loaded.task, &e)).to_string();
+        }
+        phis.push(phi);
+        let pts: Vec<[f64; 2]> = sol.points.iter().map(|s| [s.p.x, s.p.y]).collect();
+        xy.push(pts);
+    }
+    let names: Vec<&str> = m.points.iter().map(|q| q.name.as_str()).collect();
+    let segs: Vec<[usize; 2]> = link_segments(m).into_iter().map(|(a, b)| [a, b]).collect();
+    json!({
+        "ok": true,
+        "names": names,
+        "segments": segs,
+        "pivot": m.crank.pivot_point,
+        "pin": m.crank.pin,
+        "start": cycle.start,
+        "direction": sg,
+        "phi": phis,
+        "xy": xy,
+    })
+    .to_string()
+}
+
+/// The drawings at the crank angle `phi` (rad): `{"ok", "phi", "psi",
+/// "velocity_plan", "acceleration_plan"}` (SVG text) and, when `with_forces`
+/// and the task has forces, `"forces": {"files": {name: svg},
+/// "balancing_moment", "zhukovsky_moment"}` (the animation asks for the plans
+/// only; a still angle gets the forces too).
+pub fn at_angle(p: &Page, phi: f64, with_forces: bool) -> String {
+    if !phi.is_finite() {
+        return reply::error_json("the crank angle must be a finite number", None, None);
+    }
+    match try_at_angle(p, phi, with_forces) {
+        Ok(v) => v.to_string(),
+        Err(e) => reply::from_error(&p.task, &e).to_string(),
+    }
+}
+
+fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_report::Error> {
+    let Some(l) = &p.linkage else {
+        return Ok(json!({ "none": true }));
+    };
+    let a = tmm_report::linkage::analyse(l, &p.task, Some(phi), 1)?;
+    let docs = tmm_report::linkage::drawings(l, &a)?;
+    let text = |name: &str| docs.get(name).and_then(|d| d.as_text()).unwrap_or_default().to_string();
+    let mut v = json!({
+        "ok": true,
+        "phi": a.plan_row.pos.phi,
+        "psi": a.plan_row.pos.psi,
+        "velocity_plan": text("velocity-plan.svg"),
+        "acceleration_plan": text("acceleration-plan.svg"),
+    });
+    if with_forces && let Some((fl, ft)) = &p.forces {
+        let fa = tmm_report::forces::analyse(&p.task, fl, ft, Some(phi))?;
+        let fd = tmm_report::forces::drawings(fl, ft, &fa)?;
+        let mut files = serde_json::Map::new();
+        for d in fd.iter().filter(|d| d.extension() == "svg" && !d.path.starts_with("strength")) {
+            files.insert(d.path.clone(), d.as_text().unwrap_or_default().into());
+        }
+        let j = tmm_report::forces::json_document(fl, ft, &fa);
+        v["forces"] = json!({
+            "files": files,
+            "balancing_moment": j["detail"]["balancing_moment"],
+            "zhukovsky_moment": j["detail"]["zhukovsky_moment"],
+        });
+    }
+    Ok(v)
+}

@@ -1,0 +1,110 @@
+//! The browser page of tmm (страница в браузере): the same task runs,
+//! numbers and drawings as the command line, compiled to WebAssembly.
+//!
+//! The page's JavaScript (`web/app.js`) calls the functions exported here
+//! through `wasm-bindgen`; each returns plain text (JSON or SVG) so that the
+//! JavaScript side stays small and holds no mechanics:
+//!
+//! | export | what |
+//! | --- | --- |
+//! | [`analyse`] | run the whole task ([`tmm_report::run::run_task_in`]); tables, report, file list or the located error |
+//! | [`file_text`], [`file_bytes`] | one file of the last run (the same bytes the CLI writes) |
+//! | [`frames`] | the mechanism over the cycle for the animation and traced paths |
+//! | [`at_angle`] | the plans, forces and Zhukovsky's lever at one crank angle |
+//! | [`gear_contour`], [`gear_at`] | the blocking contour's axes; the pair at a picked (x1, x2) |
+//!
+//! The state between calls is the last successful run ([`page::Page`]); the
+//! logic lives in plain Rust modules that the native tests exercise, and the
+//! exports below only hold that state.
+
+pub mod angle;
+pub mod examples;
+pub mod gear_pick;
+pub mod page;
+pub mod reply;
+
+use std::cell::RefCell;
+
+use wasm_bindgen::prelude::*;
+
+thread_local! {
+    static PAGE: RefCell<Option<page::Page>> = const { RefCell::new(None) };
+}
+
+/// The embedded default task (the one `tmm run` runs with no file).
+#[wasm_bindgen]
+pub fn default_task() -> String {
+    tmm_report::run::DEFAULT_TASK.to_string()
+}
+
+/// The examples shipped with tmm, as JSON `[{"name", "text"}, …]`.
+#[wasm_bindgen]
+pub fn examples() -> String {
+    examples::json()
+}
+
+/// Run the task `text` (named `name` in messages) with the drawings' words
+/// in `lang` (`ru`, `uk`, `en`; anything else: the task's own language).
+/// Returns the reply as JSON (see [`page::analyse_reply`]); a successful run
+/// becomes the page's state for the other calls.
+#[wasm_bindgen]
+pub fn analyse(name: &str, text: &str, lang: &str) -> String {
+    let (reply, page) = page::analyse_reply(name, text, lang);
+    if let Some(p) = page {
+        PAGE.with(|s| *s.borrow_mut() = Some(p));
+    }
+    reply
+}
+
+/// One text file of the last successful run (`linkage/positions.svg`, …).
+#[wasm_bindgen]
+pub fn file_text(path: &str) -> Option<String> {
+    PAGE.with(|s| {
+        s.borrow()
+            .as_ref()
+            .and_then(|p| p.file(path))
+            .and_then(|d| d.as_text().map(str::to_string))
+    })
+}
+
+/// The bytes of one file of the last successful run, for a download.
+#[wasm_bindgen]
+pub fn file_bytes(path: &str) -> Option<Vec<u8>> {
+    PAGE.with(|s| s.borrow().as_ref().and_then(|p| p.file(path)).map(|d| d.bytes.clone()))
+}
+
+/// The mechanism at `n` crank angles over one revolution, as JSON (see
+/// [`angle::frames`]); `{"none": true}` when the task has no linkage.
+#[wasm_bindgen]
+pub fn frames(n: usize) -> String {
+    with_page(|p| angle::frames(p, n))
+}
+
+/// The velocity and acceleration plans, the force drawings and Zhukovsky's
+/// lever at the crank angle `phi` (rad), as JSON (see [`angle::at_angle`]);
+/// the forces only when `with_forces`.
+#[wasm_bindgen]
+pub fn at_angle(phi: f64, with_forces: bool) -> String {
+    with_page(|p| angle::at_angle(p, phi, with_forces))
+}
+
+/// The blocking contour's axes and where they lie on its drawing, as JSON
+/// (see [`gear_pick::contour_axes`]).
+#[wasm_bindgen]
+pub fn gear_contour() -> String {
+    with_page(gear_pick::contour_axes)
+}
+
+/// The gear pair with the shift coefficients (x1, x2), as JSON (see
+/// [`gear_pick::gear_at`]).
+#[wasm_bindgen]
+pub fn gear_at(x1: f64, x2: f64) -> String {
+    with_page(|p| gear_pick::gear_at(p, x1, x2))
+}
+
+fn with_page(f: impl FnOnce(&page::Page) -> String) -> String {
+    PAGE.with(|s| match s.borrow().as_ref() {
+        Some(p) => f(p),
+        None => reply::error_json("no task has been run yet", None, None),
+    })
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Build the browser page into web/dist/: tmm-web compiled to
+# wasm32-unknown-unknown, bound with wasm-bindgen (the CLI pinned to the
+# version in Cargo.lock), wasm-opt when present, and the page's own files.
+# Serve it with any static server, e.g. `python3 -m http.server -d web/dist`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+target_dir="${CARGO_TARGET_DIR:-target}"
+
+rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown \
+  || rustup target add wasm32-unknown-unknown
+
+# the wasm-bindgen version the crate was locked with
+version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
+[ -n "$version" ] || { echo "wasm-bindgen is not in Cargo.lock" >&2; exit 1; }
+if ! command -v wasm-bindgen >/dev/null || [ "$(wasm-bindgen --version | awk '{print $2}')" != "$version" ]; then
+  # --locked uses the tool's own lock file; if the registry no longer has
+  # one of its pinned dependencies, resolve afresh (the tool stays =version)
+  cargo install --locked wasm-bindgen-cli --version "=$version" \
+    || cargo install wasm-bindgen-cli --version "=$version"
+fi
+
+cargo build --release --locked --target wasm32-unknown-unknown -p tmm-web
+rm -rf web/dist && mkdir -p web/dist
+wasm-bindgen --target web --no-typescript --out-dir web/dist \
+  "$target_dir/wasm32-unknown-unknown/release/tmm_web.wasm"
+if command -v wasm-opt >/dev/null; then
+  wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int \
+    -o web/dist/tmm_web_bg.wasm.opt web/dist/tmm_web_bg.wasm \
+    && mv web/dist/tmm_web_bg.wasm.opt web/dist/tmm_web_bg.wasm
+fi
+cp web/index.html web/app.js web/style.css web/dist/
+echo "web/dist: $(du -sh web/dist | cut -f1); serve with: python3 -m http.server -d web/dist 8000"
