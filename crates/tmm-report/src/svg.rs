@@ -409,6 +409,12 @@ impl Canvas {
         self.boxes.push(r);
     }
 
+    /// Keep labels placed later off a paper segment that is drawn some
+    /// other way (a piece of a curve drawn as one path).
+    pub fn reserve_segment(&mut self, a: (f64, f64), b: (f64, f64)) {
+        self.segs.push((a, b));
+    }
+
     /// Keep a small square around a world point free (a joint, a pole).
     pub fn reserve_point(&mut self, at: (f64, f64), half_mm: f64) {
         let (x, y) = self.to_paper(at.0, at.1);
