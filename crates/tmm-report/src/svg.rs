@@ -412,6 +412,12 @@ impl Canvas {
         self.boxes.push(r);
     }
 
+    /// Keep labels placed later off a paper segment that is drawn some
+    /// other way (a piece of a curve drawn as one path).
+    pub fn reserve_segment(&mut self, a: (f64, f64), b: (f64, f64)) {
+        self.segs.push((a, b));
+    }
+
     /// Keep a small square around a world point free (a joint, a pole).
     pub fn reserve_point(&mut self, at: (f64, f64), half_mm: f64) {
         let (x, y) = self.to_paper(at.0, at.1);
@@ -718,6 +724,28 @@ pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], widt
     plot_with_impulses(title, xlabel, ylabel, series, &[], width, height)
 }
 
+/// [`plot`] with its tick labels in `lang` (a decimal comma in ru and uk);
+/// the caller gives the title, the axes' names and the legend in `lang`.
+///
+/// ```
+/// use tmm_report::{project::Language, svg::{Series, plot_in}};
+/// let pts = [(0.0, 0.25), (1.0, 0.5)];
+/// let s = [Series { name: "", points: &pts, color: "#000" }];
+/// let svg = plot_in(Language::Ru, "t", "x", "y", &s, 100.0, 60.0);
+/// assert!(svg.contains(">0,5<") && !svg.contains(">0.5<"));
+/// ```
+pub fn plot_in(
+    lang: crate::project::Language,
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[Series<'_>],
+    width: f64,
+    height: f64,
+) -> String {
+    plot_impl(lang, title, xlabel, ylabel, series, &[], width, height)
+}
+
 /// An impulse (a Dirac δ of the plotted quantity) at `x`, as the course marks
 /// a jump of the next lower quantity: an arrow from the zero line to the edge
 /// of the plot, up for a positive weight, with its label.
@@ -733,6 +761,35 @@ pub struct Impulse {
 
 /// [`plot`] with impulses marked as arrows.
 pub fn plot_with_impulses(
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[Series<'_>],
+    impulses: &[Impulse],
+    width: f64,
+    height: f64,
+) -> String {
+    plot_impl(crate::project::Language::En, title, xlabel, ylabel, series, impulses, width, height)
+}
+
+/// [`plot_with_impulses`] with its tick labels in `lang`.
+#[allow(clippy::too_many_arguments)]
+pub fn plot_with_impulses_in(
+    lang: crate::project::Language,
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[Series<'_>],
+    impulses: &[Impulse],
+    width: f64,
+    height: f64,
+) -> String {
+    plot_impl(lang, title, xlabel, ylabel, series, impulses, width, height)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn plot_impl(
+    lang: crate::project::Language,
     title: &str,
     xlabel: &str,
     ylabel: &str,
@@ -792,14 +849,14 @@ pub fn plot_with_impulses(
         let (x0p, yp) = map(xt0, y);
         let (x1p, _) = map(xt1, y);
         c.line_paper((x0p, yp), (x1p, yp), grid);
-        c.text_paper((x0p - 1.5, yp + 1.0), &yt.label(i), 2.6, Anchor::End, "#000");
+        c.text_paper((x0p - 1.5, yp + 1.0), &comma(&yt.label(i), lang), 2.6, Anchor::End, "#000");
     }
     for i in xt.first..=xt.last {
         let x = xt.value(i);
         let (xp, y0p) = map(x, yt0);
         let (_, y1p) = map(x, yt1);
         c.line_paper((xp, y0p), (xp, y1p), grid);
-        c.text_paper((xp, y0p + 4.0), &xt.label(i), 2.6, Anchor::Middle, "#000");
+        c.text_paper((xp, y0p + 4.0), &comma(&xt.label(i), lang), 2.6, Anchor::Middle, "#000");
     }
     // axes through zero
     let (ax0, ay0) = map(xt0, 0.0f64.clamp(yt0, yt1));
@@ -836,9 +893,12 @@ pub fn plot_with_impulses(
         );
         if series.len() > 1 || !s.name.is_empty() {
             let ly = 14.0 + 4.5 * k as f64;
+            // the legend's column as far right as its longest name allows
+            let longest = series.iter().map(|s| s.name.chars().count()).max().unwrap_or(0);
+            let lx = (width - 2.0 - text_width(2.8, longest)).min(width - 40.0);
             c.line_paper(
-                (width - 48.0, ly - 1.0),
-                (width - 42.0, ly - 1.0),
+                (lx - 8.0, ly - 1.0),
+                (lx - 2.0, ly - 1.0),
                 Style {
                     width: 0.6,
                     color: s.color,
@@ -846,7 +906,7 @@ pub fn plot_with_impulses(
                     fill: None,
                 },
             );
-            c.text_paper((width - 40.0, ly), s.name, 2.8, Anchor::Start, "#000");
+            c.text_paper((lx, ly), s.name, 2.8, Anchor::Start, "#000");
         }
     }
     for (k, imp) in impulses.iter().enumerate() {

@@ -302,3 +302,52 @@ fn russian_drawings_have_no_english_words_and_use_the_decimal_comma() {
         assert!(svg.contains("Velocity plan"), "{name}: the English words come from en.toml");
     }
 }
+
+#[test]
+fn force_plans_and_the_lever_fit_their_slot_with_labels_apart() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    for name in ["seed-001-fourbar.toml", "seed-003-sixbar.toml", "seed-004-two-sliders.toml"] {
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        for sheet in [SheetFormat::A1, SheetFormat::A2] {
+            let task = TaskSource::new(name, text.clone()).with_sheet(sheet);
+            let (l, t) = tmm_report::forces::load(&task).unwrap().unwrap();
+            let a = tmm_report::forces::analyse(&task, &l, &t, None).unwrap();
+            let docs = tmm_report::forces::drawings(&l, &t, &a, &task).unwrap();
+            for d in docs
+                .iter()
+                .filter(|d| d.path.starts_with("group-") || d.path == "input-link.svg" || d.path == "zhukovsky-lever.svg")
+            {
+                let svg = d.as_text().unwrap();
+                let (w, h, root) = paper(svg);
+                let (sw, sh) = slot_mm(Slot::Plan, sheet);
+                assert!(w <= sw && h <= sh, "{name} {}: {w}×{h}", d.path);
+                let mu: f64 = attr(&root, "data-mu-f")
+                    .or_else(|| attr(&root, "data-mu"))
+                    .unwrap()
+                    .parse()
+                    .unwrap();
+                let m = mu / 10f64.powf(mu.log10().floor());
+                assert!([1.0, 2.0, 2.5, 4.0, 5.0].iter().any(|r| (m - r).abs() < 1e-9), "{name}: μ = {mu}");
+                let tx = texts(svg);
+                for (s, b) in &tx {
+                    assert!(
+                        b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= w && b[3] <= h,
+                        "{name} {}: \"{s}\" outside",
+                        d.path
+                    );
+                }
+                for i in 0..tx.len() {
+                    for j in i + 1..tx.len() {
+                        assert!(
+                            !overlap(&tx[i].1, &tx[j].1),
+                            "{name} {}: \"{}\" on \"{}\"",
+                            d.path,
+                            tx[i].0,
+                            tx[j].0
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -43,7 +43,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
         checked(text_report(&l, &d))?
     };
     let files = match &a.svg {
-        Some(dir) => write_dir(dir, &drawings(&d)?)?,
+        Some(dir) => write_dir(dir, &drawings(&d, task.lang, task.sheet)?)?,
         None => Vec::new(),
     };
     print(&if a.json { out } else { out + &written(&files) })

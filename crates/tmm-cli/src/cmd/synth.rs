@@ -338,7 +338,14 @@ pub fn run(cmd: &SynthCommand) -> Result<(), Error> {
     };
     let mut files = Vec::new();
     if let Some(dir) = &common.svg {
-        files.extend(write_dir(dir, &synthesis::drawings(&s)?)?);
+        files.extend(write_dir(
+            dir,
+            &synthesis::drawings(
+                &s,
+                tmm_report::project::Language::default(),
+                tmm_report::project::SheetFormat::default(),
+            )?,
+        )?);
     }
     if let Some(path) = &common.task {
         let keep: Vec<(String, RawField)> = fields.into_iter().filter(|(k, _)| k != "sweep").collect();

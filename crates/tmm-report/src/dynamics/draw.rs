@@ -14,7 +14,10 @@ use tmm_linkage::dynamics::Dynamics;
 
 use crate::Error;
 use crate::output::Documents;
-use crate::svg::{Anchor, Canvas, Style, Ticks};
+use crate::paper::{Slot, round_mu, slot_mm};
+use crate::project::{Language, SheetFormat};
+use crate::svg::{Anchor, Canvas, Style, mu_text, num};
+use crate::words::word;
 
 const RED: &str = "#c00000";
 const BLUE: &str = "#0050c0";
@@ -23,161 +26,327 @@ const BROWN: &str = "#a05000";
 const PURPLE: &str = "#7000a0";
 const GREY: &str = "#606060";
 
-/// Paper size, mm.
-const W: f64 = 260.0;
-const H: f64 = 160.0;
-/// The frame on the paper (y up), mm.
-const LEFT: f64 = 26.0;
-const BOTTOM: f64 = 18.0;
-const PW: f64 = 170.0;
-const PH: f64 = 124.0;
+/// Lettering heights (GOST 2.304): labels and ticks.
+const H_LABEL: f64 = 3.5;
+const H_SMALL: f64 = 2.5;
+/// The margins around the frame, mm: left (tick labels), top (title, the
+/// scale factors, the quantity's name), bottom (tick labels, positions).
+const LEFT: f64 = 17.0;
+const TOP: f64 = 21.0;
+const BOTTOM: f64 = 11.0;
+/// The room right of the frame: the names of the marked levels and the legend.
+const RIGHT: f64 = 62.0;
+/// The grid step on paper, mm: the ticks stand at whole multiples of 10·μ.
+const GRID: f64 = 10.0;
 
-/// A line chart on its own paper, world = paper mm with y up.
+/// One axis at a round scale factor μ (units per paper mm): the frame runs
+/// from `lo` (a whole multiple of the grid step GRID·μ) over `len` mm.
+#[derive(Debug, Clone, Copy)]
+struct Axis {
+    lo: f64,
+    mu: f64,
+    len: f64,
+}
+
+impl Axis {
+    /// The smallest round μ at which `[a, b]`, widened to whole grid steps,
+    /// fits in `room` mm.
+    fn fit(a: f64, b: f64, room: f64) -> Axis {
+        let (a, b) = widened(a, b);
+        let mut mu = round_mu((b - a) / room.max(1.0));
+        for _ in 0..64 {
+            let g = GRID * mu;
+            let lo = (a / g + 1e-9).floor() * g;
+            let hi = (b / g - 1e-9).ceil() * g;
+            let len = (hi - lo) / mu;
+            if len <= room + 1e-9 {
+                return Axis { lo, mu, len };
+            }
+            mu = round_mu(mu * 1.0001);
+        }
+        Axis {
+            lo: a,
+            mu: (b - a) / room.max(1.0),
+            len: room,
+        }
+    }
+
+    /// The value of grid line `k` (exact multiple of the step).
+    fn grid(&self, k: usize) -> f64 {
+        self.lo + k as f64 * GRID * self.mu
+    }
+
+    /// The number of grid steps.
+    fn steps(&self) -> usize {
+        (self.len / GRID).round() as usize
+    }
+
+    /// The decimals that print every grid value exactly.
+    fn decimals(&self) -> usize {
+        let g = GRID * self.mu;
+        (2 - g.log10().floor() as i32).clamp(0, 12) as usize
+    }
+}
+
+/// What the horizontal axis is.
+enum XKind {
+    /// The cycle angle φ over 0…360° at μ_φ, marked with the positions 0…12.
+    Phi(Vec<f64>),
+    /// Another quantity: its symbol and unit.
+    Other(String, String),
+}
+
+/// A diagram on its own paper, drawn in paper mm (y down).
 struct Chart {
     c: Canvas,
-    x0: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
+    x: Axis,
+    y: Axis,
+    /// The frame's top-left corner.
+    fx: f64,
+    fy: f64,
     legend: usize,
+    /// Paper y of the level names written right of the frame.
+    levels: Vec<f64>,
+}
+
+/// `a unit/mm`, the unit in brackets when it is a ratio.
+fn per_mm(unit: &str, lang: Language) -> String {
+    let mm = word(lang, "dynamics.unit_mm");
+    if unit.contains('/') || unit.contains('·') {
+        format!("({unit})/{mm}")
+    } else {
+        format!("{unit}/{mm}")
+    }
 }
 
 impl Chart {
-    /// A frame for x in `xr`, y in `yr` (widened to whole ticks; `zero`
-    /// keeps y = 0 in range), x ticks every `xstep` when given.
-    fn new(title: &str, xlabel: &str, ylabel: &str, xr: (f64, f64), yr: (f64, f64), zero: bool, xstep: Option<f64>) -> Self {
-        let c = Canvas::new(W, H);
+    /// A framed diagram for y in `yr` (`zero` keeps 0 in range) over the x
+    /// axis `xk` with data range `xr`, on the paper of `slot`; the title,
+    /// then both scale factors under it, then the quantity's name.
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        lang: Language,
+        sheet: SheetFormat,
+        slot: Slot,
+        title: &str,
+        (ysym, yunit): (&str, &str),
+        yr: (f64, f64),
+        zero: bool,
+        xk: XKind,
+        xr: (f64, f64),
+    ) -> Self {
+        let (w, h) = slot_mm(slot, sheet);
         let (mut ya, mut yb) = yr;
         if zero {
             ya = ya.min(0.0);
             yb = yb.max(0.0);
         }
-        let (ya, yb) = widened(ya, yb);
-        let pad = 0.04 * (yb - ya);
-        let yt = Ticks::new(ya - pad, yb + pad, 6);
-        let (y0, y1) = (yt.value(yt.first), yt.value(yt.last));
-        let (x0, x1, xticks): (f64, f64, Vec<(f64, String)>) = match xstep {
-            Some(s) => {
-                let n = ((xr.1 - xr.0) / s).round() as i64;
-                (
-                    xr.0,
-                    xr.1,
-                    (0..=n)
-                        .map(|i| (xr.0 + i as f64 * s, format!("{:.0}", xr.0 + i as f64 * s)))
-                        .collect(),
-                )
+        let y = Axis::fit(ya, yb, h - TOP - BOTTOM);
+        let x = match &xk {
+            XKind::Phi(_) => {
+                let mu = round_mu(360.0 / (w - LEFT - RIGHT));
+                Axis {
+                    lo: 0.0,
+                    mu,
+                    len: 360.0 / mu,
+                }
             }
-            None => {
-                let (xa, xb) = widened(xr.0, xr.1);
-                let xt = Ticks::new(xa, xb, 8);
-                (
-                    xt.value(xt.first),
-                    xt.value(xt.last),
-                    (xt.first..=xt.last).map(|i| (xt.value(i), xt.label(i))).collect(),
-                )
-            }
+            XKind::Other(..) => Axis::fit(xr.0, xr.1, w - LEFT - RIGHT),
         };
+        let (fx, fy) = (LEFT, TOP);
+        // the paper as high as the frame needs, within the slot
+        let mut c = Canvas::new(w, (TOP + y.len + BOTTOM).min(h));
+        let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
+        c.rich_paper((0.5 * w, 6.0), title, h_title, Anchor::Middle, "#000");
+        let (xsym, xunit) = match &xk {
+            XKind::Phi(_) => ("φ".to_string(), "°".to_string()),
+            XKind::Other(s, u) => (s.clone(), u.clone()),
+        };
+        // μ's index: the quantity's letter (μ_ω, μ_T, μ_M)
+        let base = |s: &str| s.split(['_', ',', ' ', '(']).next().unwrap_or(s).to_string();
+        let (ymu, xmu) = (base(ysym), base(&xsym));
+        let scales = format!(
+            "μ_{{{}}} = {} {},   μ_{{{}}} = {} {}",
+            ymu,
+            mu_text(y.mu, lang),
+            per_mm(yunit, lang),
+            xmu,
+            mu_text(x.mu, lang),
+            per_mm(&xunit, lang)
+        );
+        c.rich_paper((0.5 * w, 12.5), &scales, H_LABEL, Anchor::Middle, "#000");
+        c.rich_paper((fx, fy - 2.0), &format!("{ysym}, {yunit}"), H_SMALL + 0.5, Anchor::Start, "#000");
         let mut ch = Chart {
             c,
-            x0,
-            x1,
-            y0,
-            y1,
+            x,
+            y,
+            fx,
+            fy,
             legend: 0,
+            levels: Vec::new(),
         };
-        let grid = Style {
-            width: 0.1,
-            color: "#bbbbbb",
-            dash: None,
-            fill: None,
-        };
-        for i in yt.first..=yt.last {
-            let y = yt.value(i);
-            let a = ch.map(x0, y);
-            let b = ch.map(x1, y);
-            ch.c.line(a, b, grid);
-            ch.c.text((a.0 - 1.5, a.1 - 0.9), &yt.label(i), 2.6, Anchor::End);
+        // the grid (not kept as lines to avoid: the names sit on the frame)
+        let (x1, y1) = (fx + x.len, fy + y.len);
+        let mut grid = String::new();
+        for k in 0..=y.steps() {
+            let v = y.grid(k);
+            let (_, py) = ch.map(0.0, v);
+            grid.push_str(&format!("M{fx:.3},{py:.3}H{x1:.3}"));
+            ch.c.rich_paper((fx - 1.2, py + 0.9), &num(v, y.decimals(), lang), H_SMALL, Anchor::End, "#000");
         }
-        for (x, label) in &xticks {
-            let a = ch.map(*x, y0);
-            let b = ch.map(*x, y1);
-            ch.c.line(a, b, grid);
-            ch.c.text((a.0, a.1 - 4.2), label, 2.6, Anchor::Middle);
+        match &xk {
+            XKind::Phi(marks) => {
+                for (i, phi) in marks.iter().chain(std::iter::once(&360.0)).enumerate() {
+                    let (px, _) = ch.map(*phi, 0.0);
+                    grid.push_str(&format!("M{px:.3},{fy:.3}V{y1:.3}"));
+                    let n = if *phi >= 360.0 - 1e-9 { marks.len() } else { i };
+                    ch.c.rich_paper((px, y1 + 4.2), &n.to_string(), H_SMALL, Anchor::Middle, "#000");
+                }
+                ch.c.rich_paper((x1 + 3.0, y1 + 4.2), "φ", H_LABEL, Anchor::Start, "#000");
+            }
+            XKind::Other(s, u) => {
+                for k in 0..=x.steps() {
+                    let v = x.grid(k);
+                    let (px, _) = ch.map(v, 0.0);
+                    grid.push_str(&format!("M{px:.3},{fy:.3}V{y1:.3}"));
+                    if k % 2 == 0 {
+                        ch.c.rich_paper((px, y1 + 4.2), &num(v, x.decimals(), lang), H_SMALL, Anchor::Middle, "#000");
+                    }
+                }
+                ch.c.rich_paper((x1, y1 + 8.6), &format!("{s}, {u}"), H_SMALL + 0.5, Anchor::End, "#000");
+            }
         }
-        // the frame and the x axis through zero
+        ch.c.raw(&format!(
+            "<path class=\"grid\" d=\"{grid}\" stroke=\"#bbbbbb\" stroke-width=\"0.1\" fill=\"none\"/>"
+        ));
         let frame = Style::THIN.widened(0.3);
-        ch.c.polygon(&[ch.map(x0, y0), ch.map(x1, y0), ch.map(x1, y1), ch.map(x0, y1)], frame);
-        if y0 < 0.0 && y1 > 0.0 {
-            ch.c.line(ch.map(x0, 0.0), ch.map(x1, 0.0), Style::THIN.widened(0.35));
+        for (a, b) in [
+            ((fx, fy), (x1, fy)),
+            ((x1, fy), (x1, y1)),
+            ((x1, y1), (fx, y1)),
+            ((fx, y1), (fx, fy)),
+        ] {
+            ch.c.line_paper(a, b, frame);
         }
-        ch.c.text_paper((LEFT + PW / 2.0, 8.0), title, 4.0, Anchor::Middle, "#000");
-        ch.c.text((LEFT + PW / 2.0, 5.0), xlabel, 3.0, Anchor::Middle);
-        ch.c.text((LEFT - 1.0, BOTTOM + PH + 3.0), ylabel, 3.0, Anchor::Start);
+        if ch.y.lo < 0.0 && ch.y.lo + ch.y.len * ch.y.mu > 0.0 {
+            let (_, pz) = ch.map(0.0, 0.0);
+            ch.c.line_paper((fx, pz), (x1, pz), Style::THIN.widened(0.35));
+        }
         ch
     }
 
-    /// Data to paper (mm, y up).
+    /// Data to paper (mm, y down).
     fn map(&self, x: f64, y: f64) -> (f64, f64) {
         (
-            LEFT + (x - self.x0) / (self.x1 - self.x0) * PW,
-            BOTTOM + (y - self.y0) / (self.y1 - self.y0) * PH,
+            self.fx + (x - self.x.lo) / self.x.mu,
+            self.fy + self.y.len - (y - self.y.lo) / self.y.mu,
         )
     }
 
-    /// A curve with a legend entry beside the frame.
+    /// The frame's right edge and bottom, paper mm.
+    fn corner(&self) -> (f64, f64) {
+        (self.fx + self.x.len, self.fy + self.y.len)
+    }
+
+    /// A curve (a path of the data points) with a legend entry.
     fn curve(&mut self, pts: &[(f64, f64)], color: &'static str, name: &str, dash: Option<(f64, f64)>) {
-        let p: Vec<(f64, f64)> = pts.iter().map(|&(x, y)| self.map(x, y)).collect();
-        let s = Style {
-            width: 0.45,
-            color,
-            dash,
-            fill: None,
-        };
-        self.c.polyline(&p, s);
-        self.legend_entry(name, s);
+        let mut d = String::new();
+        let mut pen = false;
+        let mut kept: Option<(f64, f64)> = None;
+        for &(x, y) in pts {
+            if !(x.is_finite() && y.is_finite()) {
+                pen = false;
+                kept = None;
+                continue;
+            }
+            let (px, py) = self.map(x, y);
+            d.push_str(&format!("{}{px:.3},{py:.3} ", if pen { "L" } else { "M" }));
+            pen = true;
+            // the labels placed later keep off the curve: its chords of ≥ 1 mm
+            match kept {
+                Some(k) if (k.0 - px).hypot(k.1 - py) < 1.0 => {}
+                Some(k) => {
+                    self.c.reserve_segment(k, (px, py));
+                    kept = Some((px, py));
+                }
+                None => kept = Some((px, py)),
+            }
+        }
+        if let (Some(k), Some(&(x, y))) = (kept, pts.last()) {
+            let p = self.map(x, y);
+            if p.0.is_finite() && p.1.is_finite() {
+                self.c.reserve_segment(k, p);
+            }
+        }
+        let dash_attr = dash.map_or(String::new(), |(a, b)| format!(" stroke-dasharray=\"{a} {b}\""));
+        self.c.raw(&format!(
+            "<path class=\"curve\" d=\"{}\" stroke=\"{color}\" stroke-width=\"0.6\" fill=\"none\"{dash_attr}/>",
+            d.trim_end()
+        ));
+        self.legend_entry(
+            name,
+            Style {
+                width: 0.6,
+                color,
+                dash,
+                fill: None,
+            },
+        );
     }
 
     fn legend_entry(&mut self, name: &str, s: Style) {
         if name.is_empty() {
             return;
         }
-        let x = LEFT + PW + 5.0;
-        let y = BOTTOM + PH - 2.0 - 5.0 * self.legend as f64;
-        self.c.line((x, y + 0.9), (x + 7.0, y + 0.9), s.widened(0.6));
-        self.c.text((x + 9.0, y), name, 2.8, Anchor::Start);
+        let (x1, _) = self.corner();
+        let x = x1 + 13.0;
+        let y = self.fy + 3.0 + 5.0 * self.legend as f64;
+        self.c.line_paper((x, y - 0.9), (x + 6.0, y - 0.9), s);
+        self.c.rich_paper((x + 7.5, y), name, H_SMALL, Anchor::Start, "#000");
         self.legend += 1;
     }
 
-    /// A horizontal dashed line across the frame with a legend entry.
-    fn hline(&mut self, y: f64, color: &'static str, name: &str) {
+    /// A text line in the legend's column, with no sample line.
+    fn note(&mut self, text: &str) {
+        let (x1, _) = self.corner();
+        let y = self.fy + 3.0 + 5.0 * self.legend as f64;
+        self.c.rich_paper((x1 + 13.0, y), text, H_SMALL, Anchor::Start, "#000");
+        self.legend += 1;
+    }
+
+    /// A dashed level across the frame, its name right of the frame at its
+    /// height (moved down clear of the names above it) and its value in
+    /// the legend.
+    fn level(&mut self, v: f64, color: &'static str, name: &str, value: &str) {
         let s = Style {
-            width: 0.3,
+            width: 0.35,
             color,
             dash: Some((2.5, 1.5)),
             fill: None,
         };
-        self.c.line(self.map(self.x0, y), self.map(self.x1, y), s);
-        self.legend_entry(name, s);
+        let (x1, _) = self.corner();
+        let (_, py) = self.map(self.x.lo, v);
+        self.c.line_paper((self.fx, py), (x1, py), s);
+        let mut at = py + 0.9;
+        for l in &self.levels {
+            if (at - l).abs() < 3.2 {
+                at = l + 3.2;
+            }
+        }
+        // above the row of the positions' numbers under the frame
+        let (_, y1) = self.corner();
+        at = at.min(y1);
+        self.levels.push(at);
+        self.c.rich_paper((x1 + 1.0, at), name, H_SMALL, Anchor::Start, color);
+        self.legend_entry(&format!("{name} = {value}"), s);
     }
 
-    /// A note below the legend, beside the frame.
-    fn note(&mut self, text: &str) {
-        let x = LEFT + PW + 5.0;
-        let y = BOTTOM + PH - 2.0 - 5.0 * self.legend as f64 - 2.0;
-        self.c.text((x, y), text, 2.6, Anchor::Start);
-        self.legend += 1;
-    }
-
-    /// A dot at a data point with a label beside it.
-    fn mark(&mut self, x: f64, y: f64, label: &str, color: &'static str, anchor: Anchor, dy: f64) {
+    /// A dot at a data point with its label put clear of the other text.
+    fn mark(&mut self, x: f64, y: f64, label: &str, color: &'static str) {
         let p = self.map(x, y);
-        self.c.dot(p, 0.7, color);
-        let dx = match anchor {
-            Anchor::Start => 1.5,
-            Anchor::End => -1.5,
-            Anchor::Middle => 0.0,
-        };
-        self.c.text_colored((p.0 + dx, p.1 + dy), label, 2.6, anchor, color);
+        let h = self.c.size().1;
+        self.c.dot((p.0, h - p.1), 0.7, color);
+        self.c.label_paper(p, label, H_SMALL, color);
     }
 
     fn finish(&self) -> String {
@@ -207,70 +376,55 @@ fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
     v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
 }
 
-/// Every diagram, under `prefix`.
-pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), Error> {
+/// Every diagram, under `prefix`, in `lang`, for a sheet of `sheet`.
+pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, docs: &mut Documents) -> Result<(), Error> {
+    let wd = |k: &str| word(lang, &format!("dynamics.{k}")).to_string();
     let c = &d.cycle;
     let deg: Vec<f64> = c.phi.iter().map(|p| p.to_degrees()).collect();
     let xy = |v: &[f64]| -> Vec<(f64, f64)> { deg.iter().copied().zip(v.iter().copied()).collect() };
+    let marks: Vec<f64> = d.positions.iter().map(|p| p.phi.to_degrees()).collect();
+    let phi = || XKind::Phi(marks.clone());
     let xr = (0.0, 360.0);
-    let xs = Some(30.0);
-    let xl = "φ, ° (crank angle from the start of the working stroke)";
+    let (u_nm, u_j, u_i) = (wd("unit_nm"), wd("unit_j"), wd("unit_kgm2"));
+    let (u_w, u_e) = (wd("unit_radps"), wd("unit_radps2"));
+    let n3 = |v: f64| num(v, 3, lang);
+    let chart =
+        |title: &str, y: (&str, &str), yr: (f64, f64), zero: bool| Chart::new(lang, sheet, Slot::Diagram, title, y, yr, zero, phi(), xr);
 
     // the reduced moments
     let md = c.driving_moment;
-    let yr = range(c.moment.iter().copied().chain([md]));
-    let mut ch = Chart::new("Reduced moments: loads M_c and drive M_d", xl, "M, N·m", xr, yr, true, xs);
-    ch.curve(&xy(&c.moment), RED, "M_c (loads)", None);
-    ch.curve(&[(0.0, md), (360.0, md)], BLUE, &format!("M_d = {md:.3} N·m"), None);
+    let (mc, mdn) = (wd("sym_mc"), wd("sym_md"));
+    let mut ch = chart(
+        &wd("title_moments"),
+        ("M", &u_nm),
+        range(c.moment.iter().copied().chain([md])),
+        true,
+    );
+    ch.curve(&xy(&c.moment), RED, &mc, None);
+    ch.curve(&[(0.0, md), (360.0, md)], BLUE, &format!("{mdn} = {} {u_nm}", n3(md)), None);
     docs.add_text(format!("{prefix}moments.svg"), ch.finish())?;
 
     // the work and the change of kinetic energy
     let yr = range(c.work_loads.iter().chain(&c.work_driving).chain(&c.energy).copied());
-    let mut ch = Chart::new(
-        "Work of the drive A_d, of the loads A_c, and ΔT = A_d + A_c",
-        xl,
-        "A, ΔT, J",
-        xr,
-        yr,
-        true,
-        xs,
-    );
-    ch.curve(&xy(&c.work_driving), BLUE, "A_d", None);
-    ch.curve(&xy(&c.work_loads), RED, "A_c", None);
+    let mut ch = chart(&wd("title_work"), ("A, ΔT", &u_j), yr, true);
+    ch.curve(&xy(&c.work_driving), BLUE, &wd("sym_ad"), None);
+    ch.curve(&xy(&c.work_loads), RED, &wd("sym_ac"), None);
     ch.curve(&xy(&c.energy), GREEN, "ΔT", None);
     docs.add_text(format!("{prefix}work.svg"), ch.finish())?;
 
     // the variable reduced inertia
-    let yr = range(c.inertia.iter().copied());
-    let mut ch = Chart::new(
-        "Variable part of the reduced moment of inertia I_II",
-        xl,
-        "I_II, kg·m²",
-        xr,
-        yr,
-        true,
-        xs,
-    );
-    ch.curve(&xy(&c.inertia), PURPLE, "I_II", None);
+    let mut ch = chart(&wd("title_inertia"), ("I_{II}", &u_i), range(c.inertia.iter().copied()), true);
+    ch.curve(&xy(&c.inertia), PURPLE, "I_{II}", None);
     docs.add_text(format!("{prefix}inertia.svg"), ch.finish())?;
 
     // Merkalov's T_I and its swing
     let mk = &d.merkalov;
     let yr = range(mk.energy_constant.iter().copied().chain([mk.energy_max, mk.energy_min]));
-    let mut ch = Chart::new(
-        "Merkalov: T_I = ΔT − I_II·ω_m²/2 and its swing ΔT_I",
-        xl,
-        "T_I, J",
-        xr,
-        yr,
-        true,
-        xs,
-    );
+    let mut ch = chart(&wd("title_merkalov"), ("T_I", &u_j), yr, true);
     ch.curve(&xy(&mk.energy_constant), GREEN, "T_I", None);
-    ch.hline(mk.energy_max, GREY, &format!("max T_I = {:.3} J", mk.energy_max));
-    ch.hline(mk.energy_min, GREY, &format!("min T_I = {:.3} J", mk.energy_min));
-    // the double arrow of ΔT_I where the curve is farthest from mid-height,
-    // so that neither the arrow's label nor its shaft lies on the curve
+    ch.level(mk.energy_max, GREY, "T_{I max}", &format!("{} {u_j}", n3(mk.energy_max)));
+    ch.level(mk.energy_min, GREY, "T_{I min}", &format!("{} {u_j}", n3(mk.energy_min)));
+    // the double arrow of ΔT_I where the curve is farthest from mid-height
     let mid = 0.5 * (mk.energy_max + mk.energy_min);
     let xa = deg
         .iter()
@@ -279,61 +433,37 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
         .max_by(|a, b| (a.1 - mid).abs().total_cmp(&(b.1 - mid).abs()))
         .map_or(180.0, |(x, _)| *x);
     let (a, b) = (ch.map(xa, mk.energy_min), ch.map(xa, mk.energy_max));
-    ch.c.arrow(a, b, Style::THIN.colored(RED), 2.5);
-    ch.c.arrow(b, a, Style::THIN.colored(RED), 2.5);
-    ch.c.text_colored((a.0 + 1.5, 0.5 * (a.1 + b.1)), "ΔT_I", 3.0, Anchor::Start, RED);
-    ch.note(&format!("ΔT_I = {:.3} J", mk.energy_swing));
-    ch.note(&format!("I_I = ΔT_I/(δ·ω_m²) = {:.5} kg·m²", mk.inertia));
-    ch.mark(
-        mk.phi_max.to_degrees(),
-        mk.energy_max,
-        &format!("{:.1}°", mk.phi_max.to_degrees()),
-        GREY,
-        Anchor::Start,
-        1.5,
-    );
-    ch.mark(
-        mk.phi_min.to_degrees(),
-        mk.energy_min,
-        &format!("{:.1}°", mk.phi_min.to_degrees()),
-        GREY,
-        Anchor::Start,
-        -4.0,
-    );
+    ch.c.arrow_paper(a, b, Style::THIN.colored(RED), 2.5);
+    ch.c.arrow_paper(b, a, Style::THIN.colored(RED), 2.5);
+    ch.c.label_paper((a.0, 0.5 * (a.1 + b.1)), "ΔT_I", H_SMALL, RED);
+    ch.note(&format!("ΔT_I = {} {u_j}", n3(mk.energy_swing)));
+    ch.note(&format!("I_I = {} {u_i}", num(mk.inertia, 5, lang)));
+    for p in [mk.phi_max, mk.phi_min] {
+        let e = if p == mk.phi_max { mk.energy_max } else { mk.energy_min };
+        ch.mark(p.to_degrees(), e, &format!("φ = {}°", num(p.to_degrees(), 1, lang)), GREY);
+    }
     docs.add_text(format!("{prefix}energy-constant.svg"), ch.finish())?;
 
-    docs.add_text(format!("{prefix}wittenbauer.svg"), wittenbauer(d))?;
+    docs.add_text(format!("{prefix}wittenbauer.svg"), wittenbauer(d, lang, sheet))?;
 
     // the true speed
     let mo = &d.motion;
     let yr = range(mo.omega.iter().copied().chain([mo.omega_max, mo.omega_min]));
-    let mut ch = Chart::new(
-        &format!("True crank speed ω₁(φ) with the flywheel, δ = {:.5}", mo.delta),
-        xl,
-        "ω₁, rad/s",
-        xr,
+    let mut ch = chart(
+        &format!("{}, δ = {}", wd("title_omega"), num(mo.delta, 5, lang)),
+        ("ω_1", &u_w),
         yr,
         false,
-        xs,
     );
-    ch.hline(mo.omega_max, RED, &format!("ω_max = {:.4} rad/s", mo.omega_max));
-    ch.hline(mo.omega_mean, GREY, &format!("ω_m = {:.4} rad/s", mo.omega_mean));
-    ch.hline(mo.omega_min, BLUE, &format!("ω_min = {:.4} rad/s", mo.omega_min));
-    ch.curve(&xy(&mo.omega), GREEN, "ω₁", None);
+    ch.curve(&xy(&mo.omega), GREEN, "ω_1", None);
+    ch.level(mo.omega_max, RED, "ω_{max}", &format!("{} {u_w}", num(mo.omega_max, 4, lang)));
+    ch.level(mo.omega_mean, GREY, "ω_m", &format!("{} {u_w}", num(mo.omega_mean, 4, lang)));
+    ch.level(mo.omega_min, BLUE, "ω_{min}", &format!("{} {u_w}", num(mo.omega_min, 4, lang)));
     docs.add_text(format!("{prefix}omega.svg"), ch.finish())?;
 
     // the crank's acceleration
-    let yr = range(mo.epsilon.iter().copied());
-    let mut ch = Chart::new(
-        "Crank angular acceleration ε₁(φ) with the flywheel",
-        xl,
-        "ε₁, rad/s²",
-        xr,
-        yr,
-        true,
-        xs,
-    );
-    ch.curve(&xy(&mo.epsilon), BROWN, "ε₁", None);
+    let mut ch = chart(&wd("title_epsilon"), ("ε_1", &u_e), range(mo.epsilon.iter().copied()), true);
+    ch.curve(&xy(&mo.epsilon), BROWN, "ε_1", None);
     docs.add_text(format!("{prefix}epsilon.svg"), ch.finish())?;
 
     if let Some(r) = &d.runup {
@@ -353,59 +483,68 @@ pub fn draw_all(d: &Dynamics, prefix: &str, docs: &mut Documents) -> Result<(), 
         }
         let xr = range(pts.iter().map(|p| p.0));
         let yr = range(pts.iter().map(|p| p.1));
-        let mut ch = Chart::new("Run-up from rest with the motor: ω₁(t)", "t, s", "ω₁, rad/s", xr, yr, true, None);
-        ch.hline(r.steady.omega_mean, GREY, &format!("steady ω_m = {:.3} rad/s", r.steady.omega_mean));
-        ch.curve(&pts, GREEN, "ω₁(t)", None);
-        let (a, b) = (ch.map(r.time, ch.y0), ch.map(r.time, ch.y1));
-        ch.c.line(a, b, Style::DASHED.colored(RED));
-        ch.legend_entry(&format!("run-up time {:.3} s", r.time), Style::DASHED.colored(RED));
+        let mut ch = Chart::new(
+            lang,
+            sheet,
+            Slot::Diagram,
+            &wd("title_runup"),
+            ("ω_1", &u_w),
+            yr,
+            true,
+            XKind::Other("t".into(), wd("unit_s")),
+            (xr.0.min(0.0), xr.1),
+        );
+        ch.curve(&pts, GREEN, "ω_1(t)", None);
+        ch.level(r.steady.omega_mean, GREY, "ω_m", &format!("{} {u_w}", n3(r.steady.omega_mean)));
+        let (a, b) = (ch.map(r.time, ch.y.lo), ch.map(r.time, ch.y.lo + ch.y.len * ch.y.mu));
+        ch.c.line_paper(a, b, Style::DASHED.colored(RED));
+        ch.legend_entry(
+            &format!("t_р = {} {}", n3(r.time), wd("unit_s")).replace("t_р", &wd("sym_runup")),
+            Style::DASHED.colored(RED),
+        );
         docs.add_text(format!("{prefix}runup.svg"), ch.finish())?;
     }
     Ok(())
 }
 
 /// Wittenbauer's energy–mass diagram: ΔT against I_II over the cycle with
-/// the two tangents of slopes ω_max²/2 and ω_min²/2. They meet at
-/// O′ = (−I_I, −T₀), far off the drawing; both are clipped to the frame.
-fn wittenbauer(d: &Dynamics) -> String {
+/// the two tangents of slopes ω_max²/2 and ω_min²/2, at round μ_I and μ_T,
+/// on the Small slot. The tangents meet at O′ = (−I_I, −T₀), far off the
+/// drawing; both are clipped to the frame.
+fn wittenbauer(d: &Dynamics, lang: Language, sheet: SheetFormat) -> String {
+    let wd = |k: &str| word(lang, &format!("dynamics.{k}")).to_string();
     let c = &d.cycle;
     let w = &d.wittenbauer;
     let xr = range(c.inertia.iter().copied());
     let yr = range(c.energy.iter().copied());
     let dx = 0.08 * (xr.1 - xr.0).max(1e-12);
+    let u_i = wd("unit_kgm2");
+    let u_s = wd("unit_s2");
     let mut ch = Chart::new(
-        "Wittenbauer's energy–mass diagram ΔT(I_II) and the tangents",
-        "I_II, kg·m²",
-        "ΔT, J",
-        (xr.0 - dx, xr.1 + dx),
+        lang,
+        sheet,
+        Slot::Small,
+        &wd("title_wittenbauer"),
+        ("ΔT", &wd("unit_j")),
         yr,
         true,
-        None,
+        XKind::Other("I_{II}".into(), u_i.clone()),
+        (xr.0 - dx, xr.1 + dx),
     );
     let pts: Vec<(f64, f64)> = c.inertia.iter().copied().zip(c.energy.iter().copied()).collect();
-    ch.curve(&pts, GREEN, "ΔT(I_II)", None);
-    for (t, color, name) in [(&w.upper, RED, "ω_max²/2"), (&w.lower, BLUE, "ω_min²/2")] {
-        if let Some(seg) = clip(t.slope, t.intercept, (ch.x0, ch.x1, ch.y0, ch.y1)) {
-            ch.curve(&[seg.0, seg.1], color, &format!("{name} = {:.1} s⁻²", t.slope), None);
+    ch.curve(&pts, GREEN, "ΔT(I_{II})", None);
+    let top = ch.y.lo + ch.y.len * ch.y.mu;
+    let right = ch.x.lo + ch.x.len * ch.x.mu;
+    let bx = (ch.x.lo, right, ch.y.lo, top);
+    for (t, color, name, up) in [(&w.upper, RED, "ω_{max}^{2}/2", true), (&w.lower, BLUE, "ω_{min}^{2}/2", false)] {
+        if let Some(seg) = clip(t.slope, t.intercept, bx) {
+            ch.curve(&[seg.0, seg.1], color, &format!("{name} = {} {u_s}", num(t.slope, 1, lang)), None);
         }
-        // the label on the side of the tangent away from the curve: above
-        // and left of the upper one, below and right of the lower one
-        let up = std::ptr::eq(t, &w.upper);
-        ch.mark(
-            t.inertia,
-            t.energy,
-            &format!("φ = {:.1}°", t.phi.to_degrees()),
-            color,
-            if up { Anchor::End } else { Anchor::Start },
-            if up { 2.5 } else { -4.0 },
-        );
+        let _ = up;
+        ch.mark(t.inertia, t.energy, &format!("φ = {}°", num(t.phi.to_degrees(), 1, lang)), color);
     }
-    ch.note(&format!(
-        "O′ = (−I_I, −T₀) = ({:.4}, {:.1})",
-        -d.required.wittenbauer, -w.energy_start
-    ));
-    ch.note("(off the drawing)");
-    ch.note(&format!("I_I = {:.5} kg·m²", d.required.wittenbauer));
+    ch.note(&wd("off_drawing"));
+    ch.note(&format!("I_I = {} {u_i}", num(d.required.wittenbauer, 5, lang)));
     ch.finish()
 }
 
@@ -428,7 +567,7 @@ mod tests {
     use super::*;
 
     /// A constant or empty quantity still gets a frame with a few finite
-    /// ticks (a massless mechanism has I_II ≡ 0).
+    /// ticks (a massless mechanism has I_II ≡ 0), inside the slot.
     #[test]
     fn flat_data_gets_a_finite_frame() {
         for (a, b) in [
@@ -438,10 +577,31 @@ mod tests {
             (1e9, 1e9 + 1e-7),
             (f64::INFINITY, f64::NEG_INFINITY),
         ] {
-            let ch = Chart::new("t", "x", "y", (a, b), (a, b), false, None);
-            assert!(ch.y1 > ch.y0 && ch.x1 > ch.x0, "{a} {b}");
+            let ch = Chart::new(
+                Language::En,
+                SheetFormat::A1,
+                Slot::Diagram,
+                "t",
+                ("y", "m"),
+                (a, b),
+                false,
+                XKind::Other("x".into(), "s".into()),
+                (a, b),
+            );
+            assert!(ch.y.len > 0.0 && ch.x.len > 0.0, "{a} {b}");
+            assert!(ch.y.len <= 120.0 - TOP - BOTTOM + 1e-9, "{a} {b}");
             let svg = ch.finish();
             assert!(svg.matches("<line").count() < 100, "{a} {b}");
+        }
+    }
+
+    /// The axis' μ is round and the grid covers the data inside the room.
+    #[test]
+    fn axis_fits_at_a_round_mu() {
+        for (a, b, room) in [(31.1, 31.75, 90.0), (-1234.0, 877.0, 50.0), (0.0, 0.0123, 113.0)] {
+            let ax = Axis::fit(a, b, room);
+            assert_eq!(ax.mu, round_mu(ax.mu));
+            assert!(ax.lo <= a && ax.lo + ax.len * ax.mu >= b - 1e-12 && ax.len <= room + 1e-9);
         }
     }
 }

@@ -61,7 +61,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
     let mut docs = Documents::new();
-    draw::draw_all(&d, "dynamics/", &mut docs)?;
+    draw::draw_all(&d, "dynamics/", task.lang, task.sheet, &mut docs)?;
     let json = json::document(&l, &d);
     docs.add_json("dynamics/dynamics.json", &json)?;
     let text = text::report(&l, &d);
@@ -84,9 +84,10 @@ pub fn json_document(l: &Loaded, d: &Dynamics) -> serde_json::Value {
     json::document(l, d)
 }
 
-/// The diagrams, as documents named by file name only (`moments.svg`, …).
-pub fn drawings(d: &Dynamics) -> Result<Documents, Error> {
+/// The diagrams, as documents named by file name only (`moments.svg`, …),
+/// with the words of `lang` and sized for a sheet of `sheet`.
+pub fn drawings(d: &Dynamics, lang: crate::project::Language, sheet: crate::project::SheetFormat) -> Result<Documents, Error> {
     let mut docs = Documents::new();
-    draw::draw_all(d, "", &mut docs)?;
+    draw::draw_all(d, "", lang, sheet, &mut docs)?;
     Ok(docs)
 }

@@ -12,7 +12,7 @@ use crate::linkage::Loaded;
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm};
 use crate::project::Language;
-use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot};
+use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot_in};
 use crate::words::word;
 use crate::{Error, TaskSource};
 
@@ -423,7 +423,8 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
     docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a, task))?;
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
     let mz: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[3])).collect();
-    let svg = plot(
+    let svg = plot_in(
+        lang,
         word(lang, "forces.torque_title"),
         word(lang, "forces.torque_x"),
         word(lang, "forces.torque_y"),
@@ -451,7 +452,8 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
             ("M", "forces.strength_m", "forces.unit_nm", 2),
         ] {
             let pts: Vec<(f64, f64)> = b.samples.iter().map(|s| (s.z * 1e3, [s.n, s.q, s.m][idx])).collect();
-            let svg = plot(
+            let svg = plot_in(
+                lang,
                 &format!(
                     "{} {link} ({}–{}): {}",
                     word(lang, "forces.link"),

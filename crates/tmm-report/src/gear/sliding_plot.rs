@@ -5,7 +5,7 @@ use tmm_gears::Pair;
 
 use crate::paper::{Slot, slot_mm};
 use crate::project::{Language, SheetFormat};
-use crate::svg::{Series, plot};
+use crate::svg::{Series, plot_in};
 use crate::words::word;
 
 /// The specific-sliding diagram over the active line (ϑ clipped to [−4, 1]).
@@ -15,7 +15,8 @@ pub fn sliding_svg(pair: &Pair, lang: Language, sheet: SheetFormat) -> String {
     let a: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta1))).collect();
     let b: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta2))).collect();
     let (w, h) = slot_mm(Slot::Diagram, sheet);
-    let svg = plot(
+    let svg = plot_in(
+        lang,
         word(lang, "gear.sliding_title"),
         word(lang, "gear.sliding_x"),
         "ϑ",

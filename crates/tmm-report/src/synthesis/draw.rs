@@ -15,18 +15,21 @@ use tmm_linkage::synthesis::Kind;
 use super::Solved;
 use crate::Error;
 use crate::output::Documents;
-use crate::svg::{Anchor, Canvas, Series, Style, plot};
+use crate::paper::{Scale, Slot, slot_mm, standard_scale};
+use crate::project::{Language, SheetFormat};
+use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot_in};
+use crate::words::word;
 
 const BLUE: &str = "#1f4e9c";
 const RED: &str = "#c0392b";
 const GREEN: &str = "#1e8449";
 const GREY: &str = "#7f8c8d";
 
-/// Both drawings.
-pub fn drawings(s: &Solved) -> Result<Documents, Error> {
+/// Both drawings, with the words of `lang`, sized for a sheet of `sheet`.
+pub fn drawings(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<Documents, Error> {
     let mut d = Documents::new();
-    d.add_text("synthesis/construction.svg", construction(s))?;
-    d.add_text("synthesis/pressure.svg", pressure(s)?)?;
+    d.add_text("synthesis/construction.svg", construction(s, lang, sheet))?;
+    d.add_text("synthesis/pressure.svg", pressure(s, lang, sheet)?)?;
     Ok(d)
 }
 
@@ -105,8 +108,16 @@ fn drawn_positions(s: &Solved) -> Vec<Vec<(String, Vec2)>> {
         .collect()
 }
 
-/// The construction drawing.
-pub fn construction(s: &Solved) -> String {
+/// Lettering heights (GOST 2.304).
+const H_LABEL: f64 = 3.5;
+const H_SMALL: f64 = 2.5;
+
+/// The construction drawing at a GOST 2.302 standard scale on the Small
+/// slot of a sheet of `sheet`, with the words of `lang`: the root carries
+/// `data-scale` and `data-mu-l`, the chord between the driven point's
+/// extremes is the line of class `chord`.
+pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
+    let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let y = &s.syn;
     let k = &y.construction;
     let xy = |v: Vec2| (v.x, v.y);
@@ -126,7 +137,7 @@ pub fn construction(s: &Solved) -> String {
     // 35 % of the size beyond the mechanism
     let margin = 0.35 * size;
     let view: Box4 = (b.0 - margin, b.1 + margin, b.2 - margin, b.3 + margin);
-    let mut world = (b.0 - 0.08 * size, b.1 + 0.08 * size, b.2 - 0.08 * size, b.3 + 0.08 * size);
+    let mut world = (b.0 - 0.05 * size, b.1 + 0.05 * size, b.2 - 0.05 * size, b.3 + 0.05 * size);
     if let Some(l) = &k.locus {
         for i in 0..720 {
             let a = i as f64 * std::f64::consts::TAU / 720.0;
@@ -146,33 +157,57 @@ pub fn construction(s: &Solved) -> String {
             }
         }
     }
-    let mut c = Canvas::new(297.0, 210.0);
-    let scale = c.fit(world, (15.0, 22.0, 267.0, 160.0));
-    let txt = 3.5;
+    let (w, h) = slot_mm(Slot::Small, sheet);
+    let mut c = Canvas::new(w, h);
+    // the paper box left for the drawing: under the title and the scale,
+    // over the legend (three rows)
+    let (top, bottom, side) = (16.0, 17.0, 6.0);
+    let (aw, ah) = (w - 2.0 * side, h - top - bottom);
+    let (ww, wh) = ((world.1 - world.0) * 1000.0, (world.3 - world.2) * 1000.0);
+    let scale = match (standard_scale(ww, aw), standard_scale(wh, ah)) {
+        (Some(a), Some(b)) => {
+            if a.factor <= b.factor {
+                a
+            } else {
+                b
+            }
+        }
+        (Some(a), None) | (None, Some(a)) => a,
+        (None, None) => Scale { factor: 1.0, text: "1:1" },
+    };
+    let k_mm = scale.factor * 1000.0; // paper mm per m
+    let ox = side + 0.5 * (aw - ww * scale.factor) - k_mm * world.0;
+    let oy = bottom + 0.5 * (ah - wh * scale.factor) - k_mm * world.2;
+    c.set_transform(k_mm, (ox, oy));
+    c.root_attr("data-scale", scale.text);
+    c.root_attr("data-mu-l", &format!("{}", 0.001 / scale.factor));
     let function = y.kind == Kind::FunctionGeneration;
-    c.text_paper(
-        (148.5, 10.0),
-        &if function {
-            format!(
-                "Synthesis of the function generator: the mechanism at the {} given positions (μl = {:.5} m/mm)",
-                shown.len(),
-                1.0 / scale
-            )
-        } else {
-            format!(
-                "Synthesis of the {}: construction (μl = {:.5} m/mm), K = {:.4}, θ = {:.3}°",
-                s.spec.kind,
-                1.0 / scale,
-                y.k,
-                y.theta.to_degrees()
-            )
-        },
-        4.5,
-        Anchor::Middle,
-        "#000",
-    );
+    let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
+    let title = if function { wd("title_function") } else { wd("title") };
+    c.rich_paper((0.5 * w, 6.0), &title, h_title, Anchor::Middle, "#000");
+    let sub = if function {
+        format!(
+            "{} {},   μ_l = {} {}",
+            word(lang, "common.scale"),
+            scale.text,
+            mu_text(0.001 / scale.factor, lang),
+            wd("m_per_mm")
+        )
+    } else {
+        format!(
+            "{} {},   μ_l = {} {},   K = {},   θ = {}°",
+            word(lang, "common.scale"),
+            scale.text,
+            mu_text(0.001 / scale.factor, lang),
+            wd("m_per_mm"),
+            num(y.k, 4, lang),
+            num(y.theta.to_degrees(), 2, lang)
+        )
+    };
+    c.rich_paper((0.5 * w, 12.0), &sub, H_SMALL + 0.5, Anchor::Middle, "#000");
     let clip = (world.0, world.1, world.2, world.3);
-    // the circle seen at 2θ (thin dashed), its arc of pivots seen at θ (green)
+    // ---- the lines first (the labels keep clear of them) ----
+    let mut labels: Vec<((f64, f64), String, &'static str)> = Vec::new();
     if let Some(l) = &k.locus {
         clipped_arc(
             &mut c,
@@ -198,43 +233,16 @@ pub fn construction(s: &Solved) -> String {
             c.dot(xy(l.center), 0.8, GREEN);
             let mid = (k.extremes[0] + k.extremes[1]) * 0.5;
             c.line(xy(l.center), xy(mid), Style::AXIS.colored(GREEN));
-            // the label on the far side of the centre from the chord
-            let off = l.center - mid;
-            let off = if off.hypot() > 0.0 {
-                off * (1.0 / off.hypot())
-            } else {
-                Vec2::new(0.0, 1.0)
-            };
-            c.text_colored(
-                xy(l.center + off * (4.0 / scale) + Vec2::new(0.0, -1.2 / scale)),
-                &format!("O* (2θ = {:.2}°)", 2.0 * y.theta.to_degrees()),
-                txt,
-                Anchor::Middle,
+            labels.push((
+                xy(l.center),
+                format!("O^* (2θ = {}°)", num(2.0 * y.theta.to_degrees(), 2, lang)),
                 GREEN,
-            );
-        }
-        // label the locus at the middle of its arc
-        let am = l.arc_start + 0.5 * l.arc_sweep;
-        let pm = l.center + Vec2::new(am.cos(), am.sin()) * l.radius;
-        if inside(clip, pm) {
-            c.text_colored(
-                xy(pm + Vec2::new(am.cos(), am.sin()) * (3.0 / scale)),
-                "locus of crank pivots (chord seen at θ)",
-                txt * 0.85,
-                if am.cos() >= 0.0 { Anchor::Start } else { Anchor::End },
-                GREEN,
-            );
+            ));
         }
     }
-    // other construction lines
-    for (name, p, q) in &k.lines {
+    for (_, p, q) in &k.lines {
         c.line(xy(*p), xy(*q), Style::AXIS.colored(GREY));
-        let m = *p + (*q - *p) * 0.2;
-        if inside(clip, m) {
-            c.text_colored(xy(m + Vec2::new(0.0, 1.5 / scale)), name, txt * 0.8, Anchor::Middle, GREY);
-        }
     }
-    // the mechanism at both dead positions
     let colors = [BLUE, RED];
     let last = shown.len().saturating_sub(1);
     for (i, pos) in shown.iter().enumerate() {
@@ -254,95 +262,80 @@ pub fn construction(s: &Solved) -> String {
         }
         for l in &y.def.links {
             for (n, _) in &l.points {
-                if let Some(p) = at(n) {
-                    if !y.frame.iter().any(|f| &f.0 == n) {
-                        c.joint(xy(p), 0.8);
-                    }
+                if let Some(p) = at(n)
+                    && !y.frame.iter().any(|f| &f.0 == n)
+                {
+                    c.joint(xy(p), 0.8);
+                    c.reserve_point(xy(p), 1.0);
                 }
             }
         }
     }
-    // chord between the extremes, rays from the pivot
-    c.line(xy(k.extremes[0]), xy(k.extremes[1]), Style::THIN);
+    // the chord between the extremes (its drawn length is the stroke × scale)
+    let (pa, pb) = (
+        c.to_paper(k.extremes[0].x, k.extremes[0].y),
+        c.to_paper(k.extremes[1].x, k.extremes[1].y),
+    );
+    c.raw(&format!(
+        "<line class=\"chord\" x1=\"{:.4}\" y1=\"{:.4}\" x2=\"{:.4}\" y2=\"{:.4}\" stroke=\"#000\" stroke-width=\"0.35\"/>",
+        pa.0, pa.1, pb.0, pb.1
+    ));
+    c.reserve_segment(pa, pb);
     if !function {
         c.line(xy(k.pivot), xy(k.extremes[0]), Style::DASHED);
         c.line(xy(k.pivot), xy(k.extremes[1]), Style::DASHED);
-    }
-    for (i, p) in k.extremes.iter().enumerate() {
-        let other = k.extremes[1 - i];
-        let away = (*p - other) * (1.0 / (*p - other).hypot().max(1e-12));
-        c.text_colored(
-            xy(*p + away * (3.0 / scale) + Vec2::new(0.0, -1.2 / scale)),
-            &format!("{}{}", k.point, if i == 0 { "′" } else { "″" }),
-            txt,
-            if away.x >= 0.0 { Anchor::Start } else { Anchor::End },
-            colors[i],
-        );
     }
     // θ between the rays at the pivot
     let r0 = k.extremes[0] - k.pivot;
     let r1 = k.extremes[1] - k.pivot;
     let (n0, n1) = (r0.hypot(), r1.hypot());
     if n0 > 0.0 && n1 > 0.0 && y.theta > 0.0 && k.locus.is_some() {
-        // the arc of θ at the pivot, the label beyond it on the bisector
         let rr = 0.3 * n0.min(n1);
         let (a0, a1) = (r0.atan2(), r1.atan2());
         let d = tmm_geom::angle::diff(a0, a1);
         c.arc(xy(k.pivot), rr, a0, a0 + d, Style::THIN);
         let am = a0 + 0.5 * d;
-        let at = k.pivot + Vec2::new(am.cos(), am.sin()) * (rr + 2.0 / scale);
-        c.text(
-            xy(at),
-            &format!("θ = {:.2}°", y.theta.to_degrees()),
-            txt * 0.85,
-            if am.cos() >= 0.0 { Anchor::Start } else { Anchor::End },
-        );
+        labels.push((xy(k.pivot + Vec2::new(am.cos(), am.sin()) * rr), "θ".to_string(), "#000"));
     }
-    for (n, p) in &y.frame {
+    for (_, p) in &y.frame {
         c.fixed_pivot(xy(*p), 1.2);
-        let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
-        let label = if chosen { format!("{n} (chosen crank pivot)") } else { n.clone() };
-        c.text_colored(
-            xy(*p + Vec2::new(2.2 / scale, 1.6 / scale)),
-            &label,
-            txt,
-            Anchor::Start,
-            if chosen { RED } else { "#000000" },
-        );
+        c.reserve_point(xy(*p), 1.5);
     }
     c.dot(xy(k.pivot), 1.0, RED);
-    // legend
-    let leg = [
-        (
-            BLUE,
-            if function {
-                "the first given position"
-            } else {
-                "extreme position ′ (start of the working stroke)"
-            },
-        ),
-        (
-            RED,
-            if function {
-                "the last given position"
-            } else {
-                "extreme position ″"
-            },
-        ),
-        (GREEN, "circle seen at 2θ from O*, arc of pivots"),
+    // ---- then the labels, each placed clear of the lines and the others ----
+    for (i, p) in k.extremes.iter().enumerate() {
+        labels.push((xy(*p), format!("{}{}", k.point, if i == 0 { "′" } else { "″" }), colors[i]));
+    }
+    for (n, p) in &y.frame {
+        let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
+        labels.push((xy(*p), n.clone(), if chosen { RED } else { "#000" }));
+    }
+    for (at, text, col) in &labels {
+        c.label(*at, text, H_LABEL, col);
+    }
+    // the legend under the drawing
+    let mut leg = vec![
+        (BLUE, if function { wd("first_position") } else { wd("extreme_first") }),
+        (RED, if function { wd("last_position") } else { wd("extreme_second") }),
     ];
-    let shown = if k.locus.is_some() { 3 } else { 2 };
-    for (i, (col, t)) in leg.iter().take(shown).enumerate() {
-        let yy = 192.0 + 5.0 * i as f64;
-        c.line_paper((15.0, yy - 1.0), (25.0, yy - 1.0), Style::THICK.colored(col).widened(0.5));
-        c.text_paper((27.0, yy), t, 3.2, Anchor::Start, "#000");
+    if k.locus.is_some() {
+        leg.push((GREEN, wd("locus")));
+    }
+    if !function {
+        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot"));
+    }
+    for (i, (col, t)) in leg.iter().enumerate() {
+        let yy = h - bottom + 5.0 + 4.5 * i as f64;
+        c.line_paper((side, yy - 0.9), (side + 8.0, yy - 0.9), Style::THICK.colored(col).widened(0.5));
+        c.rich_paper((side + 10.0, yy), t, H_SMALL, Anchor::Start, "#000");
     }
     c.finish()
 }
 
 /// The pressure angle at each dyad's inner joint over the cycle, from the
 /// start of the working stroke, by the linkage core.
-pub fn pressure(s: &Solved) -> Result<String, Error> {
+pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String, Error> {
+    let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let m = Mechanism::new(&s.syn.def).map_err(|e| Error::input("synthesis", e))?;
     let cy = Cycle::new(&m, Working::Slower).map_err(|e| Error::input("synthesis", e))?;
     let mut sol = m.solution();
@@ -363,7 +356,7 @@ pub fn pressure(s: &Solved) -> Result<String, Error> {
     let top = curves.iter().flat_map(|c| c.1.iter().map(|p| p.1)).fold(0.0_f64, f64::max);
     let w = cy.working_angle.to_degrees();
     let marker = [(w, 0.0), (w, top)];
-    let names: Vec<String> = curves.iter().map(|c| format!("ϑ at {}", m.points[c.0].name)).collect();
+    let names: Vec<String> = curves.iter().map(|c| format!("ϑ {}", m.points[c.0].name)).collect();
     let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
     let mut series: Vec<Series<'_>> = curves
         .iter()
@@ -374,20 +367,20 @@ pub fn pressure(s: &Solved) -> Result<String, Error> {
             color: cols[i % cols.len()],
         })
         .collect();
+    let end_name = wd("end_working");
     series.push(Series {
-        name: "end of the working stroke",
+        name: &end_name,
         points: &marker,
         color: GREY,
     });
-    Ok(plot(
-        &format!(
-            "Pressure angles over the cycle (working stroke 0…{:.1}°)",
-            cy.working_angle.to_degrees()
-        ),
-        "crank rotation from the start of the working stroke, °",
+    let (w, h) = slot_mm(Slot::Diagram, sheet);
+    Ok(plot_in(
+        lang,
+        &format!("{} (0…{}°)", wd("title_pressure"), num(cy.working_angle.to_degrees(), 1, lang)),
+        &wd("axis_crank"),
         "ϑ, °",
         &series,
-        297.0,
-        180.0,
+        w,
+        h,
     ))
 }

@@ -152,8 +152,8 @@ pub fn variants_json(spec: &Spec, v: &[Variant]) -> serde_json::Value {
 }
 
 /// The drawings: the construction and the pressure-angle curve.
-pub fn drawings(s: &Solved) -> Result<Documents, Error> {
-    draw::drawings(s)
+pub fn drawings(s: &Solved, lang: crate::project::Language, sheet: crate::project::SheetFormat) -> Result<Documents, Error> {
+    draw::drawings(s, lang, sheet)
 }
 
 /// The given `[linkage]` against the synthesis: its K and stroke by the
@@ -179,7 +179,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let cmp = if has_linkage { compare(task)? } else { None };
     let text = text_report(&s, vars.as_deref(), cmp.as_ref());
     let json = json_document(&s, vars.as_deref(), cmp.as_ref());
-    let mut docs = drawings(&s)?;
+    let mut docs = drawings(&s, task.lang, task.sheet)?;
     docs.add_json("synthesis/synthesis.json", &json)?;
     docs.add_text("synthesis/linkage.toml", s.linkage.clone())?;
     docs.add_text("synthesis/synthesis.txt", text.clone())?;
