@@ -286,18 +286,3 @@ fn labels_do_not_overlap() {
         }
     }
 }
-
-#[test]
-#[ignore]
-fn dump() {
-    for (ex, sheet, lang) in [
-        ("cam-seed-001-roller.toml", "A1", "ru"),
-        ("cam-seed-001-flat.toml", "A2", "en"),
-        ("cam-oscillating-roller.toml", "A1", "uk"),
-    ] {
-        let r = run(ex, sheet, lang);
-        for f in FILES {
-            std::fs::write(format!("/tmp/camd/{}-{f}", &ex[4..ex.len() - 5]), svg(&r, f)).unwrap();
-        }
-    }
-}

@@ -79,6 +79,12 @@ pub fn phases(task: &CamTask, lang: Language) -> (Vec<f64>, Vec<String>) {
 
 /// The scale factor of the cam angle, ° per mm, for a panel `w` mm wide:
 /// 360° over the width less the margins, rounded up to a round μ.
+///
+/// ```
+/// use tmm_report::cam::diagrams::mu_phi;
+/// assert_eq!(mu_phi(260.0), 2.0); // A1: 360° over 224 mm → 2 °/mm, 180 mm drawn
+/// assert_eq!(mu_phi(180.0), 2.5); // A2: 360° over 144 mm exactly
+/// ```
 pub fn mu_phi(w: f64) -> f64 {
     round_mu(360.0 / (w - LEFT - RIGHT))
 }
