@@ -15,8 +15,15 @@ fn constant_acceleration_jumps_are_marked_as_jerk_impulses() {
     let labels: Vec<f64> = svg
         .lines()
         .filter_map(|l| {
-            let t = &l[l.find('>')? + 1..l.find("</text>")?];
-            t.strip_prefix("Δa = ")?.strip_suffix(" m/s²")?.parse().ok()
+            // a label's words sit in its last tspan: `Δa = −1317,175 м/с²`
+            let t = &l[..l.find("</tspan></text>")?];
+            let t = &t[t.rfind('>')? + 1..];
+            t.strip_prefix("Δa = ")?
+                .strip_suffix(" м/с²")?
+                .replace('−', "-")
+                .replace(',', ".")
+                .parse()
+                .ok()
         })
         .collect();
     // Constant acceleration a1 over u·β, −a2 over the rest: continuity of

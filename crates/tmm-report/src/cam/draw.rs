@@ -11,220 +11,162 @@ use tmm_geom::Vec2;
 use tmm_cams::program::{JumpKind, Motion, PhaseKind};
 
 use crate::labels::{DASH_DOT, H_LABEL, Placer, finish, num};
-use crate::paper::{Slot, slot_mm, standard_scale};
+use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
 use crate::project::{Language, SheetFormat};
-use crate::svg::{Anchor, Canvas, Impulse, Series, Style, plot, plot_with_impulses};
+use crate::svg::{Anchor, Canvas, Style};
+
+use super::diagrams::{self, Arrow, Level, Panel};
 use crate::words::word;
 
-/// Put several whole SVG documents one under another in one page.
-fn stack(docs: &[String], w: f64, h: f64) -> String {
-    let mut body = String::new();
-    for (i, d) in docs.iter().enumerate() {
-        let inner = d.split_once("?>").map_or(d.as_str(), |x| x.1).trim();
-        // nested documents in user units (the parent's viewBox is in mm)
-        let inner = inner
-            .replacen("<svg ", &format!("<svg x=\"0\" y=\"{}\" ", i as f64 * h), 1)
-            .replacen(&format!("width=\"{w}mm\""), &format!("width=\"{w}\""), 1)
-            .replacen(&format!("height=\"{h}mm\""), &format!("height=\"{h}\""), 1);
-        body.push_str(&inner);
-        body.push('\n');
+/// The units of the follower's quantities in `lang`: (s, ds/dφ and
+/// d²s/dφ², v, a, j) — mm and m/s… for a translating follower, degrees and
+/// rad/s… for an oscillating one.
+fn units(task: &CamTask, lang: Language) -> [String; 5] {
+    let u = |k: &str| word(lang, k).to_string();
+    if task.follower.oscillating() {
+        [
+            u("cam.unit_deg"),
+            u("cam.unit_deg"),
+            u("cam.unit_radps"),
+            u("cam.unit_radps2"),
+            u("cam.unit_radps3"),
+        ]
+    } else {
+        [u("cam.mm"), u("cam.mm"), u("cam.unit_mps"), u("cam.unit_mps2"), u("cam.unit_mps3")]
     }
-    format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{th}mm\" viewBox=\"0 0 {w} {th}\">\n{body}</svg>\n",
-        th = h * docs.len() as f64
-    )
 }
 
-/// s, ds/dφ, d²s/dφ² over the cam angle (degrees; mm or degrees).
-pub fn analogs(task: &CamTask) -> String {
+/// s, ds/dφ, d²s/dφ² over the cam angle 0 … 360° (mm, or degrees for an
+/// oscillating follower), one `Slot::Diagram` panel each, words in `lang`.
+pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
     let osc = task.follower.oscillating();
     let k = if osc { 180.0 / std::f64::consts::PI } else { 1e3 };
-    let u = if osc { "deg" } else { "mm" };
+    let [su, au, ..] = units(task, lang);
     // one closed turn with both sides of every jump, ending at 360° with the
     // last phase's value (no false spike at the wrap)
     let diag = task.program.diagram(720);
     let pts = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> { diag.iter().map(|(phi, m)| (phi.to_degrees(), f(m))).collect() };
-    let s = pts(&|m| m.s * k);
-    let v = pts(&|m| m.v * k);
-    let a = pts(&|m| m.a * k);
-    let (w, h) = (200.0, 80.0);
-    stack(
+    let panel = |key: &str, sym: &str, mu_sym: &str, unit: &str, pts: Vec<(f64, f64)>| Panel {
+        title: word(lang, key).to_string(),
+        sym: sym.to_string(),
+        mu_sym: mu_sym.to_string(),
+        unit: unit.to_string(),
+        pts,
+        arrows: Vec::new(),
+        levels: Vec::new(),
+    };
+    diagrams::draw(
+        task,
         &[
-            plot(
-                "Displacement s(φ)",
-                "cam angle φ, deg",
-                &format!("s, {u}"),
-                &[Series {
-                    name: "s",
-                    points: &s,
-                    color: "#1f4e9c",
-                }],
-                w,
-                h,
-            ),
-            plot(
-                "Velocity analog ds/dφ",
-                "cam angle φ, deg",
-                &format!("ds/dφ, {u}"),
-                &[Series {
-                    name: "ds/dφ",
-                    points: &v,
-                    color: "#2e7d32",
-                }],
-                w,
-                h,
-            ),
-            plot(
-                "Acceleration analog d²s/dφ²",
-                "cam angle φ, deg",
-                &format!("d²s/dφ², {u}"),
-                &[Series {
-                    name: "d²s/dφ²",
-                    points: &a,
-                    color: "#c62828",
-                }],
-                w,
-                h,
-            ),
+            panel("cam.diagram_s", "s", "s", &su, pts(&|m| m.s * k)),
+            panel("cam.diagram_ds", "ds/dφ", "{ds/dφ}", &au, pts(&|m| m.v * k)),
+            panel("cam.diagram_dds", "d²s/dφ²", "{d²s/dφ²}", &au, pts(&|m| m.a * k)),
         ],
-        w,
-        h,
+        lang,
+        sheet,
+        None,
     )
 }
 
-/// s, v, a, jerk over time for the cam's ω.
-pub fn motion(task: &CamTask) -> String {
+/// s, v, a and the jerk j for the cam's ω over the cam angle 0 … 360° (the
+/// time scale μ_t written beside μ_φ), the impacts as arrows: a jump of
+/// velocity is an impulse of acceleration (rigid impact), a jump of
+/// acceleration an impulse of jerk (soft impact), as the course marks them.
+pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
     let osc = task.follower.oscillating();
     let w = task.omega;
     let diag = task.program.diagram(720);
-    let ms = |phi: f64| phi / w * 1e3;
-    let pts = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> { diag.iter().map(|(phi, m)| (ms(*phi), f(m))).collect() };
-    let s = pts(&|m| m.s * if osc { 1.0 } else { 1e3 });
+    let pts = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> { diag.iter().map(|(phi, m)| (phi.to_degrees(), f(m))).collect() };
+    let [su, _, vu, au, ju] = units(task, lang);
+    let s = pts(&|m| m.s * if osc { 180.0 / std::f64::consts::PI } else { 1e3 });
     let v = pts(&|m| m.v * w);
     let a = pts(&|m| m.a * w * w);
     let j = pts(&|m| m.j * w * w * w);
-    let (su, vu, au, ju) = if osc {
-        ("rad", "rad/s", "rad/s²", "rad/s³")
-    } else {
-        ("mm", "m/s", "m/s²", "m/s³")
-    };
-    // a jump of velocity is an impulse of acceleration (rigid impact), a jump
-    // of acceleration an impulse of jerk (soft impact): marked as the course does
     let jumps = task.program.jumps();
-    let impulses = |kind: JumpKind, scale: f64, unit: &str| -> Vec<Impulse> {
+    let arrows = |kind: JumpKind, scale: f64, unit: &str| -> Vec<Arrow> {
         jumps
             .iter()
             .filter(|x| x.kind == kind)
-            .map(|x| Impulse {
-                x: ms(x.phi),
-                weight: x.size(),
+            .map(|x| Arrow {
+                phi_deg: x.phi.to_degrees(),
+                sign: x.size(),
                 label: format!(
-                    "{} = {:+.3} {unit}",
+                    "{} = {} {unit}",
                     if kind == JumpKind::Velocity { "Δv" } else { "Δa" },
-                    x.size() * scale
+                    signed3(lang, x.size() * scale)
                 ),
             })
             .collect()
     };
-    let a_imp = impulses(JumpKind::Velocity, w, vu);
-    let j_imp = impulses(JumpKind::Acceleration, w * w, au);
-    let (pw, ph) = (200.0, 70.0);
-    stack(
+    let panel = |key: &str, sym: &str, unit: &str, pts: Vec<(f64, f64)>, arrows: Vec<Arrow>| Panel {
+        title: word(lang, key).to_string(),
+        sym: sym.to_string(),
+        mu_sym: sym.to_string(),
+        unit: unit.to_string(),
+        pts,
+        arrows,
+        levels: Vec::new(),
+    };
+    diagrams::draw(
+        task,
         &[
-            plot(
-                "Follower displacement",
-                "time t, ms",
-                &format!("s, {su}"),
-                &[Series {
-                    name: "s",
-                    points: &s,
-                    color: "#1f4e9c",
-                }],
-                pw,
-                ph,
-            ),
-            plot(
-                "Follower velocity",
-                "time t, ms",
-                &format!("v, {vu}"),
-                &[Series {
-                    name: "v",
-                    points: &v,
-                    color: "#2e7d32",
-                }],
-                pw,
-                ph,
-            ),
-            plot_with_impulses(
-                "Follower acceleration (arrows: impulses where the velocity jumps)",
-                "time t, ms",
-                &format!("a, {au}"),
-                &[Series {
-                    name: "a",
-                    points: &a,
-                    color: "#c62828",
-                }],
-                &a_imp,
-                pw,
-                ph,
-            ),
-            plot_with_impulses(
-                "Follower jerk (arrows: impulses where the acceleration jumps)",
-                "time t, ms",
-                &format!("j, {ju}"),
-                &[Series {
-                    name: "j",
-                    points: &j,
-                    color: "#6a1b9a",
-                }],
-                &j_imp,
-                pw,
-                ph,
-            ),
+            panel("cam.diagram_s", "s", &su, s, Vec::new()),
+            panel("cam.diagram_v", "v", &vu, v, Vec::new()),
+            panel("cam.diagram_a", "a", &au, a, arrows(JumpKind::Velocity, w, &vu)),
+            panel("cam.diagram_j", "j", &ju, j, arrows(JumpKind::Acceleration, w * w, &au)),
         ],
-        pw,
-        ph,
+        lang,
+        sheet,
+        Some(w),
     )
 }
 
-/// Pressure angle over the cycle with the limits.
-pub fn pressure(task: &CamTask, d: &CamDesign) -> String {
+/// A signed value with three decimals and the sign written (`+2,600`).
+fn signed3(lang: Language, v: f64) -> String {
+    let t = num(lang, v.abs(), 3);
+    if v < 0.0 { format!("−{t}") } else { format!("+{t}") }
+}
+
+/// The pressure angle ϑ over the cam angle 0 … 360° (degrees) with the
+/// allowed values on the rise and the return as dashed levels.
+pub fn pressure(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
     let p = &d.profile;
     let th: Vec<(f64, f64)> = (0..p.phi.len())
         .map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees()))
         .chain([(360.0, p.pressure[0].to_degrees())])
         .collect();
-    let lr = [(0.0, task.limits.rise.to_degrees()), (360.0, task.limits.rise.to_degrees())];
-    let lt = [(0.0, task.limits.ret.to_degrees()), (360.0, task.limits.ret.to_degrees())];
-    let mut series = vec![Series {
-        name: "ϑ",
-        points: &th,
-        color: "#1f4e9c",
-    }];
+    let deg = word(lang, "cam.unit_deg");
+    let mut levels = Vec::new();
     if !d.mechanism.is_flat() {
-        series.push(Series {
-            name: "allowed, rise",
-            points: &lr,
-            color: "#c62828",
-        });
-        series.push(Series {
-            name: "allowed, return",
-            points: &lt,
-            color: "#ef6c00",
-        });
+        for (v, key) in [(task.limits.rise, "cam.allowed_rise"), (task.limits.ret, "cam.allowed_return")] {
+            levels.push(Level {
+                value: v.to_degrees(),
+                label: format!("{} = {}{deg}", word(lang, key), num(lang, v.to_degrees(), 0)),
+            });
+        }
     }
-    plot("Pressure angle over the cycle", "cam angle φ, deg", "ϑ, deg", &series, 200.0, 90.0)
+    let panel = Panel {
+        title: word(lang, "cam.pressure_title").to_string(),
+        sym: "ϑ".to_string(),
+        mu_sym: "ϑ".to_string(),
+        unit: deg.to_string(),
+        pts: th,
+        arrows: Vec::new(),
+        levels,
+    };
+    diagrams::draw(task, &[panel], lang, sheet, None)
 }
 
 /// The s–ds/dφ diagram (translating roller) or its oscillating counterpart:
 /// the curve of points K, the admissible region of the cam centre, the
 /// chosen centre O and the lowest roller centre B₀. Flat faces get Geronimus'
 /// s(d²s/dφ²) diagram instead. Coordinates in mm.
-pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
+pub fn sizing_diagram(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
     let sigma = task.rotation.sign();
     let prog = &task.program;
     let n = d.profile.phi.len();
-    let mut c = Canvas::new(200.0, 200.0);
+    let (pw, ph) = slot_mm(Slot::Plan, sheet);
+    let mut c = Canvas::new(pw, ph);
     let region_style = Style {
         width: 0.2,
         color: "#2e7d32",
@@ -245,7 +187,7 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
                 Some(region),
                 (-e * 1e3, -s0 * 1e3),
                 (0.0, 0.0),
-                "s–ds/dφ diagram: admissible region of the cam centre",
+                word(lang, "cam.sizing_translating"),
             )
         }
         Mechanism::OscillatingRoller { pivot, arm, kappa, .. } => {
@@ -266,19 +208,13 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
                 Some(region),
                 (-pivot.x * 1e3, -pivot.y * 1e3),
                 (arm * 1e3, 0.0),
-                "Points K (arm ψ′ laid off along the arm) and the admissible region of the cam centre",
+                word(lang, "cam.sizing_oscillating"),
             )
         }
         _ => {
             // Geronimus: s against d²s/dφ², r₀ read on the s axis
             let curve = (0..n).map(|i| (d.profile.motion[i].a * 1e3, d.profile.motion[i].s * 1e3)).collect();
-            (
-                curve,
-                None,
-                (0.0, -d.r0 * 1e3),
-                (0.0, 0.0),
-                "Geronimus' diagram s(d²s/dφ²): base circle from convexity",
-            )
+            (curve, None, (0.0, -d.r0 * 1e3), (0.0, 0.0), word(lang, "cam.sizing_flat"))
         }
     };
     // world box: the curve, the centre, B₀ (and the pivot at the origin of an
@@ -298,7 +234,17 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
     // show the region below the centre too
     let extra = if region.is_some() { 0.35 * span } else { 0.0 };
     let world = (x0 - pad, x1 + pad, y0 - pad - extra, y1 + pad);
-    c.fit(world, (10.0, 10.0, 180.0, 170.0));
+    // one round μ for both axes (mm of the diagram per mm of paper)
+    let (top, margin) = (20.0, 8.0);
+    let mu = round_mu(((world.1 - world.0) / (pw - 2.0 * margin)).max((world.3 - world.2) / (ph - top - margin)));
+    c.set_transform(
+        1.0 / mu,
+        (
+            0.5 * pw - 0.5 * (world.0 + world.1) / mu,
+            0.5 * (ph - top) - 0.5 * (world.2 + world.3) / mu,
+        ),
+    );
+    c.root_attr("data-mu", &format!("{mu}"));
     if let Some(mut r) = region {
         // the boundary rays of the region, across the view (translating follower:
         // at most four lines, each tangent to the diagram at the allowed angle)
@@ -357,9 +303,10 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
         ) {
             c.line((p.x, p.y), (q.x, q.y), Style::DASHED.colored("#2e7d32"));
         }
-        c.text_colored(
-            (0.0, m),
-            &format!("  ρmin = {:.1} mm", d.rho_min_convex * 1e3),
+        let q = c.to_paper(0.0, m);
+        c.rich_paper(
+            q,
+            &format!("  ρ_min = {} {}", num(lang, d.rho_min_convex * 1e3, 1), word(lang, "cam.mm")),
             3.0,
             Anchor::Start,
             "#2e7d32",
@@ -371,8 +318,20 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign) -> String {
     c.text_colored((centre.0, centre.1), "  O", 3.5, Anchor::Start, "#c62828");
     c.dot(b0, 0.8, "#000000");
     c.text((b0.0, b0.1), "  B₀", 3.5, Anchor::Start);
-    c.text_paper((100.0, 8.0), title, 3.5, Anchor::Middle, "#000");
-    c.text_paper((100.0, 195.0), &format!("r0 = {:.3} mm", d.r0 * 1e3), 3.5, Anchor::Middle, "#000");
+    c.rich_paper((0.5 * pw, 7.0), title, H_LABEL + 1.5, Anchor::Middle, "#000");
+    c.rich_paper(
+        (0.5 * pw, 13.5),
+        &format!(
+            "μ_s = {} {},   r_0 = {} {}",
+            crate::svg::mu_text(mu * 1e-3, lang),
+            word(lang, "cam.m_per_mm"),
+            num(lang, d.r0 * 1e3, 2),
+            word(lang, "cam.mm")
+        ),
+        3.0,
+        Anchor::Middle,
+        "#000",
+    );
     c.finish()
 }
 

@@ -7,6 +7,7 @@
 //! | [`input`] | the section / options → a `CamTask`, located errors |
 //! | [`text`] | human tables |
 //! | [`json`] | the JSON document (SI, rad) |
+//! | [`diagrams`] | SVG: the motion diagrams over the cam angle, at round μ |
 //! | [`draw`] | SVG: diagrams, sizing diagram, the cam and follower |
 //! | [`cad`] | DXF and CSV of the working profile |
 
@@ -14,6 +15,7 @@
 // large by design and returned only on the cold path.
 
 pub mod cad;
+pub mod diagrams;
 pub mod draw;
 pub mod input;
 pub mod json;
@@ -40,10 +42,10 @@ pub fn solve(task: &CamTask, r0: Option<f64>, loc: &Locate<'_>) -> Result<CamDes
 /// (`"cam/"` gives `cam/cam.svg`, …).
 pub fn drawings(task: &CamTask, d: &CamDesign, dir: &str, docs: &mut Documents, lang: Language, sheet: SheetFormat) -> Result<(), Error> {
     docs.add_text(format!("{dir}cam.svg"), draw::cam(task, d, lang, sheet))?;
-    docs.add_text(format!("{dir}cam-analogs.svg"), draw::analogs(task))?;
-    docs.add_text(format!("{dir}cam-motion.svg"), draw::motion(task))?;
-    docs.add_text(format!("{dir}cam-pressure.svg"), draw::pressure(task, d))?;
-    docs.add_text(format!("{dir}cam-sizing.svg"), draw::sizing_diagram(task, d))?;
+    docs.add_text(format!("{dir}cam-analogs.svg"), draw::analogs(task, lang, sheet))?;
+    docs.add_text(format!("{dir}cam-motion.svg"), draw::motion(task, lang, sheet))?;
+    docs.add_text(format!("{dir}cam-pressure.svg"), draw::pressure(task, d, lang, sheet))?;
+    docs.add_text(format!("{dir}cam-sizing.svg"), draw::sizing_diagram(task, d, lang, sheet))?;
     Ok(())
 }
 

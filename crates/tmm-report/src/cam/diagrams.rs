@@ -1,0 +1,252 @@
+//! The cam's motion diagrams (диаграммы движения толкателя) as the course
+//! draws them: one panel per quantity over one turn of the cam, 0 … 360°,
+//! at round scale factors μ (written under each title), the phase
+//! boundaries φу, φдс, φв, φбс marked, the jumps kept as vertical steps and
+//! the impacts drawn as arrows; words in the project's language.
+//!
+//! Each panel is a `Slot::Diagram` box of the sheet; a file stacks its panels
+//! one under another. Every panel is a `<g class="diagram">` carrying its
+//! scale factors and the paper position of its axes (`data-mu-y`,
+//! `data-mu-phi`, `data-x0`, `data-y-zero`) so the drawing can be read back.
+
+use tmm_cams::design::CamTask;
+use tmm_cams::program::PhaseKind;
+
+use crate::labels::{H_LABEL, H_TITLE, Placer, finish};
+use crate::paper::{Slot, round_mu, slot_mm};
+use crate::project::{Language, SheetFormat};
+use crate::svg::{Canvas, Style, mu_text};
+use crate::words::word;
+
+/// Lettering of the scale lines and tick values (GOST 2.304: 2.5 mm).
+const H_SMALL: f64 = 2.5;
+
+/// An impact (удар) at a jump: an arrow at the cam angle `phi_deg`, up when
+/// `sign` > 0, with its label.
+pub struct Arrow {
+    /// Cam angle, degrees.
+    pub phi_deg: f64,
+    /// The sign of the jump.
+    pub sign: f64,
+    /// `Δv = 2,6 м/с`.
+    pub label: String,
+}
+
+/// A horizontal line at a value (an allowed pressure angle) with its label.
+pub struct Level {
+    /// The value in the panel's unit.
+    pub value: f64,
+    /// What it is.
+    pub label: String,
+}
+
+/// One diagram: a quantity over the cam angle.
+pub struct Panel {
+    /// The title (translated).
+    pub title: String,
+    /// The quantity's symbol as drawn (`s`, `ds/dφ`, `ϑ`).
+    pub sym: String,
+    /// The symbol in the scale factor's subscript (`s`, `v`).
+    pub mu_sym: String,
+    /// The unit (translated).
+    pub unit: String,
+    /// (cam angle in degrees 0 … 360, value); a non-finite value lifts the pen.
+    pub pts: Vec<(f64, f64)>,
+    /// Impacts drawn as arrows.
+    pub arrows: Vec<Arrow>,
+    /// Horizontal levels (allowed values).
+    pub levels: Vec<Level>,
+}
+
+/// The phase boundaries of the task in degrees (0, …, 360) and each phase's
+/// symbol (φу, φдс, φв, φбс in Russian).
+pub fn phases(task: &CamTask, lang: Language) -> (Vec<f64>, Vec<String>) {
+    let prog = &task.program;
+    let mut bounds = vec![0.0];
+    let mut names = Vec::new();
+    for (i, ph) in prog.phases().iter().enumerate() {
+        bounds.push((prog.start(i) + ph.angle).to_degrees());
+        let key = match ph.kind {
+            PhaseKind::Rise => "cam.phase_rise",
+            PhaseKind::Return => "cam.phase_return",
+            PhaseKind::Dwell if prog.level_before(i) > 0.5 * prog.stroke() => "cam.phase_far",
+            PhaseKind::Dwell => "cam.phase_near",
+        };
+        names.push(word(lang, key).to_string());
+    }
+    (bounds, names)
+}
+
+/// The scale factor of the cam angle, ° per mm, for a panel `w` mm wide:
+/// 360° over the width less the margins, rounded up to a round μ.
+///
+/// ```
+/// use tmm_report::cam::diagrams::mu_phi;
+/// assert_eq!(mu_phi(260.0), 2.0); // A1: 360° over 224 mm → 2 °/mm, 180 mm drawn
+/// assert_eq!(mu_phi(180.0), 2.5); // A2: 360° over 144 mm exactly
+/// ```
+pub fn mu_phi(w: f64) -> f64 {
+    round_mu(360.0 / (w - LEFT - RIGHT))
+}
+
+const LEFT: f64 = 24.0;
+const RIGHT: f64 = 12.0;
+const TOP: f64 = 24.0;
+const BOTTOM: f64 = 16.0;
+
+/// Draw `panels` one under another, each in a `Slot::Diagram` box of
+/// `sheet`; `omega` (rad/s) adds the time scale μ_t to the scale line.
+pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat, omega: Option<f64>) -> String {
+    let (w, ph) = slot_mm(Slot::Diagram, sheet);
+    let total = ph * panels.len().max(1) as f64;
+    let mut c = Canvas::new(w, total);
+    let mut lab = Placer::new(w, total);
+    let (bounds, names) = phases(task, lang);
+    let mu_p = mu_phi(w);
+    let per_mm = word(lang, "cam.per_mm");
+    let deg = word(lang, "cam.unit_deg");
+    for (k, p) in panels.iter().enumerate() {
+        let y_off = ph * k as f64;
+        let (mut ymin, mut ymax) = (0.0f64, 0.0f64);
+        for q in p.pts.iter().filter(|q| q.1.is_finite()) {
+            ymin = ymin.min(q.1);
+            ymax = ymax.max(q.1);
+        }
+        for l in &p.levels {
+            ymin = ymin.min(l.value);
+            ymax = ymax.max(l.value);
+        }
+        if ymax - ymin < 1e-300 {
+            ymax = ymin + 1.0;
+        }
+        let avail = ph - TOP - BOTTOM;
+        let mu_y = round_mu((ymax - ymin) / avail);
+        let used = (ymax - ymin) / mu_y;
+        let y_zero = y_off + TOP + 0.5 * (avail - used) + ymax / mu_y;
+        let map = |x: f64, y: f64| (LEFT + x / mu_p, y_zero - y / mu_y);
+        c.raw(&format!(
+            "<g class=\"diagram\" data-quantity=\"{}\" data-mu-y=\"{mu_y}\" data-mu-phi=\"{mu_p}\" data-x0=\"{LEFT}\" data-y-zero=\"{y_zero:.4}\">",
+            crate::svg::escape(&p.mu_sym)
+        ));
+        // the title and, under it, the scale factors
+        lab.put((0.5 * w, y_off + 6.0), &p.title, H_TITLE - 2.0, "#000");
+        let unit_per = if p.unit.contains('/') {
+            format!("({}){per_mm}", p.unit)
+        } else {
+            format!("{}{per_mm}", p.unit)
+        };
+        let mut scales = format!(
+            "μ_{} = {} {unit_per},   μ_φ = {} {deg}{per_mm}",
+            p.mu_sym,
+            mu_text(mu_y, lang),
+            mu_text(mu_p, lang)
+        );
+        if let Some(om) = omega {
+            let mu_t = mu_p.to_radians() / om * 1e3;
+            scales.push_str(&format!(
+                ",   μ_t = {} {}{per_mm}",
+                crate::labels::num(lang, mu_t, 4),
+                word(lang, "cam.unit_ms")
+            ));
+        }
+        lab.put((0.5 * w, y_off + 12.5), &scales, H_SMALL + 0.5, "#000");
+        // the axes
+        let (x0, yz) = map(0.0, 0.0);
+        let (x1, _) = map(360.0, 0.0);
+        let (_, ytop) = map(0.0, ymax);
+        let (_, ybot) = map(0.0, ymin);
+        c.arrow_paper((x0, yz), (x1 + 8.0, yz), Style::THIN, 3.0);
+        c.arrow_paper((x0, ybot.max(yz) + 1.0), (x0, ytop - 5.0), Style::THIN, 3.0);
+        lab.put_left((x0 + 2.5, ytop - 4.5), &format!("{}, {}", p.sym, p.unit), H_SMALL + 0.5, "#000");
+        lab.put((x1 + 9.0, yz + 3.5), "φ", H_LABEL, "#000");
+        // the y ticks every 10 mm at the round μ
+        let mut t = ((ymin / mu_y) / 10.0).ceil() as i64;
+        while (t as f64) * 10.0 * mu_y <= ymax + 1e-12 {
+            let v = t as f64 * 10.0 * mu_y;
+            let (_, yp) = map(0.0, v);
+            c.line_paper((x0 - 1.2, yp), (x0, yp), Style::THIN);
+            if t != 0 {
+                let txt = mu_text(v.abs(), lang);
+                let txt = if v < 0.0 { format!("−{txt}") } else { txt };
+                lab.put_left(
+                    (x0 - 2.0 - crate::labels::CHAR_WIDTH * H_SMALL * txt.chars().count() as f64, yp),
+                    &txt,
+                    H_SMALL,
+                    "#000",
+                );
+            }
+            t += 1;
+        }
+        // the phase boundaries: thin lines across the panel, the phases named
+        // under the plot
+        c.raw("<g class=\"phase-marks\">");
+        for &b in &bounds {
+            let (xp, _) = map(b, 0.0);
+            c.raw(&format!("<g class=\"phase-mark\" data-phi=\"{b}\">"));
+            c.line_paper((xp, ytop.min(yz) - 2.0), (xp, ybot.max(yz) + 2.0), Style::THIN.colored("#777777"));
+            c.end_group();
+        }
+        c.end_group();
+        let row = ybot.max(yz) + 5.5;
+        for (i, name) in names.iter().enumerate() {
+            let (xa, _) = map(bounds[i], 0.0);
+            let (xb, _) = map(bounds[i + 1], 0.0);
+            let xm = 0.5 * (xa + xb);
+            let full = format!("{name} = {}{deg}", crate::labels::num(lang, bounds[i + 1] - bounds[i], 0));
+            let cands = [(xm, row), (xm, row + 4.5)];
+            if lab.place(&cands, &full, H_SMALL + 0.5, "#000").is_none() {
+                lab.place(&cands, name, H_SMALL + 0.5, "#000");
+            }
+        }
+        // allowed levels, dashed
+        for l in &p.levels {
+            let (_, yl) = map(0.0, l.value);
+            c.line_paper((x0, yl), (x1, yl), Style::DASHED.colored("#c62828"));
+            let n = crate::labels::plain(&l.label).chars().count() as f64;
+            let wl = crate::labels::CHAR_WIDTH * H_SMALL * n;
+            let cands: Vec<(f64, f64)> = (0..12)
+                .flat_map(|j| {
+                    let x = x1 - 0.5 * wl - 8.0 * j as f64;
+                    [(x, yl - 2.2), (x, yl + 2.2)]
+                })
+                .collect();
+            lab.place(&cands, &l.label, H_SMALL, "#c62828");
+        }
+        // the curve, thick
+        let mut d = String::new();
+        let mut pen = false;
+        for &(x, y) in &p.pts {
+            if !(x.is_finite() && y.is_finite()) {
+                pen = false;
+                continue;
+            }
+            let (xp, yp) = map(x, y);
+            d.push_str(&format!("{}{xp:.3},{yp:.3} ", if pen { "L" } else { "M" }));
+            pen = true;
+        }
+        c.raw(&format!(
+            "<path class=\"curve\" d=\"{}\" stroke=\"#000\" stroke-width=\"0.7\" fill=\"none\"/>",
+            d.trim_end()
+        ));
+        // impacts: arrows from the axis, labels beside them
+        for a in &p.arrows {
+            let (xp, _) = map(a.phi_deg, 0.0);
+            let len = 9.0;
+            let tip = (xp, yz - a.sign.signum() * len);
+            c.arrow_paper((xp, yz), tip, Style::THIN.widened(0.35).colored("#c62828"), 2.5);
+            let n = crate::labels::plain(&a.label).chars().count() as f64;
+            let wl = crate::labels::CHAR_WIDTH * H_SMALL * n;
+            let cands: Vec<(f64, f64)> = [1.0, -1.0]
+                .iter()
+                .flat_map(|&s| {
+                    [0.0, 4.0, -4.0, 8.0, -8.0]
+                        .map(|dy| (xp + s * (0.5 * wl + 1.5), tip.1 + dy))
+                        .into_iter()
+                })
+                .collect();
+            lab.place(&cands, &a.label, H_SMALL, "#c62828");
+        }
+        c.end_group();
+    }
+    finish(c.finish(), &lab, None)
+}
