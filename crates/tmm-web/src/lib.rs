@@ -49,7 +49,7 @@ pub fn examples() -> String {
 /// becomes the page's state for the other calls.
 #[wasm_bindgen]
 pub fn analyse(name: &str, text: &str, lang: &str) -> String {
-    let (reply, page) = page::analyse_reply(name, text, lang);
+    let (reply, page) = PAGE.with(|s| page::analyse_reply_after(s.borrow().as_ref(), name, text, lang));
     if let Some(p) = page {
         PAGE.with(|s| *s.borrow_mut() = Some(p));
     }

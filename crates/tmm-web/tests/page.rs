@@ -140,3 +140,44 @@ fn a_picked_point_becomes_the_pairs_shifts() {
     assert!((x1 - 0.3).abs() < 1e-12 && (x2 - 0.6).abs() < 1e-12);
     assert!(a.x1.0 < 0.3 && 0.3 < a.x1.1);
 }
+
+/// Every number and every file of `a` equals that of `b`.
+fn same_run(a: &Page, b: &Page) {
+    assert_eq!(a.run.report, b.run.report);
+    let pa: Vec<_> = a.run.docs.iter().map(|d| (d.path.clone(), d.bytes.clone())).collect();
+    let pb: Vec<_> = b.run.docs.iter().map(|d| (d.path.clone(), d.bytes.clone())).collect();
+    assert_eq!(pa.len(), pb.len());
+    for (x, y) in pa.iter().zip(&pb) {
+        assert_eq!(x.0, y.0);
+        assert!(x.1 == y.1, "{} differs from a fresh run", x.0);
+    }
+}
+
+#[test]
+fn an_edit_reruns_only_the_sections_that_read_the_edited_table() {
+    let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
+    assert_eq!(p.rerun, ["synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam"]);
+    // the coupler: the linkage and everything that reads it
+    let coupler = DEFAULT_TASK.replacen("length = \"480 mm\"", "length = \"470 mm\"", 1);
+    assert_ne!(coupler, DEFAULT_TASK);
+    let q = Page::after(Some(&p), "t.toml", &coupler, None).unwrap();
+    assert_eq!(q.rerun, ["synthesis", "linkage", "forces", "dynamics"]);
+    assert_ne!(q.run.report["linkage"], p.run.report["linkage"]);
+    same_run(&q, &Page::new("t.toml", &coupler, None).unwrap());
+    // the gear's module: the gear only; the kept sections equal a fresh run
+    let at = coupler.find("[gear]").unwrap();
+    let gear = format!(
+        "{}{}",
+        &coupler[..at],
+        coupler[at..].replacen("module = \"5 mm\"", "module = \"6 mm\"", 1)
+    );
+    assert_ne!(gear, coupler);
+    let r = Page::after(Some(&q), "t.toml", &gear, None).unwrap();
+    assert_eq!(r.rerun, ["gear"]);
+    same_run(&r, &Page::new("t.toml", &gear, None).unwrap());
+    // another language redraws every section
+    let s = Page::after(Some(&r), "t.toml", &gear, Some(tmm_report::project::Language::En)).unwrap();
+    assert_eq!(s.rerun.len(), 7);
+    // a failed run leaves the kept outputs of the last good one usable
+    assert!(Page::after(Some(&r), "t.toml", &gear.replacen("470 mm", "-470 mm", 1), None).is_err());
+}

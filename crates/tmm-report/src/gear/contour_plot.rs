@@ -41,7 +41,7 @@ fn line_name(b: &Boundary, lang: Language) -> String {
     match *b {
         Boundary::Undercut(i) => format!("{} {i}", word(lang, "gear.undercut")),
         Boundary::Interference(i) => format!("{} {i}", word(lang, "gear.interference")),
-        Boundary::TipThickness(i, k) if k == 0.0 => format!("s_a{i} = 0"),
+        Boundary::TipThickness(i, 0.0) => format!("s_a{i} = 0"),
         Boundary::TipThickness(i, k) => format!("s_a{i} = {}m", n(k)),
         Boundary::ContactRatio(e) => format!("ε_α = {}", n(e)),
         Boundary::EqualSliding => "ϑ_1max = ϑ_2max".into(),

@@ -234,6 +234,23 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     }))
 }
 
+/// The velocity and acceleration plans (SVG) of the position `sol` solved
+/// at the crank angle `phi` (rad): the same drawings as `velocity-plan.svg`
+/// and `acceleration-plan.svg`, with nothing else of the section computed.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::DEFAULT_TASK, linkage};
+/// let l = linkage::load(&TaskSource::new("t.toml", DEFAULT_TASK)).unwrap().unwrap();
+/// let mut sol = l.mech.solution();
+/// l.mech.solve(1.0, &mut sol).unwrap();
+/// let (v, a) = linkage::plan_drawings(&l, &sol, 1.0, &TaskSource::new("t.toml", DEFAULT_TASK));
+/// assert!(v.starts_with("<?xml") || v.starts_with("<svg"));
+/// assert_ne!(v, a);
+/// ```
+pub fn plan_drawings(l: &Loaded, sol: &Solution, phi: f64, task: &TaskSource) -> (String, String) {
+    draw::plans_at(l, sol, phi, task)
+}
+
 /// The human report.
 pub fn text_report(l: &Loaded, a: &Analysis) -> String {
     text::report(l, a)
