@@ -140,6 +140,56 @@ pub fn run_section(name: &str, task: &TaskSource) -> Result<Option<SectionOutput
     }
 }
 
+/// A section's output in two stages: the tables and the JSON at once, the
+/// drawings (the section's SVG, DXF and CSV files) only when asked — for
+/// a caller that shows the numbers first and a drawing when it is looked
+/// at. `output` and the documents of `draw` together are what
+/// [`run_section`] gives.
+pub struct Staged {
+    /// The section's tables, JSON and the documents made without drawing.
+    pub output: SectionOutput,
+    /// Make the section's drawings.
+    pub draw: Box<dyn Fn() -> Result<Documents, Error>>,
+}
+
+impl std::fmt::Debug for Staged {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Staged").field("output", &self.output).finish_non_exhaustive()
+    }
+}
+
+impl Staged {
+    /// The section's drawings (see [`Staged`]).
+    pub fn drawings(&self) -> Result<Documents, Error> {
+        (self.draw)()
+    }
+}
+
+/// Run one section (a name of [`SECTION_TABLES`]) in two stages (see
+/// [`Staged`]): `linkage`, `forces` and `dynamics` defer their drawings;
+/// the other sections are computed whole and have no drawings left to make.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{prepare, run_section, run_staged, DEFAULT_TASK}};
+/// let p = prepare(&TaskSource::new("t.toml", DEFAULT_TASK), None).unwrap();
+/// let s = run_staged("linkage", &p.task).unwrap().unwrap();
+/// assert!(s.output.docs.get("linkage/positions.svg").is_none());
+/// let drawn = s.drawings().unwrap();
+/// let whole = run_section("linkage", &p.task).unwrap().unwrap();
+/// assert_eq!(drawn.get("linkage/positions.svg").unwrap().bytes, whole.docs.get("linkage/positions.svg").unwrap().bytes);
+/// ```
+pub fn run_staged(name: &str, task: &TaskSource) -> Result<Option<Staged>, Error> {
+    match name {
+        "linkage" => linkage::run_staged(task),
+        "forces" => forces::run_staged(task),
+        "dynamics" => dynamics::run_staged(task),
+        _ => Ok(run_section(name, task)?.map(|output| Staged {
+            output,
+            draw: Box::new(|| Ok(Documents::new())),
+        })),
+    }
+}
+
 /// Put the sections' outputs (in course order) together into a run: the
 /// combined report and the files.
 pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run, Error> {

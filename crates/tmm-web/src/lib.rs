@@ -7,7 +7,8 @@
 //!
 //! | export | what |
 //! | --- | --- |
-//! | [`analyse`] | run the whole task ([`tmm_report::run::run_task_in`]); tables, report, file list or the located error |
+//! | [`analyse`] | run the task, only the sections whose tables changed ([`page::Page::after`]); tables, report or the located error |
+//! | [`files`] | the files of one section of the last run (its drawings made when first asked) |
 //! | [`file_text`], [`file_bytes`] | one file of the last run (the same bytes the CLI writes) |
 //! | [`frames`] | the mechanism over the cycle for the animation and traced paths |
 //! | [`at_angle`] | the plans, forces and Zhukovsky's lever at one crank angle |
@@ -65,6 +66,14 @@ pub fn file_text(path: &str) -> Option<String> {
             .and_then(|p| p.file(path))
             .and_then(|d| d.as_text().map(str::to_string))
     })
+}
+
+/// The files of the section `name` of the last successful run (`"report"`
+/// for `report.json`), as JSON `{"ok", "files": [{"path", "size"}]}`; the
+/// section's drawings are made on the first call (see [`page::Page::files`]).
+#[wasm_bindgen]
+pub fn files(name: &str) -> String {
+    with_page(|p| p.files(name).to_string())
 }
 
 /// The bytes of one file of the last successful run, for a download.

@@ -1,7 +1,10 @@
 //! The page's module on the host: the replies the JavaScript reads.
 
 use serde_json::Value;
+use tmm_report::TaskSource;
+use tmm_report::project::Language;
 use tmm_report::run::DEFAULT_TASK;
+use tmm_report::run::run_task_in;
 use tmm_web::page::{Page, analyse_reply};
 
 fn parse(s: &str) -> Value {
@@ -41,17 +44,30 @@ fn the_error_is_at_the_line_of_the_bad_value() {
 }
 
 #[test]
-fn the_reply_lists_every_file_with_its_size() {
+fn the_reply_and_the_files_are_those_of_tmm_run() {
     let (reply, page) = analyse_reply("t.toml", DEFAULT_TASK, "en");
     let v = parse(&reply);
     let page = page.unwrap();
     assert_eq!(v["ok"], true);
-    let files = v["files"].as_array().unwrap();
-    assert!(files.iter().any(|f| f["path"] == "gear/mesh.dxf"));
-    for f in files {
-        let d = page.file(f["path"].as_str().unwrap()).unwrap();
-        assert_eq!(f["size"], d.bytes.len());
+    let cli = run_task_in(&TaskSource::new("t.toml", DEFAULT_TASK), Some(Language::En)).unwrap();
+    // the same numbers as `tmm run`'s report (both read back by one parser)
+    assert!(v["report"] == parse(&cli.report.to_string()), "the reply's report is not tmm run's");
+    assert!(page.report() == cli.report, "the page's report is not tmm run's");
+    // each section lists its files, drawings made on asking, the CLI's bytes
+    let mut listed = 0;
+    for s in ["report", "synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam"] {
+        let l = page.files(s);
+        assert_eq!(l["ok"], true);
+        for f in l["files"].as_array().unwrap() {
+            let path = f["path"].as_str().unwrap();
+            let want = cli.docs.get(path).unwrap_or_else(|| panic!("{path} is not a file of tmm run"));
+            let d = page.file(path).unwrap();
+            assert_eq!(f["size"], d.bytes.len());
+            assert!(d.bytes == want.bytes, "{path} differs from tmm run's");
+            listed += 1;
+        }
     }
+    assert_eq!(listed, cli.docs.len());
 }
 
 /// The links are rigid: at every frame each drawn segment of the default
@@ -143,13 +159,12 @@ fn a_picked_point_becomes_the_pairs_shifts() {
 
 /// Every number and every file of `a` equals that of `b`.
 fn same_run(a: &Page, b: &Page) {
-    assert_eq!(a.run.report, b.run.report);
-    let pa: Vec<_> = a.run.docs.iter().map(|d| (d.path.clone(), d.bytes.clone())).collect();
-    let pb: Vec<_> = b.run.docs.iter().map(|d| (d.path.clone(), d.bytes.clone())).collect();
+    assert!(a.report() == b.report(), "the reports differ");
+    let (pa, pb) = (a.docs().unwrap(), b.docs().unwrap());
     assert_eq!(pa.len(), pb.len());
     for (x, y) in pa.iter().zip(&pb) {
-        assert_eq!(x.0, y.0);
-        assert!(x.1 == y.1, "{} differs from a fresh run", x.0);
+        assert_eq!(x.path, y.path);
+        assert!(x.bytes == y.bytes, "{} differs from a fresh run", x.path);
     }
 }
 
@@ -162,7 +177,7 @@ fn an_edit_reruns_only_the_sections_that_read_the_edited_table() {
     assert_ne!(coupler, DEFAULT_TASK);
     let q = Page::after(Some(&p), "t.toml", &coupler, None).unwrap();
     assert_eq!(q.rerun, ["synthesis", "linkage", "forces", "dynamics"]);
-    assert_ne!(q.run.report["linkage"], p.run.report["linkage"]);
+    assert_ne!(q.report()["linkage"], p.report()["linkage"]);
     same_run(&q, &Page::new("t.toml", &coupler, None).unwrap());
     // the gear's module: the gear only; the kept sections equal a fresh run
     let at = coupler.find("[gear]").unwrap();
