@@ -183,16 +183,55 @@ function setAngleIndex(i) {
   $("angle-out").dataset.phi = phi;
   drawMechanism();
   const t0 = performance.now();
-  const a = JSON.parse(tmm.at_angle(phi, !state.playing));
+  if (state.playing) {
+    // a frame: the plans' vectors of the one solved position, drawn here;
+    // the drawings (the CLI's SVG), the forces and the cursors when the
+    // crank stops
+    const a = JSON.parse(tmm.plan_vectors(phi));
+    state.lastAngleMs = performance.now() - t0;
+    if (a.ok) drawPlans(a);
+    return;
+  }
+  const a = JSON.parse(tmm.at_angle(phi, true));
   state.lastAngleMs = performance.now() - t0;
   if (!a.ok) return;
   fill("plans", [["Velocity plan", a.velocity_plan], ["Acceleration plan", a.acceleration_plan]]);
-  if (state.playing) return; // the forces and the cursors when the crank stops
   if (a.forces) {
     fill("force-plans", Object.entries(a.forces.files));
     $("torque").textContent = `Mb = ${fmt(a.forces.balancing_moment)} N·m (Zhukovsky: ${fmt(a.forces.zhukovsky_moment)} N·m)`;
   } else { $("force-plans").replaceChildren(); $("torque").textContent = ""; }
   moveCursors(a.psi);
+}
+// The velocity and acceleration plans of a frame of the animation on two
+// canvases: each vector from its start to its end, the pole p (π) at the
+// origin, the points' images named; the scale fits each plan to its box.
+function drawPlans(a) {
+  let cs = [...document.querySelectorAll("#plans canvas")];
+  if (cs.length !== 2) {
+    fill("plans", [["Velocity plan", ""], ["Acceleration plan", ""]]);
+    cs = [...document.querySelectorAll("#plans .drawing")].map((d) => { const c = document.createElement("canvas"); c.width = 420; c.height = 320; d.append(c); return c; });
+  }
+  [[a.velocity, "p"], [a.acceleration, "π"]].forEach(([vs, pole], i) => {
+    const c = cs[i], g = c.getContext("2d");
+    g.clearRect(0, 0, c.width, c.height);
+    let r = 1e-12;
+    for (const v of vs) r = Math.max(r, Math.abs(v.from[0]), Math.abs(v.from[1]), Math.abs(v.to[0]), Math.abs(v.to[1]));
+    const s = (Math.min(c.width, c.height) / 2 - 24) / r, cx = c.width / 2, cy = c.height / 2;
+    const to = ([x, y]) => [cx + s * x, cy - s * y];
+    g.font = "12px sans-serif"; g.lineCap = "round";
+    for (const v of vs) {
+      const [u1, v1] = to(v.from), [u2, v2] = to(v.to), L = Math.hypot(u2 - u1, v2 - v1);
+      if (L < 0.5) continue;
+      g.strokeStyle = g.fillStyle = v.kind === "Absolute" ? "#1f4e9c" : "#555";
+      g.lineWidth = v.kind === "Absolute" ? 2 : 1;
+      g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke();
+      const ux = (u2 - u1) / L, uy = (v2 - v1) / L, k = Math.min(8, L / 2);
+      g.beginPath(); g.moveTo(u2, v2); g.lineTo(u2 - k * ux - k * 0.35 * uy, v2 - k * uy + k * 0.35 * ux); g.lineTo(u2 - k * ux + k * 0.35 * uy, v2 - k * uy - k * 0.35 * ux); g.closePath(); g.fill();
+      if (v.kind === "Absolute") { g.fillStyle = "#000"; g.fillText(v.label.replace(/^[Va]_?/, "").toLowerCase(), u2 + 4, v2 - 4); }
+    }
+    g.fillStyle = "#000"; g.fillText(pole, cx - 12, cy + 14);
+    g.beginPath(); g.arc(cx, cy, 3, 0, 2 * Math.PI); g.fill();
+  });
 }
 function mechTransform() {
   const F = state.frames, c = $("mech");

@@ -131,3 +131,52 @@ fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_repo
     }
     Ok(v)
 }
+
+/// The plans' vectors at the crank angle `phi` (rad), for a frame of the
+/// animation: `{"ok", "phi", "psi", "velocity": [v], "acceleration": [v]}`
+/// with each `v = {"label", "kind", "from": [x, y], "to": [x, y]}` (m/s,
+/// m/s²; the pole at the origin). One solution of the loaded mechanism and
+/// its plans ([`tmm_linkage::plans::plans`]); the page draws them while the
+/// crank turns and shows the drawings of [`at_angle`] when it stops.
+///
+/// ```
+/// let p = tmm_web::page::Page::new("t.toml", tmm_report::run::DEFAULT_TASK, None).unwrap();
+/// let v: serde_json::Value = serde_json::from_str(&tmm_web::angle::plan_vectors(&p, 1.0)).unwrap();
+/// assert_eq!(v["ok"], true);
+/// assert!(v["velocity"].as_array().unwrap().iter().any(|x| x["label"] == "V_A"));
+/// ```
+pub fn plan_vectors(p: &Page, phi: f64) -> String {
+    if !phi.is_finite() {
+        return reply::error_json("the crank angle must be a finite number", None, None);
+    }
+    let Some(l) = &p.linkage else {
+        return json!({ "none": true }).to_string();
+    };
+    let m = &l.mech;
+    let mut sol = m.solution();
+    if let Err(e) = m.solve(phi, &mut sol) {
+        return reply::from_error(&p.task, &tmm_report::linkage::locate(&p.task, &l.task, &e)).to_string();
+    }
+    let plans = tmm_linkage::plans::plans(m, &sol);
+    let list = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
+        v.iter()
+            .map(|x| {
+                json!({
+                    "label": x.label,
+                    "kind": format!("{:?}", x.kind),
+                    "from": [x.from.x, x.from.y],
+                    "to": [x.to.x, x.to.y],
+                })
+            })
+            .collect()
+    };
+    let psi = p.cycle_start.map(|start| (m.crank.omega.signum() * (phi - start)).rem_euclid(TAU));
+    json!({
+        "ok": true,
+        "phi": phi,
+        "psi": psi,
+        "velocity": list(&plans.velocity),
+        "acceleration": list(&plans.acceleration),
+    })
+    .to_string()
+}

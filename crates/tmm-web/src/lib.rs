@@ -12,6 +12,7 @@
 //! | [`file_text`], [`file_bytes`] | one file of the last run (the same bytes the CLI writes) |
 //! | [`frames`] | the mechanism over the cycle for the animation and traced paths |
 //! | [`at_angle`] | the plans, forces and Zhukovsky's lever at one crank angle |
+//! | [`plan_vectors`] | the plans' vectors at one crank angle, for a frame of the animation |
 //! | [`gear_contour`], [`gear_at`] | the blocking contour's axes; the pair at a picked (x1, x2) |
 //!
 //! The state between calls is the last successful run ([`page::Page`]); the
@@ -95,6 +96,13 @@ pub fn frames(n: usize) -> String {
 #[wasm_bindgen]
 pub fn at_angle(phi: f64, with_forces: bool) -> String {
     with_page(|p| angle::at_angle(p, phi, with_forces))
+}
+
+/// The plans' vectors at the crank angle `phi` (rad) for a frame of the
+/// animation, as JSON (see [`angle::plan_vectors`]).
+#[wasm_bindgen]
+pub fn plan_vectors(phi: f64) -> String {
+    with_page(|p| angle::plan_vectors(p, phi))
 }
 
 /// The blocking contour's axes and where they lie on its drawing, as JSON

@@ -196,3 +196,41 @@ fn an_edit_reruns_only_the_sections_that_read_the_edited_table() {
     // a failed run leaves the kept outputs of the last good one usable
     assert!(Page::after(Some(&r), "t.toml", &gear.replacen("470 mm", "-470 mm", 1), None).is_err());
 }
+
+/// The animation's plan vectors: the crank pin's velocity is ω·AB across
+/// the crank (900 rpm, 120 mm), and the images of B and C are the central
+/// differences of their positions over the crank angle times ω.
+#[test]
+fn the_frames_plan_vectors_are_the_velocities() {
+    let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
+    let omega = 900.0 * std::f64::consts::TAU / 60.0;
+    let phi = 0.7;
+    let v = parse(&tmm_web::angle::plan_vectors(&p, phi));
+    assert_eq!(v["ok"], true);
+    let image = |name: &str| -> [f64; 2] {
+        let x = v["velocity"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|x| x["label"] == format!("V_{name}"))
+            .unwrap();
+        [x["to"][0].as_f64().unwrap(), x["to"][1].as_f64().unwrap()]
+    };
+    let m = &p.linkage.as_ref().unwrap().mech;
+    let at = |phi: f64, name: &str| {
+        let mut sol = m.solution();
+        m.solve(phi, &mut sol).unwrap();
+        let i = m.points.iter().position(|q| q.name == name).unwrap();
+        [sol.points[i].p.x, sol.points[i].p.y]
+    };
+    let vb = image("B");
+    assert!((vb[0].hypot(vb[1]) - omega * 0.120).abs() < 1e-9 * omega);
+    let h = 1e-6;
+    for name in ["B", "C"] {
+        let (a, b) = (at(phi + h, name), at(phi - h, name));
+        let fd = [(a[0] - b[0]) / (2.0 * h) * omega, (a[1] - b[1]) / (2.0 * h) * omega];
+        let im = image(name);
+        assert!((fd[0] - im[0]).hypot(fd[1] - im[1]) < 1e-5 * omega, "{name}: {fd:?} vs {im:?}");
+    }
+    assert_eq!(parse(&tmm_web::angle::plan_vectors(&p, f64::INFINITY))["ok"], false);
+}
