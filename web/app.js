@@ -316,7 +316,7 @@ function playLoop() {
 $("play").onclick = () => {
   state.playing = !state.playing;
   $("play").textContent = state.playing ? "❚❚ Pause" : "▶ Play";
-  if (state.playing) requestAnimationFrame(playLoop);
+  if (state.playing) { $("torque").textContent = ""; $("force-plans").replaceChildren(); requestAnimationFrame(playLoop); }
   else setAngleIndex(state.frame);
 };
 
