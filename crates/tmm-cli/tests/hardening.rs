@@ -394,3 +394,127 @@ fn linkage_values_are_located() {
     assert!(e.contains(&format!("t.toml:{line}:")) && e.contains("linkage.input.speed"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The crank angles of a four-bar where the coupler BC and the rocker DC are
+/// collinear (derived here): |BD| = BC + DC (extended) or |BC − DC|
+/// (folded), and by the law of cosines in triangle ABD
+/// |BD|² = AB² + AD² − 2·AB·AD·cos φ, so cos φ = (AB² + AD² − |BD|²)/(2·AB·AD).
+/// Returns the angle in [0, π] for a given |BD|.
+fn collinear_angle(ab: f64, ad: f64, bd: f64) -> f64 {
+    ((ab * ab + ad * ad - bd * bd) / (2.0 * ab * ad)).acos()
+}
+
+/// Item 16: a double rocker driven over its swing is analysed over the
+/// ranges where it assembles; the ranges' ends are where the coupler and the
+/// rocker are collinear. A range ends where the group's velocity equations
+/// become singular (sine of the angle between coupler and rocker 1e-4, so
+/// |BD| is within b·c·δ²/(2|b ± c|) < 1e-9 m of the collinear length): the
+/// end lies within 1e-7 rad of the closed form.
+#[test]
+fn double_rocker_partial_ranges() {
+    let (code, out, err) = run(&["linkage", &example("double-rocker.toml"), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["range"], "partial");
+    let (ab, bc, dc, ad) = (0.3, 0.1, 0.35, 0.4);
+    let folded = collinear_angle(ab, ad, dc - bc); // |BD| least: 38.62°
+    let extended = collinear_angle(ab, ad, bc + dc); // |BD| greatest: 78.58°
+    let tau = std::f64::consts::TAU;
+    let expected = [(folded, extended), (tau - extended, tau - folded)];
+    let ranges = v["assembly_ranges"].as_array().unwrap();
+    assert_eq!(ranges.len(), 2, "{ranges:?}");
+    for (r, (from, to)) in ranges.iter().zip(expected) {
+        assert!((r["from"].as_f64().unwrap() - from).abs() < 1e-7, "{r} vs {from}");
+        assert!((r["to"].as_f64().unwrap() - to).abs() < 1e-7, "{r} vs {to}");
+    }
+    let gaps = v["gaps"].as_array().unwrap();
+    assert_eq!(gaps.len(), 2);
+    assert!((gaps[0]["from"].as_f64().unwrap() - extended).abs() < 1e-7);
+    assert!((gaps[0]["to"].as_f64().unwrap() - (tau - extended)).abs() < 1e-7);
+    // the table keeps inside the ranges and its analogs agree with ω3/ω1
+    for p in v["positions"].as_array().unwrap() {
+        let phi = p["phi"].as_f64().unwrap();
+        assert!(expected.iter().any(|&(a, b)| phi > a && phi < b), "{phi}");
+        let w3 = p["links"]["3"]["omega"].as_f64().unwrap();
+        let ds = p["output"]["ds_dphi"].as_f64().unwrap();
+        assert!((ds - w3 / std::f64::consts::PI).abs() < 1e-9 * w3.abs().max(1.0), "{ds} {w3}");
+    }
+    // the diagrams break at the gap
+    assert_eq!(v["diagrams"]["breaks"].as_array().unwrap().len(), 1);
+    // the text names the ranges and the gaps
+    let (code, out, err) = run(&["linkage", &example("double-rocker.toml")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("range 1: φ = 38.62") && out.contains("gap 1: φ = 78.58"), "{out}");
+}
+
+/// Item 16: `at` outside the ranges names the nearest one; the full-turn
+/// default refuses and points at the option; forces refuse a partial range.
+#[test]
+fn double_rocker_errors() {
+    let (code, _, err) = run(&["linkage", &example("double-rocker.toml"), "--at", "100 deg"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("nearest range where it does is 38.62") && !err.contains("panicked"),
+        "{err}"
+    );
+    let (code, out, err) = run(&["linkage", &example("double-rocker.toml"), "--at", "300 deg"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("POINTS at φ = 300.0000°"), "{out}");
+    let dir = tempdir("partial");
+    let text = std::fs::read_to_string(example("double-rocker.toml")).unwrap();
+    let full = dir.join("full.toml");
+    std::fs::write(&full, text.replace("range = \"partial\"\n", "")).unwrap();
+    let (code, _, err) = run(&["linkage", &full.to_string_lossy()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("range = \"partial\""), "{err}");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, text.replace("range = \"partial\"", "range = \"half\"")).unwrap();
+    let (code, _, err) = run(&["linkage", &bad.to_string_lossy()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("linkage.range") && err.contains("\"partial\""), "{err}");
+    let forces = dir.join("forces.toml");
+    std::fs::write(&forces, format!("{text}\n[forces]\nmass_per_length = \"10 kg/m\"\n")).unwrap();
+    let (code, _, err) = run(&["forces", &forces.to_string_lossy()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("[forces] needs a crank that turns a full revolution"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issues 10/11: a motor with an absurd torque, a huge inertia on the motor
+/// shaft or a huge number of points is refused at once with the field named,
+/// not run for seconds nor reported as a NaN angle.
+#[test]
+fn dynamics_bounds() {
+    let text = std::fs::read_to_string(example("seed-003-sixbar.toml")).unwrap();
+    let dir = tempdir("dynbounds");
+    let cases = [
+        (
+            text.replace("nominal_torque = \"26.7 N m\"", "nominal_torque = \"1e300 N m\""),
+            "dynamics.motor.nominal_torque: must be > 0 and at most 1e9",
+        ),
+        (
+            text.replace("nominal_torque = \"26.7 N m\"", "nominal_torque = \"1e9 N m\""),
+            "so steep",
+        ),
+        (
+            text.replace("motor_shaft = \"0.015 kg m^2\"", "motor_shaft = \"1e5 kg m^2\""),
+            "time constant",
+        ),
+        (
+            text.replace("delta = 0.05", "delta = 0.05\npoints = 1000008"),
+            "360…36000 intervals",
+        ),
+    ];
+    for (i, (t, want)) in cases.iter().enumerate() {
+        assert_ne!(t, &text, "case {i} did not change the file");
+        let f = dir.join(format!("case{i}.toml"));
+        std::fs::write(&f, t).unwrap();
+        let (code, _, err) = run(&["dynamics", &f.to_string_lossy()]);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(want) && !err.contains("NaN") && !err.contains("panicked"),
+            "case {i}: {err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -231,6 +231,15 @@ fn dir(m: &Mechanism) -> f64 {
 /// assembled, with boundaries refined to 1e-9 rad, as an error.
 pub fn check_assembly(m: &Mechanism, sol: &mut Solution) -> Result<(), LinkageError> {
     let n = 1440;
+    // the common case, a crank that turns fully, by the swept solver (each
+    // position starts from the last one's crank direction): only when some
+    // grid angle fails is the turn scanned again position by position to
+    // find and refine the failing ranges
+    if m.sweep(0.0, TAU / n as f64, n + 1, sol, |_, _| {}).is_ok() {
+        // leave the solution where the scan below leaves it (φ = 2π solved on
+        // its own), which the cycle's later solves start from
+        return m.solve(TAU, sol);
+    }
     let mut bad: Vec<(f64, f64)> = Vec::new();
     let mut reason = None;
     let ok_at = |phi: f64, sol: &mut Solution| m.solve(phi, sol);

@@ -123,6 +123,33 @@ impl DxfDoc {
     }
 }
 
+impl DxfDoc {
+    /// Text (mm) turned by `rotation_deg` (CCW) about its alignment point
+    /// `at`, aligned there at its left (`align` 0), centre (1) or right (2)
+    /// end of the baseline.
+    pub fn text_aligned(&mut self, at: (f64, f64), height: f64, value: &str, rotation_deg: f64, align: u8) {
+        use dxf::enums::HorizontalTextJustification as J;
+        if !(at.0.is_finite() && at.1.is_finite() && height.is_finite() && rotation_deg.is_finite()) || height <= 0.0 {
+            return;
+        }
+        let p = Point::new(at.0, at.1, 0.0);
+        let t = Text {
+            location: p.clone(),
+            second_alignment_point: p,
+            text_height: height,
+            value: value.to_string(),
+            rotation: rotation_deg,
+            horizontal_text_justification: match align {
+                1 => J::Center,
+                2 => J::Right,
+                _ => J::Left,
+            },
+            ..Default::default()
+        };
+        self.add(EntityType::Text(t));
+    }
+}
+
 /// Header variables that carry the time of writing or a random GUID.
 const STAMPS: [&str; 8] = [
     "$TDCREATE",

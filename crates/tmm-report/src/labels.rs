@@ -228,7 +228,12 @@ impl Placer {
             if s == 0 {
                 let _ = write!(self.svg, "<tspan dy=\"{dy:.3}\">{}</tspan>", escape(&t));
             } else {
-                let _ = write!(self.svg, "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>", 0.7 * h, escape(&t));
+                let _ = write!(
+                    self.svg,
+                    "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>",
+                    0.7 * h,
+                    escape(&t)
+                );
             }
             level = s;
         }
@@ -243,7 +248,16 @@ impl Placer {
         let mut v = Vec::new();
         for k in 1..=3 {
             let f = k as f64;
-            for (sx, sy) in [(1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (1.0, 0.0), (-1.0, 0.0), (0.0, -1.0), (0.0, 1.0)] {
+            for (sx, sy) in [
+                (1.0, -1.0),
+                (-1.0, -1.0),
+                (1.0, 1.0),
+                (-1.0, 1.0),
+                (1.0, 0.0),
+                (-1.0, 0.0),
+                (0.0, -1.0),
+                (0.0, 1.0),
+            ] {
                 v.push((p.0 + sx * dx * f, p.1 + sy * dy * f));
             }
         }
@@ -294,7 +308,12 @@ mod tests {
         assert!(n > 5);
         let b = p.boxes();
         for i in 0..b.len() {
-            assert!(b[i].inside(&Rect { x0: 0.0, y0: 0.0, x1: 100.0, y1: 50.0 }));
+            assert!(b[i].inside(&Rect {
+                x0: 0.0,
+                y0: 0.0,
+                x1: 100.0,
+                y1: 50.0
+            }));
             for j in 0..i {
                 assert!(!b[i].hits(&b[j], 0.0), "{i} {j}");
             }

@@ -33,6 +33,7 @@ pub mod paper;
 pub mod planetary;
 pub mod project;
 pub mod run;
+pub mod sheets;
 pub mod svg;
 pub mod synthesis;
 pub mod task;

@@ -207,6 +207,9 @@ pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run
     for o in &sections {
         docs.append(o.docs.clone());
     }
+    // the drawing sheets, made of the drawings above
+    let sheets = crate::sheets::sheet_documents(&docs, &project)?;
+    docs.append(sheets);
     Ok(Run {
         sections,
         report,

@@ -189,33 +189,36 @@ impl Canvas {
     }
 
     fn poly(&mut self, pts: &[(f64, f64)], s: Style, closed: bool) {
-        let mut d = String::new();
-        let mut prev: Option<(f64, f64)> = None;
-        let first = pts
-            .iter()
-            .find(|p| p.0.is_finite() && p.1.is_finite())
-            .map(|p| self.to_paper(p.0, p.1));
-        for &(x, y) in pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
-            let (px, py) = self.to_paper(x, y);
-            if let Some(q) = prev {
-                self.segs.push((q, (px, py)));
+        // a non-finite point lifts the pen: each run between them is drawn
+        // on its own (a curve with gaps where a mechanism does not assemble)
+        let runs: Vec<&[(f64, f64)]> = pts
+            .split(|p| !(p.0.is_finite() && p.1.is_finite()))
+            .filter(|r| !r.is_empty())
+            .collect();
+        let closed = closed && runs.len() == 1;
+        for run in runs {
+            let mut d = String::new();
+            let mut prev: Option<(f64, f64)> = None;
+            let first = self.to_paper(run[0].0, run[0].1);
+            for &(x, y) in run {
+                let (px, py) = self.to_paper(x, y);
+                if let Some(q) = prev {
+                    self.segs.push((q, (px, py)));
+                }
+                prev = Some((px, py));
+                let _ = write!(d, "{px:.3},{py:.3} ");
             }
-            prev = Some((px, py));
-            let _ = write!(d, "{px:.3},{py:.3} ");
+            if let (true, Some(a)) = (closed, prev) {
+                self.segs.push((a, first));
+            }
+            let tag = if closed { "polygon" } else { "polyline" };
+            let _ = writeln!(
+                self.body,
+                "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>",
+                d.trim_end(),
+                Self::style_attr(&s)
+            );
         }
-        if let (true, Some(a), Some(b)) = (closed, prev, first) {
-            self.segs.push((a, b));
-        }
-        if d.is_empty() {
-            return;
-        }
-        let tag = if closed { "polygon" } else { "polyline" };
-        let _ = writeln!(
-            self.body,
-            "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>",
-            d.trim_end(),
-            Self::style_attr(&s)
-        );
     }
 
     /// A circle of world radius `r`.

@@ -168,7 +168,10 @@ fn pair(a: &PairArgs) -> Result<(), Error> {
     };
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     if let Some(p) = &a.svg {
-        files.push((p.clone(), mesh::mesh_svg(pair, &t1, &t2, Default::default(), Default::default()).into_bytes()));
+        files.push((
+            p.clone(),
+            mesh::mesh_svg(pair, &t1, &t2, Default::default(), Default::default()).into_bytes(),
+        ));
     }
     if let Some(p) = &a.dxf {
         files.push((p.clone(), mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?));
@@ -220,7 +223,12 @@ fn contour(a: &ContourArgs) -> Result<(), Error> {
     let svg_file: Vec<(PathBuf, Vec<u8>)> = a
         .svg
         .iter()
-        .map(|p| (p.clone(), contour_plot::contour_svg(&c, chosen.clone(), Default::default(), Default::default()).into_bytes()))
+        .map(|p| {
+            (
+                p.clone(),
+                contour_plot::contour_svg(&c, chosen.clone(), Default::default(), Default::default()).into_bytes(),
+            )
+        })
         .collect();
     let out = if a.common.json {
         let lines: Vec<serde_json::Value> = c

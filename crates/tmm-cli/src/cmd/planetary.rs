@@ -195,7 +195,16 @@ pub fn run(a: &Args) -> Result<(), Error> {
     } else {
         checked(text::report(&an))?
     };
-    let svg: Vec<(PathBuf, Vec<u8>)> = a.svg.iter().map(|p| (p.clone(), drawing::sheet(&an, Default::default(), Default::default()).svg.into_bytes())).collect();
+    let svg: Vec<(PathBuf, Vec<u8>)> = a
+        .svg
+        .iter()
+        .map(|p| {
+            (
+                p.clone(),
+                drawing::sheet(&an, Default::default(), Default::default()).svg.into_bytes(),
+            )
+        })
+        .collect();
     let files = write_named(&svg)?;
     print(&if a.json { out } else { out + &written(&files) })
 }

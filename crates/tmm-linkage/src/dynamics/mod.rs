@@ -258,7 +258,7 @@ impl Dynamics {
             match spec.driving {
                 DrivingMoment::Constant => (sim.cycle(motion.omega[0])?, None),
                 DrivingMoment::Motor(_) => {
-                    let r = sim.runup(100_000)?;
+                    let r = sim.runup(simulate::MAX_RUNUP_CYCLES)?;
                     (r.steady, Some(r))
                 }
             }

@@ -36,6 +36,17 @@ pub const STEADY_RTOL: f64 = 1e-12;
 /// Relative tolerance of the run-up's integration.
 pub const RUNUP_RTOL: f64 = 1e-9;
 
+/// The least crank travel over the time constant of the motor-driven run-up,
+/// τ·ω_m, rad: below it the equation of motion is too stiff for the explicit
+/// integration and the crank turns at the motor's speed anyway.
+pub const MIN_SETTLE_ANGLE: f64 = 1e-4;
+
+/// The most cycles the run-up from rest is integrated over (about 50 µs of
+/// computing each, so a second at most): a machine that needs more — a huge
+/// inertia against a stiff motor characteristic — is refused beforehand by
+/// its time constant (see [`Simulator::runup`]) or when it reaches this.
+pub const MAX_RUNUP_CYCLES: usize = 20_000;
+
 /// One simulated cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SimulatedCycle {
@@ -246,19 +257,71 @@ impl<'a> Simulator<'a> {
     /// cycle to the next, then the periodic cycle by shooting; the run-up
     /// time is when the speed at the start of a cycle first comes within
     /// [`SETTLE`] of the periodic one.
+    ///
+    /// Refused before integrating when the run-up would take more than
+    /// `max_cycles` cycles by the linearised estimate (derived here): near
+    /// the steady speed the motor's moment reduced to the crank falls with
+    /// slope k = u²·M_n/(ω_s − ω_n), so the speed settles as e^(−t/τ) with
+    /// τ = I/k, I ≥ the constant inertia; reaching 1e-7 takes ln(1e7)·τ,
+    /// that is ln(1e7)·τ·ω_m/(2π) cycles.
     pub fn runup(&mut self, max_cycles: usize) -> Result<Runup, DynamicsError> {
+        let (driving, inertia) = (self.driving, self.inertia);
+        let too_long = move |cycles: Option<f64>| {
+            let DrivingMoment::Motor(m) = driving else {
+                return DynamicsError::NoConvergence {
+                    what: format!("the run-up to the steady cycle (no steady cycle after {max_cycles} cycles)"),
+                };
+            };
+            let k = m.ratio * m.ratio * m.nominal_torque / (m.synchronous_speed - m.nominal_speed);
+            let tau = inertia / k;
+            DynamicsError::spec(
+                "dynamics.inertia",
+                format!(
+                    "the run-up from rest would take {} cycles of the crank, more than the {max_cycles} simulated at most: the inertia at the crank {:.6e} kg·m² against the motor's slope k = u²·M_n/(ω_s − ω_n) = {:.6e} N·m·s gives a time constant τ = I/k = {:.4e} s; reduce the inertia on the shafts or choose a motor with a larger nominal torque",
+                    cycles.map_or_else(|| "more than that".to_string(), |c| format!("about {c:.0}")),
+                    inertia,
+                    k,
+                    tau
+                ),
+            )
+        };
+        if let DrivingMoment::Motor(m) = self.driving {
+            let k = m.ratio * m.ratio * m.nominal_torque / (m.synchronous_speed - m.nominal_speed);
+            let cycles = 1e7f64.ln() * (self.inertia / k) * self.omega_ref / (2.0 * PI);
+            if cycles.is_finite() && cycles > max_cycles as f64 {
+                return Err(too_long(Some(cycles)));
+            }
+            // the other extreme: a characteristic so steep that the speed
+            // settles within MIN_SETTLE_ANGLE of crank travel (τ·ω_m) makes
+            // the equation stiff for the explicit integration
+            let settle = self.inertia / k * self.omega_ref;
+            if !(settle.is_finite() && settle >= MIN_SETTLE_ANGLE) {
+                return Err(DynamicsError::spec(
+                    "dynamics.motor.nominal_torque",
+                    format!(
+                        "the motor's characteristic is so steep (k = u²·M_n/(ω_s − ω_n) = {k:.4e} N·m·s against the inertia {:.4e} kg·m² at the crank) that the speed settles within {settle:.2e} rad of crank travel, below {MIN_SETTLE_ANGLE:e} rad: the crank turns at the motor's speed, use driving = \"constant\" or check the nominal torque and the gear ratio",
+                        self.inertia
+                    ),
+                ));
+            }
+        }
         let mut starts: Vec<(f64, f64)> = Vec::new();
         let (mut tt, mut ww) = (Vec::new(), Vec::new());
-        let last = self.run(
-            0.0,
-            RUNUP_RTOL,
-            max_cycles,
-            |c| {
-                starts.push((c.start, c.omega_start));
-                starts.len() >= 3 && (c.omega_end - c.omega_start).abs() <= 1e-7 * c.omega_end
-            },
-            Some((&mut tt, &mut ww)),
-        )?;
+        let last = self
+            .run(
+                0.0,
+                RUNUP_RTOL,
+                max_cycles,
+                |c| {
+                    starts.push((c.start, c.omega_start));
+                    starts.len() >= 3 && (c.omega_end - c.omega_start).abs() <= 1e-7 * c.omega_end
+                },
+                Some((&mut tt, &mut ww)),
+            )
+            .map_err(|e| match e {
+                DynamicsError::NoConvergence { .. } => too_long(None),
+                other => other,
+            })?;
         let mut steady = self.periodic(last.omega_end)?;
         steady.start = last.start + last.period;
         let target = steady.omega_start;

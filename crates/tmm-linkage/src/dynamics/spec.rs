@@ -114,6 +114,16 @@ impl Default for FlywheelSpec {
     }
 }
 
+/// The most intervals of the crank angle over the cycle (0.01° apart): every
+/// interval is solved and kept, so the bound keeps the time and the files
+/// small.
+pub const MAX_POINTS: usize = 36_000;
+
+/// The largest nominal motor torque accepted, N·m (the largest motors built
+/// give some 1e7 N·m; beyond 1e9 the reduced moments and their products
+/// with the speeds leave the range where the integration stays exact).
+pub const MAX_TORQUE: f64 = 1e9;
+
 /// The whole specification of the dynamics (the `[dynamics]` section).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsSpec {
@@ -179,10 +189,13 @@ impl DynamicsSpec {
                 ),
             ));
         }
-        if self.points < 360 || self.points % 12 != 0 {
+        if self.points < 360 || self.points > MAX_POINTS || self.points % 12 != 0 {
             return Err(e(
                 "dynamics.points",
-                format!("the cycle needs at least 360 intervals, a multiple of 12; not {}", self.points),
+                format!(
+                    "the cycle needs 360 to {MAX_POINTS} intervals (0.01° apart at most), a multiple of 12; not {}",
+                    self.points
+                ),
             ));
         }
         for (f, v) in [
@@ -206,10 +219,13 @@ impl DynamicsSpec {
                     ),
                 ));
             }
-            if !(m.nominal_torque.is_finite() && m.nominal_torque > 0.0) {
+            if !(m.nominal_torque.is_finite() && m.nominal_torque > 0.0 && m.nominal_torque <= MAX_TORQUE) {
                 return Err(e(
                     "dynamics.motor.nominal_torque",
-                    format!("must be > 0 N·m, not {}", m.nominal_torque),
+                    format!(
+                        "must be > 0 and at most {MAX_TORQUE:e} N·m (beyond the largest motors built), not {:e}",
+                        m.nominal_torque
+                    ),
                 ));
             }
             if !(m.ratio.is_finite() && m.ratio > 0.0) {

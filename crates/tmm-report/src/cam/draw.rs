@@ -566,27 +566,27 @@ pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) ->
     // the legend and the sizes on the right
     let lx = pw - legend_w;
     let mut ly = 8.0;
-    lab.put_left(
-        (lx, ly),
-        &format!("{} {}", word(lang, "common.scale"), scale.text),
-        H_LABEL,
-        "#000",
-    );
+    lab.put_left((lx, ly), &format!("{} {}", word(lang, "common.scale"), scale.text), H_LABEL, "#000");
     let mm = word(lang, "cam.mm");
     let mut rows: Vec<(Option<Style>, String)> = vec![
         (Some(Style::THICK), word(lang, "cam.legend_working").to_string()),
         (Some(DASH_DOT.colored("#1f4e9c")), word(lang, "cam.legend_pitch").to_string()),
-        (Some(Style::DASHED), format!("{}, r_0 = {} {mm}", word(lang, "cam.legend_base"), num(lang, d.r0 * 1e3, 2))),
+        (Some(Style::DASHED), word(lang, "cam.legend_base").to_string()),
+        (None, format!("r_0 = {} {mm}", num(lang, d.r0 * 1e3, 2))),
     ];
     if d.rb > 0.0 && (d.rb - d.r0).abs() > 1e-12 {
         rows.push((
             Some(Style::DASHED.colored("#777777")),
-            format!("{}, r_b = {} {mm}", word(lang, "cam.legend_working_base"), num(lang, d.rb * 1e3, 2)),
+            word(lang, "cam.legend_working_base").to_string(),
         ));
+        rows.push((None, format!("r_b = {} {mm}", num(lang, d.rb * 1e3, 2))));
     }
     rows.push((Some(Style::THIN), word(lang, "cam.legend_rays").to_string()));
     if d.roller > 0.0 {
-        rows.push((None, format!("{}: r_r = {} {mm}", word(lang, "cam.roller"), num(lang, d.roller * 1e3, 2))));
+        rows.push((
+            None,
+            format!("{}: r_r = {} {mm}", word(lang, "cam.roller"), num(lang, d.roller * 1e3, 2)),
+        ));
     }
     rows.push((None, format!("ρ_min = {} {mm}", num(lang, d.rho_min * 1e3, 2))));
     for (st, t) in rows {

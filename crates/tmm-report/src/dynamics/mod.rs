@@ -52,6 +52,7 @@ pub fn load(src: &TaskSource) -> Result<Option<(Loaded, ForcesTask, DynamicsTask
 
 /// Compute the dynamics of the machine.
 pub fn analyse(src: &TaskSource, l: &Loaded, ft: &ForcesTask, dt: &DynamicsTask) -> Result<Dynamics, Error> {
+    crate::linkage::require_full_turn(src, l, "dynamics")?;
     Dynamics::compute(&l.mech, &ft.loads, &dt.spec).map_err(|e| locate(src, l, ft, dt, &e))
 }
 

@@ -210,12 +210,15 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
     if let Some(p) = &sec.points {
         spans.insert("dynamics.points".to_string(), p.span());
         let v = *p.get_ref();
-        if !(360..=1_000_000).contains(&v) || v % 12 != 0 {
+        if !(360..=tmm_linkage::dynamics::spec::MAX_POINTS as i64).contains(&v) || v % 12 != 0 {
             return Err(Error::at(
                 task,
                 p.span(),
                 "dynamics.points",
-                format!("the cycle needs 360…1 000 000 intervals, a multiple of 12; not {v}"),
+                format!(
+                    "the cycle needs 360…{} intervals (0.01° apart at most), a multiple of 12; not {v}",
+                    tmm_linkage::dynamics::spec::MAX_POINTS
+                ),
             )
             .with_help(help_for("dynamics.points")));
         }

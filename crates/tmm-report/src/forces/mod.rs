@@ -132,6 +132,7 @@ pub(crate) fn working(w: cycle::Working) -> Working {
 pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) -> Result<Analysis, Error> {
     let m = &l.mech;
     let loc = |e: ForceError| locate(src, l, t, &e);
+    linkage::require_full_turn(src, l, "forces")?;
     let c = Cycle::new(m, l.task.working).map_err(|e| linkage::locate(src, &l.task, &e))?;
     let mut k = Kinetostatics::with_working(m, t.loads.clone(), working(l.task.working)).map_err(loc)?;
     // the true motion of the crank, when asked: ω₁, ε₁ at each angle from

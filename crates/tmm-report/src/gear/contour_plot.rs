@@ -15,7 +15,14 @@ use crate::words::word;
 const COLORS: [&str; 6] = ["#000000", "#c00000", "#1f5fbf", "#008000", "#7a3b00", "#6a1b9a"];
 /// Dash patterns on paper, mm (None: solid), cycled slower than the colours
 /// so that no two of the first 36 lines share a style.
-const DASHES: [Option<(f64, f64)>; 6] = [None, Some((4.0, 1.5)), Some((1.2, 1.2)), Some((8.0, 2.0)), Some((2.5, 2.5)), Some((0.6, 2.0))];
+const DASHES: [Option<(f64, f64)>; 6] = [
+    None,
+    Some((4.0, 1.5)),
+    Some((1.2, 1.2)),
+    Some((8.0, 2.0)),
+    Some((2.5, 2.5)),
+    Some((0.6, 2.0)),
+];
 
 /// The style of the `k`-th line: a colour and a dash of its own.
 ///

@@ -15,9 +15,7 @@ use tmm_gears::generate::ToothProfile;
 use tmm_gears::{Kind, Pair};
 
 use crate::dxf_out::DxfDoc;
-use crate::labels::{
-    CHAR_WIDTH, DASH_DOT, DASH_DOT_DOT, H_HEAD, H_LABEL, Placer, Rect, finish, label_box, num, plain,
-};
+use crate::labels::{CHAR_WIDTH, DASH_DOT, DASH_DOT_DOT, H_HEAD, H_LABEL, Placer, Rect, finish, label_box, num, plain};
 use crate::paper::{Scale, Slot, slot_mm, standard_scale};
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Canvas, Style};
@@ -232,10 +230,11 @@ const TITLE_H: f64 = 14.0;
 pub fn mesh_layout(pair: &Pair, sheet: SheetFormat) -> Option<MeshLayout> {
     let (w, h) = slot_mm(Slot::Scheme, sheet);
     let sc = key_points(pair);
-    let (xmin, xmax, ymin, ymax) = sc.iter().fold(
-        (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY),
-        |a, p| (a.0.min(p.0), a.1.max(p.0), a.2.min(p.1), a.3.max(p.1)),
-    );
+    let (xmin, xmax, ymin, ymax) = sc
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY), |a, p| {
+            (a.0.min(p.0), a.1.max(p.0), a.2.min(p.1), a.3.max(p.1))
+        });
     let (dw, dh) = (w - TABLE_W - 4.0, h - TITLE_H - 4.0);
     let sx = standard_scale(xmax - xmin, dw - 24.0)?;
     let sy = standard_scale(ymax - ymin, dh - 24.0)?;
@@ -323,7 +322,9 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     c.line((0.0, wy0), (0.0, wy1), DASH_DOT);
     for (o, name) in [(sc.o1, "O_1"), (sc.o2, "O_2")] {
         c.line((o.0 - 2.0 * cross, o.1), (o.0 + 2.0 * cross, o.1), DASH_DOT);
+        c.begin_group(&format!("centre-{}", plain(name)));
         c.dot(o, 0.8, "#000");
+        c.end_group();
         let q = paper(o);
         lab.reserve(label_box(q, 1, 1.6));
         lab.place(&Placer::around(q, name, H_LABEL, 1.0), name, H_LABEL, "#000");
@@ -365,12 +366,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let e0 = arc_pts[0];
     let e1 = arc_pts[n_arc];
     c.arrow_paper((e0.0, e0.1 - head), e0, Style::THIN, head);
-    c.arrow_paper(
-        (e1.0 + head * aw_ang.sin(), e1.1 + head * aw_ang.cos()),
-        e1,
-        Style::THIN,
-        head,
-    );
+    c.arrow_paper((e1.0 + head * aw_ang.sin(), e1.1 + head * aw_ang.cos()), e1, Style::THIN, head);
     let ang_txt = format!("α_w = {}°", num(lang, aw_ang.to_degrees(), 2));
     let ang_c: Vec<Pt> = (0..12)
         .flat_map(|i| {
@@ -397,10 +393,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let aw_c: Vec<Pt> = (0..16)
         .flat_map(|i| {
             let dy = 5.0 * i as f64;
-            [
-                (xd + 1.5 + 0.5 * naw, mid.1 - dy),
-                (xd + 1.5 + 0.5 * naw, mid.1 + dy),
-            ]
+            [(xd + 1.5 + 0.5 * naw, mid.1 - dy), (xd + 1.5 + 0.5 * naw, mid.1 + dy)]
         })
         .collect();
     lab.place(&aw_c, &aw_txt, H_LABEL, "#000");
@@ -426,6 +419,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
                 })
                 .collect();
             let mut cand: Vec<(f64, Pt)> = Vec::new();
+            c.begin_group(&format!("circle-{}", plain(&name)));
             for run in pts.split(|q| !in_win(q)) {
                 if run.len() >= 2 {
                     c.polyline(run, st);
@@ -442,6 +436,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
                     }
                 }
             }
+            c.end_group();
             cand.sort_by(|a, b| b.0.total_cmp(&a.0));
             let cs: Vec<Pt> = cand.into_iter().map(|x| x.1).collect();
             lab.place(&cs, &name, H_LABEL, st.color);
@@ -468,8 +463,14 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     y += 4.0;
     let legend: [(String, Style); 8] = [
         (word(lang, "gear.legend_active").to_string(), Style::THICK.colored(RED).widened(0.7)),
-        (word(lang, "gear.legend_work1").to_string(), Style::THICK.colored(MAGENTA).widened(0.8)),
-        (word(lang, "gear.legend_work2").to_string(), Style::THICK.colored(ORANGE).widened(0.8)),
+        (
+            word(lang, "gear.legend_work1").to_string(),
+            Style::THICK.colored(MAGENTA).widened(0.8),
+        ),
+        (
+            word(lang, "gear.legend_work2").to_string(),
+            Style::THICK.colored(ORANGE).widened(0.8),
+        ),
         (word(lang, "gear.legend_arcs").to_string(), Style::THICK.colored(GREEN).widened(0.9)),
         (word(lang, "gear.legend_reference").to_string(), DASH_DOT),
         (word(lang, "gear.legend_operating").to_string(), DASH_DOT_DOT.colored(BROWN)),
@@ -489,10 +490,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
 }
 
 fn c_to_paper(lay: &MeshLayout, q: Pt, ph: f64) -> Pt {
-    (
-        lay.origin.0 + lay.scale.factor * q.0,
-        ph - (lay.origin.1 + lay.scale.factor * q.1),
-    )
+    (lay.origin.0 + lay.scale.factor * q.0, ph - (lay.origin.1 + lay.scale.factor * q.1))
 }
 
 const RED: &str = "#c00000";

@@ -162,7 +162,7 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
     let mut sol = m.solution();
     let sg = m.crank.omega.signum();
     for k in 0..=720 {
-        let phi = a.cycle.start + sg * std::f64::consts::TAU * k as f64 / 720.0;
+        let phi = a.start + sg * std::f64::consts::TAU * k as f64 / 720.0;
         let ok = m.solve(phi, &mut sol).is_ok();
         for (j, &p) in joints.iter().enumerate() {
             // a gap where the crank cannot turn stays a gap
@@ -350,7 +350,7 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
 fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, String)> {
     let lang = task.lang;
     let w = l.mech.crank.omega.abs();
-    let lin = a.cycle.output.kind == tmm_linkage::cycle::OutputKind::Linear;
+    let lin = a.reading.output.kind == tmm_linkage::cycle::OutputKind::Linear;
     let out = &l.mech.link_names[l.mech.output];
     let u = |k: &str| word(lang, k).to_string();
     let (su, vu, au, dsu) = if lin {
@@ -389,7 +389,14 @@ fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, S
     ];
     list.into_iter()
         .map(|(file, title, sym, unit, pick)| {
-            let pts: Vec<(f64, f64)> = a.diagram.iter().map(|d| (d[0].to_degrees(), pick(d, w))).collect();
+            let mut pts: Vec<(f64, f64)> = Vec::with_capacity(a.diagram.len() + a.diagram_breaks.len());
+            for (k, d) in a.diagram.iter().enumerate() {
+                if a.diagram_breaks.contains(&k) {
+                    // the pen lifts over a range where the mechanism does not assemble
+                    pts.push((f64::NAN, f64::NAN));
+                }
+                pts.push((d[0].to_degrees(), pick(d, w)));
+            }
             let marks: Vec<(f64, String)> = a.rows.iter().map(|r| (r.pos.psi.to_degrees(), r.pos.label.clone())).collect();
             (file, cycle_diagram(task, word(lang, title), &sym, &unit, &pts, &marks, w))
         })

@@ -46,7 +46,7 @@ fn row_json(l: &Loaded, r: &Row) -> Value {
 pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let m = &l.mech;
     let s = &m.structure;
-    let c = &a.cycle;
+    let out = a.reading.output;
     let groups: Vec<Value> = s
         .groups
         .iter()
@@ -63,7 +63,7 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
         .iter()
         .map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)}))
         .collect();
-    json!({
+    let mut doc = json!({
         "units": "SI",
         "structure": {
             "dof": s.dof, "n": s.n, "p5": s.p5, "p4": s.p4, "groups": groups,
@@ -71,14 +71,8 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
             "dof_by_rank": s.dof_rank, "redundant_constraints": s.redundant, "passive_freedoms": s.passive,
         },
         "input": {"link": m.link_names[m.crank.link], "omega": num(m.crank.omega), "epsilon": num(m.crank.eps)},
-        "output": {"link": m.link_names[c.output.link], "kind": match c.output.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
+        "output": {"link": m.link_names[out.link], "kind": match out.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
         "positions": a.rows.iter().map(|r| row_json(l, r)).collect::<Vec<_>>(),
-        "dead_positions": c.dead.iter().map(|&p| json!({"phi": num(p)})).collect::<Vec<_>>(),
-        "kv": num(c.kv),
-        "theta": num(c.theta),
-        "working_angle": num(c.working_angle),
-        "return_angle": num(c.return_angle),
-        "stroke": num(c.stroke),
         "pressure_angle_max": pmax,
         "diagrams": {
             "phi": a.diagram.iter().map(|d| num(d[0])).collect::<Vec<_>>(),
@@ -90,5 +84,35 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
             "a": a.diagram.iter().map(|d| num(d[3] * w * w)).collect::<Vec<_>>(),
         },
         "plans": {"phi": num(a.plan_row.pos.phi), "velocity": vec(&a.plans.velocity), "acceleration": vec(&a.plans.acceleration)},
-    })
+    });
+    if let Value::Object(o) = &mut doc {
+        o.insert("range".into(), json!(if a.partial.is_some() { "partial" } else { "full" }));
+        // indices into the diagrams' arrays where a new range starts after a gap
+        if let Value::Object(d) = &mut o["diagrams"] {
+            d.insert("breaks".into(), json!(a.diagram_breaks));
+        }
+        if let Some(c) = &a.cycle {
+            o.insert("dead_positions".into(), c.dead.iter().map(|&p| json!({"phi": num(p)})).collect());
+            o.insert("kv".into(), num(c.kv));
+            o.insert("theta".into(), num(c.theta));
+            o.insert("working_angle".into(), num(c.working_angle));
+            o.insert("return_angle".into(), num(c.return_angle));
+            o.insert("stroke".into(), num(c.stroke));
+        }
+        if let Some(p) = &a.partial {
+            let span = |r: &tmm_linkage::ranges::AssemblyRange| json!({"from": num(r.from), "to": num(r.to)});
+            let ranges: Vec<Value> = p
+                .ranges
+                .iter()
+                .map(|r| {
+                    json!({"from": num(r.range.from), "to": num(r.range.to),
+                        "dead_positions": r.dead.iter().map(|&x| json!({"phi": num(x)})).collect::<Vec<_>>(),
+                        "s_min": num(r.s_min), "s_max": num(r.s_max)})
+                })
+                .collect();
+            o.insert("assembly_ranges".into(), Value::Array(ranges));
+            o.insert("gaps".into(), p.map.gaps.iter().map(span).collect());
+        }
+    }
+    doc
 }

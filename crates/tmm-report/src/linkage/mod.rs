@@ -8,14 +8,15 @@ mod text;
 
 use std::f64::consts::TAU;
 
-use tmm_linkage::cycle::{self, Cycle, Position};
+use tmm_linkage::cycle::{self, Cycle, Output, Position};
 use tmm_linkage::plans::{self, Plans};
+use tmm_linkage::ranges::PartialCycle;
 use tmm_linkage::{LinkageError, Mechanism, MechanismDef, Solution};
 
 use crate::output::{Documents, SectionOutput};
 use crate::{Error, TaskSource};
 
-pub use task::LinkageTask;
+pub use task::{LinkageTask, RangeMode};
 
 /// A mechanism read from a task file and compiled.
 #[derive(Debug, Clone)]
@@ -59,7 +60,8 @@ pub fn locate(src: &TaskSource, t: &LinkageTask, e: &LinkageError) -> Error {
     match e {
         LinkageError::AssemblyRanges { .. } | LinkageError::Assembly { .. } => err.with_help(
             grashof_help(&t.def)
-                .unwrap_or_else(|| "check the link lengths and the fixed points; a crank must be able to turn a full revolution".into()),
+                .map(|g| format!("{g}; or set range = \"partial\" in [linkage] to analyse it over the crank angles where it assembles"))
+                .unwrap_or_else(|| "check the link lengths and the fixed points; a crank must be able to turn a full revolution, or set range = \"partial\" in [linkage] to analyse it over the crank angles where it assembles".into()),
         ),
         LinkageError::Mobility { .. } => {
             err.with_help("check that every joint is shared by the right links and every slider has one guide")
@@ -118,15 +120,64 @@ pub struct Row {
     pub pressure: Vec<(usize, f64)>,
 }
 
+/// How the output's displacement and its analogs are read: from `s0`, along
+/// `sign`, per unit of crank travel ψ (the same measure as
+/// [`Cycle::analogs`]: ds/dψ = v/|ω1|, d²s/dψ² = (a − ds/dψ·ε1·sgn ω1)/ω1²).
+#[derive(Debug, Clone, Copy)]
+pub struct Reading {
+    /// The output coordinate.
+    pub output: Output,
+    /// The coordinate where s = 0, m or rad.
+    pub s0: f64,
+    /// +1 or −1: the direction s is counted in.
+    pub sign: f64,
+}
+
+impl Reading {
+    /// The reading of a full-turn cycle (from the start of the working stroke).
+    pub fn of_cycle(c: &Cycle) -> Self {
+        Reading {
+            output: c.output,
+            s0: c.s_start,
+            sign: c.work_sign,
+        }
+    }
+
+    /// s, ds/dψ, d²s/dψ² at a solved position.
+    pub fn analogs(&self, m: &Mechanism, sol: &Solution) -> (f64, f64, f64) {
+        let o = self.output.read(sol, self.s0);
+        let w = m.crank.omega.abs();
+        let s = self.sign * (o.s - self.s0);
+        let ds = self.sign * o.v / w;
+        let dds = (self.sign * o.a - ds * m.crank.eps * m.crank.omega.signum()) / (w * w);
+        (s, ds, dds)
+    }
+}
+
 /// Everything the section reports.
 #[derive(Debug, Clone)]
 pub struct Analysis {
-    /// The cycle (dead positions, Kv, stroke).
-    pub cycle: Cycle,
+    /// The full-turn cycle (dead positions, Kv, stroke); `None` when the
+    /// mechanism is analysed over its assembly ranges (`range = "partial"`).
+    pub cycle: Option<Cycle>,
+    /// The assembly ranges and gaps; `None` for a full turn.
+    pub partial: Option<PartialCycle>,
+    /// How the output is read.
+    pub reading: Reading,
+    /// The crank angle where ψ = 0, rad.
+    pub start: f64,
     /// The table's positions.
     pub rows: Vec<Row>,
+    /// Indices into `rows` where a new assembly range starts (empty for a full turn).
+    pub row_breaks: Vec<usize>,
     /// Diagram samples: ψ, s, ds/dψ, d²s/dψ².
     pub diagram: Vec<[f64; 4]>,
+    /// Indices into `diagram` where a new assembly range starts, after a
+    /// gap (empty for a full turn).
+    pub diagram_breaks: Vec<usize>,
+    /// The gaps in ψ (from, to), rad, where the mechanism does not assemble
+    /// (empty for a full turn).
+    pub diagram_gaps: Vec<(f64, f64)>,
     /// The position the plans are drawn for.
     pub plan_row: Row,
     /// The plans there.
@@ -136,10 +187,10 @@ pub struct Analysis {
 }
 
 /// Solve one position into a row.
-pub fn row(m: &Mechanism, c: &Cycle, pos: Position) -> Result<Row, LinkageError> {
+pub fn row(m: &Mechanism, r: &Reading, pos: Position) -> Result<Row, LinkageError> {
     let mut sol = m.solution();
     m.solve(pos.phi, &mut sol)?;
-    let analogs = c.analogs(m, &sol);
+    let analogs = r.analogs(m, &sol);
     let mut pressure = Vec::new();
     cycle::pressure_angles(m, &sol, &mut pressure);
     Ok(Row {
@@ -150,30 +201,176 @@ pub fn row(m: &Mechanism, c: &Cycle, pos: Position) -> Result<Row, LinkageError>
     })
 }
 
+/// Refuse a section that needs the steady cycle of a full turn when the
+/// linkage is analysed over its assembly ranges only.
+pub fn require_full_turn(src: &TaskSource, l: &Loaded, section: &str) -> Result<(), Error> {
+    if l.task.range == RangeMode::Partial {
+        return Err(Error::at(
+            src,
+            l.task.range_span.clone().unwrap_or(l.task.section.clone()),
+            "linkage.range",
+            format!("[{section}] needs a crank that turns a full revolution; range = \"partial\" analyses only the ranges where the mechanism assembles"),
+        )
+        .with_help("the forces and the steady motion of a machine are found over a full turn of the crank: remove range = \"partial\" and choose link lengths for which the crank turns fully"));
+    }
+    Ok(())
+}
+
+/// The assembly range that holds `phi` (any turn), or the error naming the nearest one.
+fn inside_range(p: &PartialCycle, phi: f64) -> Result<f64, String> {
+    let mut best: Option<(f64, &tmm_linkage::ranges::AssemblyRange)> = None;
+    for rc in &p.ranges {
+        let r = &rc.range;
+        // the representative of phi in [from, from + 2π)
+        let x = r.from + (phi - r.from).rem_euclid(TAU);
+        if x <= r.to + 1e-12 {
+            return Ok(x.min(r.to));
+        }
+        let d = (x - r.to).min(r.from + TAU - x);
+        if best.is_none_or(|b| d < b.0) {
+            best = Some((d, r));
+        }
+    }
+    let ranges: Vec<String> = p
+        .ranges
+        .iter()
+        .map(|r| format!("{:.4}°…{:.4}°", r.range.from.to_degrees(), r.range.to.to_degrees()))
+        .collect();
+    Err(match best {
+        Some((_, r)) => format!(
+            "the mechanism does not assemble at φ = {:.4}°; the nearest range where it does is {:.4}°…{:.4}° (all ranges: {})",
+            phi.to_degrees(),
+            r.from.to_degrees(),
+            r.to.to_degrees(),
+            ranges.join(", ")
+        ),
+        None => format!("the mechanism does not assemble at φ = {:.4}°", phi.to_degrees()),
+    })
+}
+
+/// How far inside each end of an assembly range the table's positions and
+/// the diagrams start and end, rad (0.5°, at most a tenth of the range).
+pub const INSET: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+/// Samples of the diagrams over a full turn of the crank.
+const SAMPLES_PER_TURN: f64 = 360.0;
+
 /// Analyse: the cycle, `n` positions (or the one at `at`), diagrams, plans.
 pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Result<Analysis, Error> {
     let m = &l.mech;
     let loc = |e: LinkageError| locate(src, &l.task, &e);
-    let c = Cycle::new(m, l.task.working).map_err(loc)?;
     let sg = m.crank.omega.signum();
-    let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
-    let positions: Vec<Position> = match at {
-        Some(phi) => vec![Position {
+    let (cycle, partial, reading, start) = match l.task.range {
+        RangeMode::Full => {
+            let c = Cycle::new(m, l.task.working).map_err(loc)?;
+            let (r, st) = (Reading::of_cycle(&c), c.start);
+            (Some(c), None, r, st)
+        }
+        RangeMode::Partial => {
+            let p = PartialCycle::new(m).map_err(loc)?;
+            // ψ runs in the direction of rotation from the first range's first angle
+            let first = if sg > 0.0 { p.ranges.first() } else { p.ranges.last() };
+            let start = first.map_or(0.0, |r| if sg > 0.0 { r.range.from } else { r.range.to });
+            let mut sol = m.solution();
+            m.solve(start, &mut sol).map_err(loc)?;
+            let s0 = p.output.read(&sol, 0.0).s;
+            let r = Reading {
+                output: p.output,
+                s0,
+                sign: 1.0,
+            };
+            (None, Some(p), r, start)
+        }
+    };
+    let psi_of = |phi: f64| (sg * (phi - start)).rem_euclid(TAU);
+    // the assembly ranges in order of crank travel (first, last), and the
+    // pieces swept for the table and the diagrams
+    let ends: Vec<(f64, f64)> = match &partial {
+        None => vec![(start, start + sg * TAU)],
+        Some(p) => {
+            let mut v: Vec<(f64, f64)> = p.ranges.iter().map(|r| (r.range.from, r.range.to)).collect();
+            if sg < 0.0 {
+                v.reverse();
+                for x in &mut v {
+                    *x = (x.1, x.0);
+                }
+            }
+            v
+        }
+    };
+    // a range ends at a group's dead centre, where the velocities grow
+    // without bound: the table and the diagrams keep INSET inside it
+    let pieces: Vec<(f64, f64)> = match &partial {
+        None => ends.clone(),
+        Some(_) => ends
+            .iter()
+            .map(|&(a, b)| {
+                let d = sg * INSET.min(0.1 * (b - a).abs());
+                (a + d, b - d)
+            })
+            .collect(),
+    };
+    // an `at` given to the command (`--at`) or written in the file (`linkage.at`)
+    let at_checked = |phi: f64, in_file: bool| -> Result<f64, Error> {
+        match &partial {
+            None => Ok(phi),
+            Some(p) => inside_range(p, phi).map_err(|msg| {
+                let help = "choose an angle inside one of the ranges where the mechanism assembles";
+                if in_file {
+                    let span = l.task.spans.get("at").cloned().unwrap_or(l.task.section.clone());
+                    Error::at(src, span, "linkage.at", msg).with_help(help)
+                } else {
+                    Error::input("--at", msg).with_help(help)
+                }
+            }),
+        }
+    };
+    let at = at.map(|a| at_checked(a, false)).transpose()?;
+    let mut row_breaks = Vec::new();
+    let positions: Vec<Position> = match (at, &cycle) {
+        (Some(phi), _) => vec![Position {
             label: "at".into(),
             phi,
             psi: psi_of(phi),
         }],
-        None => c.positions(m, n),
+        (None, Some(c)) => c.positions(m, n),
+        (None, None) => {
+            // n positions over each range, its ends included
+            let k_max = n.max(2);
+            let mut out = Vec::new();
+            for (i, &(a, b)) in pieces.iter().enumerate() {
+                if i > 0 {
+                    row_breaks.push(out.len());
+                }
+                for k in 0..k_max {
+                    let phi = a + (b - a) * k as f64 / (k_max - 1) as f64;
+                    out.push(Position {
+                        label: format!("{}.{k}", i + 1),
+                        phi: tmm_geom::angle::wrap_2pi(phi),
+                        psi: psi_of(phi),
+                    });
+                }
+            }
+            out
+        }
     };
     let rows = positions
         .into_iter()
-        .map(|p| row(m, &c, p))
+        .map(|p| row(m, &reading, p))
         .collect::<Result<Vec<_>, _>>()
         .map_err(loc)?;
-    let plan_phi = at.or(l.task.at).unwrap_or_else(|| rows.get(1).map_or(c.start, |r| r.pos.phi));
+    let plan_phi = match (at, l.task.at) {
+        (Some(a), _) => a,
+        (None, Some(a)) => at_checked(a, true)?,
+        (None, None) => match &partial {
+            None => rows.get(1).map_or(start, |r| r.pos.phi),
+            // the middle of the first range
+            Some(_) => pieces.first().map_or(start, |&(a, b)| tmm_geom::angle::wrap_2pi(0.5 * (a + b))),
+        },
+    };
     let plan_row = row(
         m,
-        &c,
+        &reading,
         Position {
             label: "plan".into(),
             phi: plan_phi,
@@ -183,33 +380,57 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
     .map_err(loc)?;
     let plans = plans::plans(m, &plan_row.sol);
     let mut sol = m.solution();
-    let samples = 360;
-    let mut diagram = Vec::with_capacity(samples + 1);
+    let mut diagram = Vec::new();
+    let mut diagram_breaks = Vec::new();
     let mut pressure_max: Vec<(usize, f64, f64)> = Vec::new();
     let mut pa = Vec::new();
-    for k in 0..=samples {
-        let psi = TAU * k as f64 / samples as f64;
-        let phi = c.start + sg * psi;
-        m.solve(phi, &mut sol).map_err(loc)?;
-        let (s, ds, dds) = c.analogs(m, &sol);
-        diagram.push([psi, s, ds, dds]);
-        cycle::pressure_angles(m, &sol, &mut pa);
-        for &(p, v) in &pa {
-            match pressure_max.iter_mut().find(|x| x.0 == p) {
-                Some(x) => {
-                    if v > x.1 {
-                        x.1 = v;
-                        x.2 = tmm_geom::angle::wrap_2pi(phi);
+    for (i, &(a, b)) in pieces.iter().enumerate() {
+        if i > 0 {
+            diagram_breaks.push(diagram.len());
+        }
+        let samples = ((b - a).abs() / TAU * SAMPLES_PER_TURN).ceil().max(2.0) as usize;
+        for k in 0..=samples {
+            let phi = a + (b - a) * k as f64 / samples as f64;
+            m.solve(phi, &mut sol).map_err(loc)?;
+            let (s, ds, dds) = reading.analogs(m, &sol);
+            // ψ unwrapped over the pieces: the full turn ends at 2π
+            let psi = sg * (phi - start);
+            diagram.push([psi, s, ds, dds]);
+            cycle::pressure_angles(m, &sol, &mut pa);
+            for &(p, v) in &pa {
+                match pressure_max.iter_mut().find(|x| x.0 == p) {
+                    Some(x) => {
+                        if v > x.1 {
+                            x.1 = v;
+                            x.2 = tmm_geom::angle::wrap_2pi(phi);
+                        }
                     }
+                    None => pressure_max.push((p, v, tmm_geom::angle::wrap_2pi(phi))),
                 }
-                None => pressure_max.push((p, v, tmm_geom::angle::wrap_2pi(phi))),
             }
         }
     }
+    let diagram_gaps: Vec<(f64, f64)> = match &partial {
+        None => Vec::new(),
+        Some(_) => (0..ends.len())
+            .map(|i| {
+                let end = sg * (ends[i].1 - start);
+                let next = ends.get(i + 1).map_or(TAU, |p| sg * (p.0 - start));
+                (end, next)
+            })
+            .filter(|g| g.1 - g.0 > 1e-9)
+            .collect(),
+    };
     Ok(Analysis {
-        cycle: c,
+        cycle,
+        diagram_gaps,
+        partial,
+        reading,
+        start,
         rows,
+        row_breaks,
         diagram,
+        diagram_breaks,
         plan_row,
         plans,
         pressure_max,

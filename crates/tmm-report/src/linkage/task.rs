@@ -49,6 +49,7 @@ struct LinkageSec {
     working: Option<S<String>>,
     positions: Option<S<i64>>,
     at: Option<Qty>,
+    range: Option<S<String>>,
 }
 
 #[derive(Deserialize)]
@@ -125,6 +126,18 @@ enum HintSec {
 /// solved, kept and written, so the bound keeps memory and files small.
 pub const MAX_POSITIONS: usize = 3600;
 
+/// Over which crank angles the mechanism is analysed (`range` in `[linkage]`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RangeMode {
+    /// A full turn of the crank (полный оборот); a mechanism whose crank
+    /// cannot turn fully is refused.
+    #[default]
+    Full,
+    /// Only the ranges of the crank angle where the mechanism assembles
+    /// (области сборки): a double rocker driven over its swing.
+    Partial,
+}
+
 /// The `[linkage]` section, read and checked.
 #[derive(Debug, Clone)]
 pub struct LinkageTask {
@@ -136,6 +149,10 @@ pub struct LinkageTask {
     pub positions: usize,
     /// The crank angle for the plans (absolute, rad), if given.
     pub at: Option<f64>,
+    /// A full turn (default) or the assembly ranges only.
+    pub range: RangeMode,
+    /// Where `range` was written, if it was.
+    pub range_span: Option<Range<usize>>,
     /// Field path → span, to locate core errors.
     pub spans: HashMap<String, Range<usize>>,
     /// Span of the whole section.
@@ -451,14 +468,37 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         }
     };
     let at = match &sec.at {
-        Some(a) => Some(qty(task, "linkage.at", a, Dim::Angle)?),
+        Some(a) => {
+            spans.insert("at".into(), a.span());
+            Some(qty(task, "linkage.at", a, Dim::Angle)?)
+        }
         None => None,
     };
+    let range = match sec.range.as_ref() {
+        None => RangeMode::Full,
+        Some(r) => match r.get_ref().as_str() {
+            "full" => RangeMode::Full,
+            "partial" => RangeMode::Partial,
+            other => {
+                return Err(Error::at(task, r.span(), "linkage.range", format!("unknown range `{other}`")).with_help(
+                    "\"full\" (default: the crank turns a full revolution) or \"partial\" (only the crank angles where the mechanism assembles)",
+                ));
+            }
+        },
+    };
+    if let (RangeMode::Partial, Some(w)) = (range, sec.working.as_ref()) {
+        return Err(
+            Error::at(task, w.span(), "linkage.working", "a working stroke needs a full turn of the crank")
+                .with_help("remove `working`, or remove range = \"partial\""),
+        );
+    }
     Ok(Some(LinkageTask {
         def,
         working,
         positions,
         at,
+        range,
+        range_span: sec.range.as_ref().map(|r| r.span()),
         spans,
         section,
     }))

@@ -2,7 +2,8 @@
 
 use std::fmt::Write as _;
 
-use tmm_linkage::cycle::OutputKind;
+use tmm_linkage::cycle::{Cycle, OutputKind};
+use tmm_linkage::ranges::PartialCycle;
 
 use super::{Analysis, Loaded};
 
@@ -11,7 +12,6 @@ use super::{Analysis, Loaded};
 pub fn report(l: &Loaded, a: &Analysis) -> String {
     let m = &l.mech;
     let s = &m.structure;
-    let c = &a.cycle;
     let mut o = String::new();
     let _ = writeln!(o, "LEVER MECHANISM — structure (структурный анализ)");
     let _ = writeln!(
@@ -38,40 +38,23 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
         );
     }
     let _ = writeln!(o, "  class of the mechanism: {}", tmm_linkage::structure::roman(s.class));
-    let unit = if c.output.kind == OutputKind::Linear { "m" } else { "rad" };
+    let out = a.reading.output;
+    let unit = if out.kind == OutputKind::Linear { "m" } else { "rad" };
     let _ = writeln!(
         o,
         "\nCYCLE — output link `{}` ({})",
-        m.link_names[c.output.link],
-        if c.output.kind == OutputKind::Linear {
+        m.link_names[out.link],
+        if out.kind == OutputKind::Linear {
             "travel along its guide"
         } else {
             "angle"
         }
     );
-    if c.dead.is_empty() {
-        let _ = writeln!(o, "  the output turns fully: no dead positions");
-    } else {
-        let _ = writeln!(
-            o,
-            "  dead positions: φ = {:.6}° (start of the working stroke), {:.6}°",
-            c.dead[0].to_degrees(),
-            c.dead[1].to_degrees()
-        );
-        let _ = writeln!(
-            o,
-            "  working stroke {:.4}°, return {:.4}°, θ = {:.4}°, Kv = {:.5}",
-            c.working_angle.to_degrees(),
-            c.return_angle.to_degrees(),
-            c.theta.to_degrees(),
-            c.kv
-        );
-        let stroke = if c.output.kind == OutputKind::Linear {
-            format!("{:.6} m", c.stroke)
-        } else {
-            format!("{:.6} rad = {:.4}°", c.stroke, c.stroke.to_degrees())
-        };
-        let _ = writeln!(o, "  stroke of the output: {stroke}");
+    if let Some(c) = &a.cycle {
+        full_cycle(&mut o, c);
+    }
+    if let Some(p) = &a.partial {
+        partial_cycle(&mut o, p, out.kind);
     }
     for &(p, v, phi) in &a.pressure_max {
         let _ = writeln!(
@@ -134,4 +117,76 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
         );
     }
     o
+}
+
+/// The dead positions, Kv and stroke of a full turn.
+fn full_cycle(o: &mut String, c: &Cycle) {
+    if c.dead.is_empty() {
+        let _ = writeln!(o, "  the output turns fully: no dead positions");
+    } else {
+        let _ = writeln!(
+            o,
+            "  dead positions: φ = {:.6}° (start of the working stroke), {:.6}°",
+            c.dead[0].to_degrees(),
+            c.dead[1].to_degrees()
+        );
+        let _ = writeln!(
+            o,
+            "  working stroke {:.4}°, return {:.4}°, θ = {:.4}°, Kv = {:.5}",
+            c.working_angle.to_degrees(),
+            c.return_angle.to_degrees(),
+            c.theta.to_degrees(),
+            c.kv
+        );
+        let stroke = if c.output.kind == OutputKind::Linear {
+            format!("{:.6} m", c.stroke)
+        } else {
+            format!("{:.6} rad = {:.4}°", c.stroke, c.stroke.to_degrees())
+        };
+        let _ = writeln!(o, "  stroke of the output: {stroke}");
+    }
+}
+
+/// The assembly ranges and gaps, with the output's extremes on each range.
+fn partial_cycle(o: &mut String, p: &PartialCycle, kind: OutputKind) {
+    let _ = writeln!(
+        o,
+        "  the crank cannot turn fully: analysed over the crank angles where the mechanism assembles (range = \"partial\")"
+    );
+    let val = |x: f64| {
+        if kind == OutputKind::Linear {
+            format!("{x:.6} m")
+        } else {
+            format!("{:.4}°", x.to_degrees())
+        }
+    };
+    for (i, r) in p.ranges.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "  range {}: φ = {:.4}°…{:.4}° (span {:.4}°); output from {} to {}",
+            i + 1,
+            r.range.from.to_degrees(),
+            r.range.to.to_degrees(),
+            r.range.span().to_degrees(),
+            val(r.s_min),
+            val(r.s_max)
+        );
+        if !r.dead.is_empty() {
+            let d: Vec<String> = r.dead.iter().map(|x| format!("{:.4}°", x.to_degrees())).collect();
+            let _ = writeln!(o, "    dead positions of the output inside it: φ = {}", d.join(", "));
+        }
+    }
+    for (i, g) in p.map.gaps.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "  gap {}: φ = {:.4}°…{:.4}° (span {:.4}°): does not assemble",
+            i + 1,
+            g.from.to_degrees(),
+            g.to.to_degrees(),
+            g.span().to_degrees()
+        );
+    }
+    if let Some(why) = &p.map.reason {
+        let _ = writeln!(o, "  at the gaps: {why}");
+    }
 }

@@ -94,10 +94,7 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let mut lab = Placer::new(W, H);
     // Shared radius scale: the whole train (±big plus rims) in 0.64·H mm of
     // height, at the largest standard scale that fits (GOST 2.302).
-    let scale = standard_scale(2.5 * big * 1e3, 0.64 * H).unwrap_or(crate::paper::Scale {
-        factor: 1.0,
-        text: "1:1",
-    });
+    let scale = standard_scale(2.5 * big * 1e3, 0.64 * H).unwrap_or(crate::paper::Scale { factor: 1.0, text: "1:1" });
     let sr = scale.factor * 1e3; // paper mm per metre
     let axis_y = 0.533 * H; // paper mm from the bottom
     c.set_transform(sr, (22.0 + 0.1 * big * sr, axis_y));
@@ -106,7 +103,7 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         &format!(
             "{} {} — {}. {} {}",
             word(lang, "planetary.title"),
-            sc.name(),
+            word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
             teeth_text(sc, b),
             word(lang, "common.scale"),
             scale.text
@@ -271,7 +268,11 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let pl_y = 130.0; // paper y (from the top) of the pole
     let ax_y = pl_y - hh; // … and of the ω-axis
     c.begin_group("angular-diagram");
-    lab.put_left((dx0 - 34.0, 22.0), word(lang, "planetary.diagram"), H_LABEL, "#000");
+    let head = word(lang, "planetary.diagram");
+    let hw = crate::labels::CHAR_WIDTH * H_LABEL * head.chars().count() as f64;
+    let hx = (dx0 - 34.0 + 0.5 * hw).min(W - 1.0 - 0.5 * hw);
+    let heads: Vec<(f64, f64)> = (0..8).map(|i| (hx, 22.0 + 6.0 * f64::from(i))).collect();
+    lab.place(&heads, head, H_LABEL, "#000");
     c.line_paper((dx0 - 36.0, ax_y), (dx0 + 36.0, ax_y), Style::THIN);
     c.line_paper((dx0, ax_y), (dx0, pl_y), Style::DASHED);
     c.text_paper((dx0 + 1.0, pl_y + 4.0), "P", 3.2, Anchor::Start, "#000");
@@ -292,7 +293,12 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     // --- the ratios beside each other ---
     let mm = word(lang, "planetary.mm");
     let lines = [
-        format!("{}: {} = {}", word(lang, "planetary.willis"), fraction_text(b), num(lang, b.ratio.value(), 6)),
+        format!(
+            "{}: {} = {}",
+            word(lang, "planetary.willis"),
+            fraction_text(b),
+            num(lang, b.ratio.value(), 6)
+        ),
         format!("{} = {}", word(lang, "planetary.read_picture"), num(lang, ratio_picture, 6)),
         format!("{} = {}", word(lang, "planetary.read_diagram"), num(lang, ratio_diagram, 6)),
         format!(

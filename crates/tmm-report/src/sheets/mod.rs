@@ -1,0 +1,639 @@
+//! The drawing sheets of the course project (листы графической части):
+//! A1 or A2, landscape, with the ESKD frame and the main title block, the
+//! run's drawings placed at 1:1 in the course's order:
+//!
+//! 1. the lever mechanism — synthesis, the 12 positions, the velocity and
+//!    acceleration plans, the kinematic diagrams (`synthesis/`, `linkage/`);
+//! 2. dynamics and kinetostatics — the diagrams of the dynamics section,
+//!    the force plans of each group, Zhukovsky's lever (`dynamics/`, `forces/`);
+//! 3. the gear pair and the planetary train (`gear/`, `planetary/`);
+//! 4. the cam (`cam/`).
+//!
+//! Each sheet is `sheets/sheet-N.svg` (self-contained: size in mm, the
+//! drawings nested as `<svg>` viewports with their own viewBox, so their
+//! scales and μ stay true) and `sheets/sheet-N.dxf`, the same sheet read
+//! back by [`svg_to_dxf`]. The drawings are packed by [`layout`] without
+//! overlap and off the title block; what does not fit goes to a
+//! continuation sheet (the drawings the course requires) or is left out
+//! with a note on the sheet (the optional ones). See `docs/sheets.md`.
+
+pub mod frame;
+pub mod layout;
+pub mod svg_to_dxf;
+pub mod title_block;
+pub mod xml;
+
+use std::fmt::Write as _;
+
+use crate::Error;
+use crate::dxf_out::DxfDoc;
+use crate::output::Documents;
+use crate::project::{Language, Project};
+use crate::svg::escape;
+use crate::words::word;
+use frame::{Align, FONTS, Mark, inner_frame, marks_svg, text_width};
+use layout::{Packer, Rect};
+
+/// The clear distance between drawings and from the frame, mm.
+pub const GAP_MM: f64 = 5.0;
+/// The caption's font size above each drawing, mm (GOST 2.304).
+pub const CAPTION_MM: f64 = 5.0;
+/// The height of the caption strip above each drawing, mm.
+pub const CAPTION_STRIP_MM: f64 = 7.0;
+
+/// One sheet of the course: its title key and the drawings it holds, in
+/// the course's order; `*` ends a prefix (`forces/group-*`); `!` marks a
+/// drawing the sheet must show (it goes to a continuation sheet rather
+/// than be left out).
+struct Template {
+    folders: &'static [&'static str],
+    order: &'static [&'static str],
+}
+
+const TEMPLATES: [Template; 4] = [
+    Template {
+        folders: &["synthesis", "linkage"],
+        order: &[
+            "!linkage/positions",
+            "!synthesis/construction",
+            "!linkage/velocity-plan",
+            "!linkage/acceleration-plan",
+            "!linkage/diagram-s",
+            "!linkage/diagram-v",
+            "!linkage/diagram-a",
+            "linkage/diagram-ds",
+            "linkage/diagram-dds",
+            "synthesis/pressure",
+        ],
+    },
+    Template {
+        folders: &["dynamics", "forces"],
+        order: &[
+            "!forces/group-*",
+            "!forces/input-link",
+            "!forces/zhukovsky-lever",
+            "!forces/balancing-torque",
+            "!dynamics/moments",
+            "!dynamics/work",
+            "!dynamics/inertia",
+            "!dynamics/wittenbauer",
+            "!dynamics/omega",
+            "dynamics/epsilon",
+            "dynamics/energy-constant",
+            "forces/strength-*",
+        ],
+    },
+    Template {
+        folders: &["gear", "planetary"],
+        order: &[
+            "!gear/mesh",
+            "!gear/contour",
+            "!gear/sliding",
+            "!planetary/planetary",
+            "gear/profiles",
+        ],
+    },
+    Template {
+        folders: &["cam"],
+        order: &[
+            "!cam/cam",
+            "!cam/cam-motion",
+            "!cam/cam-sizing",
+            "cam/cam-analogs",
+            "cam/cam-pressure",
+        ],
+    },
+];
+
+/// A drawing read from the run's documents.
+#[derive(Debug, Clone)]
+struct Drawing {
+    path: String,
+    caption: String,
+    required: bool,
+    w: f64,
+    h: f64,
+    view_box: [f64; 4],
+    scale: Option<String>,
+    body: String,
+}
+
+/// A drawing as placed on a sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Placed {
+    /// The document it comes from (`linkage/positions.svg`).
+    pub source: String,
+    /// Its caption on the sheet.
+    pub caption: String,
+    /// The drawing's box on the sheet, mm, y down (the caption above it).
+    pub rect: Rect,
+}
+
+/// One sheet as laid out.
+#[derive(Debug, Clone)]
+pub struct Sheet {
+    /// The sheet's number in the set, from 1.
+    pub number: usize,
+    /// The sheet's title (наименование) in the title block.
+    pub title: String,
+    /// The scale of the main drawing (`1:2`), empty when none carries one.
+    pub scale: String,
+    /// The drawings on it.
+    pub placed: Vec<Placed>,
+    /// Captions of drawings left out of it (written in its note).
+    pub left_out: Vec<String>,
+    /// The note's box, when there is one.
+    pub note: Option<Rect>,
+    /// The SVG text.
+    pub svg: String,
+}
+
+/// The caption of a drawing in `lang`: the `[sheet]` word for its path
+/// (`linkage/velocity-plan.svg` → `sheet.fig_linkage_velocity_plan`); a
+/// numbered file (`forces/group-2.svg`) takes its family's word and the
+/// number; an unknown file the word for a figure and its name.
+///
+/// ```
+/// use tmm_report::{project::Language, sheets::caption};
+/// assert_eq!(caption("linkage/velocity-plan.svg", Language::Ru), "План скоростей");
+/// assert_eq!(caption("forces/group-2.svg", Language::En), "Force plan of group 2");
+/// ```
+pub fn caption(path: &str, lang: Language) -> String {
+    let stem = path.trim_end_matches(".svg");
+    let key = |s: &str| format!("sheet.fig_{}", s.replace(['/', '-'], "_"));
+    let k = key(stem);
+    if word(lang, &k) != k {
+        return word(lang, &k).to_string();
+    }
+    if let Some((base, n)) = stem.rsplit_once('-')
+        && !n.is_empty()
+        && n.chars().all(|c| c.is_ascii_digit())
+    {
+        let k = key(base);
+        if word(lang, &k) != k {
+            return format!("{} {n}", word(lang, &k));
+        }
+    }
+    let name = stem.rsplit('/').next().unwrap_or(stem);
+    format!("{} «{name}»", word(lang, "sheet.figure"))
+}
+
+fn matches(pattern: &str, stem: &str) -> bool {
+    match pattern.strip_suffix('*') {
+        Some(prefix) => stem.starts_with(prefix),
+        None => stem == pattern,
+    }
+}
+
+/// Read a drawing's size, viewBox, scale and inner markup; `None` when it
+/// is not an SVG with a size in absolute units.
+fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize) -> Option<Drawing> {
+    let toks = xml::tokens(text).ok()?;
+    let (root, body_from) = toks.iter().find_map(|t| match t {
+        xml::Token::Start {
+            name: "svg",
+            to,
+            empty: false,
+            ..
+        } => Some((t, *to)),
+        _ => None,
+    })?;
+    let body_to = text.rfind("</svg>")?;
+    if body_to < body_from {
+        return None;
+    }
+    let w = root.attr("width").and_then(svg_to_dxf::length_mm)?;
+    let h = root.attr("height").and_then(svg_to_dxf::length_mm)?;
+    if !(w > 0.0 && h > 0.0) {
+        return None;
+    }
+    let vb: Vec<f64> = root
+        .attr("viewBox")
+        .map(|v| {
+            v.split([' ', ','])
+                .filter(|s| !s.is_empty())
+                .filter_map(|s| s.parse().ok())
+                .collect()
+        })
+        .unwrap_or_default();
+    let view_box = if vb.len() == 4 && vb[2] > 0.0 && vb[3] > 0.0 {
+        [vb[0], vb[1], vb[2], vb[3]]
+    } else {
+        [0.0, 0.0, w, h]
+    };
+    let mut body = text[body_from..body_to].to_string();
+    // unique ids: every id of the drawing gets the drawing's prefix
+    let mut ids: Vec<&str> = toks.iter().filter_map(|t| t.attr("id")).collect();
+    ids.sort_by_key(|s| std::cmp::Reverse(s.len()));
+    ids.dedup();
+    for id in ids {
+        let id = escape(id);
+        let new = format!("d{k}-{id}");
+        body = body
+            .replace(&format!("id=\"{id}\""), &format!("id=\"{new}\""))
+            .replace(&format!("#{id}\""), &format!("#{new}\""))
+            .replace(&format!("#{id})"), &format!("#{new})"));
+    }
+    Some(Drawing {
+        path: path.to_string(),
+        caption: caption(path, lang),
+        required,
+        w,
+        h,
+        view_box,
+        scale: root.attr("data-scale").map(str::to_string).filter(|s| !s.trim().is_empty()),
+        body,
+    })
+}
+
+/// The drawings of one template found in the run, in the course's order.
+fn collect(docs: &Documents, t: &Template, lang: Language, next_id: &mut usize) -> (Vec<Drawing>, Vec<String>) {
+    let svgs: Vec<(&str, &str)> = docs
+        .iter()
+        .filter(|d| d.extension() == "svg")
+        .filter(|d| t.folders.iter().any(|f| d.path.starts_with(&format!("{f}/"))))
+        .filter_map(|d| d.as_text().map(|s| (d.path.as_str(), s)))
+        .collect();
+    let mut picked: Vec<(usize, bool, &str, &str)> = Vec::new();
+    for (path, text) in &svgs {
+        let stem = path.trim_end_matches(".svg");
+        let pos = t.order.iter().position(|p| matches(p.trim_start_matches('!'), stem));
+        let (rank, required) = match pos {
+            Some(p) => (p, t.order[p].starts_with('!')),
+            None => (t.order.len(), false),
+        };
+        picked.push((rank, required, path, text));
+    }
+    picked.sort_by_key(|p| p.0); // stable: the run's order within a rank
+    let mut out = Vec::new();
+    let mut unreadable = Vec::new();
+    for (_, required, path, text) in picked {
+        *next_id += 1;
+        match read_drawing(path, text, lang, required, *next_id) {
+            Some(d) => out.push(d),
+            None => unreadable.push(caption(path, lang)),
+        }
+    }
+    (out, unreadable)
+}
+
+/// The size of a drawing's box with its caption: (width, height, caption size).
+fn item_size(d: &Drawing) -> (f64, f64, f64) {
+    let size = if text_width(&d.caption, CAPTION_MM) <= d.w {
+        CAPTION_MM
+    } else {
+        3.5
+    };
+    let w = d.w.max(text_width(&d.caption, size));
+    (w, d.h + CAPTION_STRIP_MM, size)
+}
+
+/// The field the drawings may take: the inner frame less [`GAP_MM`].
+fn field(format: crate::project::SheetFormat) -> Rect {
+    let f = inner_frame(format);
+    Rect {
+        x: f.x + GAP_MM,
+        y: f.y + GAP_MM,
+        w: f.w - 2.0 * GAP_MM,
+        h: f.h - 2.0 * GAP_MM,
+    }
+}
+
+/// Pack `items` (indices into `ds`) in the given order; the boxes carry a
+/// trailing gap, the title block (and the note strip, when `note_h > 0`)
+/// is occupied first. Returns the placed (index, box without the gap) and
+/// the note's box.
+fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>, columns: bool) -> Packing {
+    let f = field(format);
+    let tb = title_block::place(inner_frame(format));
+    let mut p = Packer::new(Rect {
+        w: f.w + GAP_MM,
+        h: f.h + GAP_MM,
+        ..f
+    });
+    p.occupy(Rect {
+        x: tb.x - GAP_MM + GAP_MM,
+        y: tb.y - GAP_MM + GAP_MM,
+        w: f.right() + GAP_MM - tb.x,
+        h: f.bottom() + GAP_MM - tb.y,
+    });
+    let mut note_rect = None;
+    if let Some((nw, nh)) = note {
+        // the note sits right above the title block
+        let r = Rect {
+            x: tb.right() - nw,
+            y: tb.y - GAP_MM - nh,
+            w: nw,
+            h: nh,
+        };
+        p.occupy(Rect {
+            w: nw + GAP_MM,
+            h: nh + GAP_MM,
+            ..r
+        });
+        note_rect = Some(r);
+    }
+    let mut placed = Vec::new();
+    for &i in order {
+        let (w, h, _) = item_size(&ds[i]);
+        if let Some(r) = p.place_by(w + GAP_MM, h + GAP_MM, columns) {
+            placed.push((i, Rect { x: r.x, y: r.y, w, h }));
+        }
+    }
+    (placed, note_rect)
+}
+
+/// The best of several packings: the course's order, the tallest first,
+/// the widest first and the largest first, each filling rows and filling
+/// columns; the best places the most required drawings, then the most
+/// drawings, then the most area.
+fn best_pack(ds: &[Drawing], left: &[usize], format: crate::project::SheetFormat, note: Option<(f64, f64)>) -> Packing {
+    let sorted = |key: &dyn Fn(f64, f64) -> f64| {
+        let mut v = left.to_vec();
+        v.sort_by(|&a, &b| {
+            let (wa, ha, _) = item_size(&ds[a]);
+            let (wb, hb, _) = item_size(&ds[b]);
+            (ds[b].required, key(wb, hb))
+                .partial_cmp(&(ds[a].required, key(wa, ha)))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        v
+    };
+    let orders = [left.to_vec(), sorted(&|_, h| h), sorted(&|w, _| w), sorted(&|w, h| w * h)];
+    let score = |p: &Packing| {
+        let area: f64 = p.0.iter().map(|(_, r)| r.w * r.h).sum();
+        (p.0.iter().filter(|(i, _)| ds[*i].required).count(), p.0.len(), area)
+    };
+    let mut best: Option<Packing> = None;
+    for columns in [false, true] {
+        for o in &orders {
+            let p = pack(ds, o, format, note, columns);
+            if best.as_ref().is_none_or(|b| score(&p) > score(b)) {
+                best = Some(p);
+            }
+        }
+    }
+    best.unwrap_or_default()
+}
+
+/// A packing: the placed (drawing index, box) and the note's box.
+type Packing = (Vec<(usize, Rect)>, Option<Rect>);
+
+/// A page before numbering: template, drawings, placed, left out, note, continued.
+type Page = (usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool);
+
+const NOTE_MM: f64 = 3.5;
+const NOTE_LINE_MM: f64 = 5.5;
+const NOTE_CHARS: usize = 80;
+
+fn note_lines(lang: Language, left_out: &[String]) -> Vec<String> {
+    let text = format!("{}: {}.", word(lang, "sheet.left_out"), left_out.join("; "));
+    title_block::wrap(&text, NOTE_CHARS, 6)
+}
+
+/// Lay out the sheets of a run: the drawings of each course sheet found in
+/// `docs`, in `project`'s language and format. Sheets without drawings are
+/// not made. Numbers and the count are set over the whole set.
+pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
+    let lang = project.lang;
+    let format = project.sheet;
+    let mut next_id = 0;
+    // (template index, drawings placed, left out, note box, continued)
+    let mut pages: Vec<Page> = Vec::new();
+    for (ti, t) in TEMPLATES.iter().enumerate() {
+        let (ds, unreadable) = collect(docs, t, lang, &mut next_id);
+        if ds.is_empty() && unreadable.is_empty() {
+            continue;
+        }
+        let empty = field(format);
+        let tb = title_block::place(inner_frame(format));
+        // a drawing larger than an empty field can never be placed
+        let fits_empty = |d: &Drawing| {
+            let (w, h, _) = item_size(d);
+            (w <= empty.w && h <= empty.h - (tb.h + GAP_MM)) || (w <= empty.w - (tb.w + GAP_MM) && h <= empty.h)
+        };
+        let mut left_out: Vec<String> = unreadable;
+        let mut left: Vec<usize> = Vec::new();
+        for (i, d) in ds.iter().enumerate() {
+            if fits_empty(d) {
+                left.push(i);
+            } else {
+                left_out.push(d.caption.clone());
+            }
+        }
+        let mut continued = false;
+        loop {
+            let (placed, _) = best_pack(&ds, &left, format, None);
+            let rest: Vec<usize> = left.iter().copied().filter(|i| !placed.iter().any(|(j, _)| j == i)).collect();
+            let more_required = rest.iter().any(|&i| ds[i].required);
+            if more_required && !placed.is_empty() {
+                // a sheet to be continued shows the required drawings first;
+                // the optional ones wait for the last sheet of the topic
+                let required: Vec<usize> = left.iter().copied().filter(|&i| ds[i].required).collect();
+                let (only, _) = best_pack(&ds, &required, format, None);
+                let placed = if only.is_empty() { placed } else { only };
+                pages.push((ti, ds.clone(), to_placed(&ds, &placed), Vec::new(), None, continued));
+                left = left.iter().copied().filter(|i| !placed.iter().any(|(j, _)| j == i)).collect();
+                continued = true;
+                continue;
+            }
+            // the optional rest is left out, with a note above the title block
+            let mut out = left_out.clone();
+            out.extend(rest.iter().map(|&i| ds[i].caption.clone()));
+            let (placed, note) = if out.is_empty() {
+                (placed, None)
+            } else {
+                let lines = note_lines(lang, &out);
+                let nw = lines.iter().map(|l| text_width(l, NOTE_MM)).fold(0.0, f64::max).min(tb.w * 2.0);
+                let nh = NOTE_LINE_MM * (lines.len() as f64 + 2.0);
+                let (placed, note) = best_pack(&ds, &left, format, Some((nw, nh)));
+                out = left_out.clone();
+                out.extend(
+                    left.iter()
+                        .filter(|i| !placed.iter().any(|(j, _)| j == *i))
+                        .map(|&i| ds[i].caption.clone()),
+                );
+                (placed, note)
+            };
+            pages.push((ti, ds.clone(), to_placed(&ds, &placed), out, note, continued));
+            break;
+        }
+    }
+    let count = pages.len();
+    let mut sheets = Vec::new();
+    for (n, (ti, ds, placed, left_out, note, continued)) in pages.into_iter().enumerate() {
+        let has = |f: &str| ds.iter().any(|d| d.path.starts_with(f));
+        let key = match ti {
+            0 => "sheet.title_lever",
+            1 if has("dynamics/") && has("forces/") => "sheet.title_dynamics_forces",
+            1 if has("dynamics/") => "sheet.title_dynamics",
+            1 => "sheet.title_forces",
+            2 if has("gear/") && has("planetary/") => "sheet.title_gears_planetary",
+            2 if has("gear/") => "sheet.title_gears",
+            2 => "sheet.title_planetary",
+            _ => "sheet.title_cam",
+        };
+        let mut title = word(lang, key).to_string();
+        if continued {
+            let _ = write!(title, " ({})", word(lang, "sheet.continued"));
+        }
+        // the scale of the main drawing: the first placed, in the course's order, that carries one
+        let scale = ds
+            .iter()
+            .filter(|d| placed.iter().any(|p| p.source == d.path))
+            .find_map(|d| d.scale.clone())
+            .unwrap_or_default();
+        let mut sheet = Sheet {
+            number: n + 1,
+            title,
+            scale,
+            placed,
+            left_out,
+            note,
+            svg: String::new(),
+        };
+        sheet.svg = sheet_svg(&sheet, &ds, project, count);
+        sheets.push(sheet);
+    }
+    sheets
+}
+
+fn to_placed(ds: &[Drawing], placed: &[(usize, Rect)]) -> Vec<Placed> {
+    let mut v: Vec<Placed> = placed
+        .iter()
+        .map(|&(i, r)| {
+            let d = &ds[i];
+            let (w, _, _) = item_size(d);
+            Placed {
+                source: d.path.clone(),
+                caption: d.caption.clone(),
+                rect: Rect {
+                    x: r.x + 0.5 * (w - d.w),
+                    y: r.y + CAPTION_STRIP_MM,
+                    w: d.w,
+                    h: d.h,
+                },
+            }
+        })
+        .collect();
+    // the course's order in the file, whatever order packed them
+    v.sort_by_key(|p| ds.iter().position(|d| d.path == p.source));
+    v
+}
+
+fn num(x: f64) -> String {
+    let s = format!("{x:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".to_string() } else { s.to_string() }
+}
+
+fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> String {
+    let lang = project.lang;
+    let (w, h) = project.sheet.size_mm();
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\" data-format=\"{}\" data-sheet=\"{}\">",
+        project.sheet.name(),
+        sheet.number
+    );
+    let _ = writeln!(
+        s,
+        "<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\" stroke=\"none\"/>"
+    );
+    s.push_str("<g id=\"drawings\">\n");
+    for p in &sheet.placed {
+        let Some(d) = ds.iter().find(|d| d.path == p.source) else {
+            continue;
+        };
+        let (_, _, size) = item_size(d);
+        let mut cap = String::new();
+        let _ = write!(
+            cap,
+            "<text class=\"caption\" x=\"{}\" y=\"{}\" font-size=\"{size}\" font-family=\"{FONTS}\" font-style=\"italic\" text-anchor=\"middle\" fill=\"#000000\">{}</text>",
+            num(p.rect.x + 0.5 * p.rect.w),
+            num(p.rect.y - 0.5 * (CAPTION_STRIP_MM - size) - 0.5),
+            escape(&d.caption)
+        );
+        let scale = d.scale.as_ref().map_or(String::new(), |k| format!(" data-scale=\"{}\"", escape(k)));
+        let _ = writeln!(
+            s,
+            "{cap}\n<svg class=\"drawing\" data-source=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"{} {} {} {}\"{scale} overflow=\"hidden\">{}</svg>",
+            escape(&d.path),
+            num(p.rect.x),
+            num(p.rect.y),
+            num(p.rect.w),
+            num(p.rect.h),
+            num(d.view_box[0]),
+            num(d.view_box[1]),
+            num(d.view_box[2]),
+            num(d.view_box[3]),
+            d.body
+        );
+    }
+    s.push_str("</g>\n");
+    if let Some(r) = sheet.note {
+        let lines = note_lines(lang, &sheet.left_out);
+        let _ = writeln!(
+            s,
+            "<g id=\"note\" data-box=\"{} {} {} {}\">",
+            num(r.x),
+            num(r.y),
+            num(r.w),
+            num(r.h)
+        );
+        let marks: Vec<Mark> = lines
+            .iter()
+            .enumerate()
+            .map(|(i, l)| Mark::Text {
+                at: (r.x, r.y + NOTE_LINE_MM * (i as f64 + 1.0)),
+                size: NOTE_MM,
+                align: Align::Start,
+                text: l.clone(),
+                squeeze: (text_width(l, NOTE_MM) > r.w).then_some(r.w),
+            })
+            .collect();
+        s.push_str(&marks_svg(&marks));
+        s.push_str("</g>\n");
+    }
+    s.push_str("<g id=\"frame\">\n");
+    s.push_str(&marks_svg(&frame::frame_marks(project.sheet)));
+    s.push_str("</g>\n<g id=\"title-block\">\n");
+    let fields = title_block::Fields {
+        designation: project.designation.clone(),
+        title: sheet.title.clone(),
+        scale: sheet.scale.clone(),
+        sheet: sheet.number,
+        sheets: count,
+        student: project.student.clone(),
+        teacher: project.teacher.clone(),
+        organisation: vec![project.university.clone(), project.department.clone(), project.group.clone()],
+    };
+    let tb = title_block::place(inner_frame(project.sheet));
+    s.push_str(&marks_svg(&title_block::marks(tb, &fields, lang)));
+    s.push_str("</g>\n</svg>\n");
+    s
+}
+
+/// The sheets of a run as documents: `sheets/sheet-N.svg` and
+/// `sheets/sheet-N.dxf` for every sheet that has drawings.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{run_task, DEFAULT_TASK}};
+/// let run = run_task(&TaskSource::new("t.toml", DEFAULT_TASK)).unwrap();
+/// let svg = run.docs.get("sheets/sheet-1.svg").unwrap().as_text().unwrap();
+/// assert!(svg.contains("width=\"841mm\"") && svg.contains("data-source=\"linkage/positions.svg\""));
+/// assert!(run.docs.get("sheets/sheet-1.dxf").is_some());
+/// ```
+pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents, Error> {
+    let (_, h) = project.sheet.size_mm();
+    let mut out = Documents::new();
+    for sheet in layout_sheets(docs, project) {
+        let mut dxf = DxfDoc::new();
+        svg_to_dxf::convert(&sheet.svg, &mut dxf, h)
+            .map_err(|e| Error::Io(format!("sheet {}: cannot convert to DXF: {e}", sheet.number)))?;
+        out.add_text(format!("sheets/sheet-{}.svg", sheet.number), sheet.svg)?;
+        out.add_bytes(format!("sheets/sheet-{}.dxf", sheet.number), dxf.to_bytes()?)?;
+    }
+    Ok(out)
+}

@@ -1,0 +1,365 @@
+//! The drawing sheets, checked on their geometry read back from the files:
+//! every drawing inside the frame, off the title block and off the other
+//! drawings; the title block's grid where GOST 2.104 puts it; the DXF read
+//! back by the `dxf` crate; the same bytes for the same task; the words of
+//! the frame in the sheet's language.
+
+use std::path::PathBuf;
+
+use tmm_report::TaskSource;
+use tmm_report::output::Documents;
+use tmm_report::project::{Language, SheetFormat};
+use tmm_report::run::{DEFAULT_TASK, run_task, run_task_in};
+use tmm_report::sheets::layout::Rect;
+use tmm_report::sheets::xml::{Token, tokens};
+use tmm_report::words::word;
+
+/// The task text with `[project] sheet` set to `format`.
+fn with_sheet(text: &str, format: &str) -> String {
+    let lines: Vec<String> = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with("sheet ="))
+        .map(str::to_string)
+        .collect();
+    let mut t = lines.join("\n");
+    if t.contains("[project]") {
+        t = t.replacen("[project]", &format!("[project]\nsheet = \"{format}\""), 1);
+    } else {
+        t.push_str(&format!("\n[project]\nsheet = \"{format}\"\n"));
+    }
+    t
+}
+
+fn tasks() -> Vec<(String, String)> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut out = vec![("default".to_string(), DEFAULT_TASK.to_string())];
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    for p in files {
+        out.push((
+            p.file_name().unwrap().to_string_lossy().into_owned(),
+            std::fs::read_to_string(&p).unwrap(),
+        ));
+    }
+    assert!(out.len() > 10);
+    out
+}
+
+fn num(t: &Token<'_>, k: &str) -> f64 {
+    t.attr(k).unwrap_or_else(|| panic!("no {k}")).parse().unwrap()
+}
+
+/// The nested drawings of a sheet: (source, box).
+fn drawings(svg: &str) -> Vec<(String, Rect)> {
+    tokens(svg)
+        .unwrap()
+        .iter()
+        .filter(|t| matches!(t, Token::Start { name: "svg", .. }) && t.attr("class") == Some("drawing"))
+        .map(|t| {
+            (
+                t.attr("data-source").unwrap().to_string(),
+                Rect {
+                    x: num(t, "x"),
+                    y: num(t, "y"),
+                    w: num(t, "width"),
+                    h: num(t, "height"),
+                },
+            )
+        })
+        .collect()
+}
+
+/// A line's ends: x1, y1, x2, y2.
+type Segment = (f64, f64, f64, f64);
+
+/// The lines and texts inside `<g id="{group}">`.
+fn group(svg: &str, id: &str) -> (Vec<Segment>, Vec<String>) {
+    let toks = tokens(svg).unwrap();
+    let (mut lines, mut texts) = (Vec::new(), Vec::new());
+    let mut inside = 0usize;
+    let mut in_text = false;
+    for t in &toks {
+        match t {
+            Token::Start { name, empty, .. } => {
+                if inside > 0 && !empty {
+                    inside += 1;
+                } else if *name == "g" && t.attr("id") == Some(id) {
+                    inside = 1;
+                }
+                if inside > 0 && *name == "line" {
+                    lines.push((num(t, "x1"), num(t, "y1"), num(t, "x2"), num(t, "y2")));
+                }
+                in_text = inside > 0 && *name == "text";
+            }
+            Token::End { .. } => {
+                inside = inside.saturating_sub(1);
+                in_text = false;
+            }
+            Token::Text(s) if in_text => texts.push(s.clone()),
+            _ => {}
+        }
+    }
+    (lines, texts)
+}
+
+fn sheets(docs: &Documents) -> Vec<(String, String)> {
+    docs.iter()
+        .filter(|d| d.path.starts_with("sheets/") && d.extension() == "svg")
+        .map(|d| (d.path.clone(), d.as_text().unwrap().to_string()))
+        .collect()
+}
+
+#[test]
+fn drawings_stay_inside_the_frame_off_the_title_block_and_apart() {
+    for (name, text) in tasks() {
+        for (format, fmt) in [("A1", SheetFormat::A1), ("A2", SheetFormat::A2)] {
+            let run = run_task(&TaskSource::new(&name, with_sheet(&text, format))).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let (w, h) = fmt.size_mm();
+            let frame = Rect {
+                x: 20.0,
+                y: 5.0,
+                w: w - 25.0,
+                h: h - 10.0,
+            };
+            let tb = Rect {
+                x: w - 5.0 - 185.0,
+                y: h - 5.0 - 55.0,
+                w: 185.0,
+                h: 55.0,
+            };
+            let svgs = run
+                .docs
+                .iter()
+                .filter(|d| d.extension() == "svg" && !d.path.starts_with("sheets/"))
+                .count();
+            let sh = sheets(&run.docs);
+            assert_eq!(sh.is_empty(), svgs == 0, "{name} {format}: {svgs} drawings, {} sheets", sh.len());
+            for (path, svg) in &sh {
+                assert!(svg.contains(&format!("width=\"{w}mm\" height=\"{h}mm\"")), "{name} {path}");
+                let mut ds = drawings(svg);
+                assert!(!ds.is_empty(), "{name} {path}: a sheet without drawings");
+                // the note of what was left out takes its own box, checked as a drawing
+                if let Some(t) = tokens(svg).unwrap().iter().find(|t| t.attr("id") == Some("note")) {
+                    let v: Vec<f64> = t.attr("data-box").unwrap().split(' ').map(|x| x.parse().unwrap()).collect();
+                    ds.push((
+                        "note".to_string(),
+                        Rect {
+                            x: v[0],
+                            y: v[1],
+                            w: v[2],
+                            h: v[3],
+                        },
+                    ));
+                }
+                for (i, (src, r)) in ds.iter().enumerate() {
+                    assert!(frame.contains(r), "{name} {format} {path}: {src} {r:?} leaves the frame");
+                    assert!(!r.intersects(&tb), "{name} {format} {path}: {src} {r:?} meets the title block");
+                    for (src2, r2) in &ds[i + 1..] {
+                        assert!(!r.intersects(r2), "{name} {format} {path}: {src} and {src2} overlap");
+                    }
+                    if src == "note" {
+                        continue;
+                    }
+                    // placed at 1:1: the box is the drawing's own size
+                    let own = run.docs.get(src).unwrap().as_text().unwrap();
+                    assert!(own.contains(&format!("width=\"{}mm\"", r.w)), "{name} {src}: not at 1:1 ({})", r.w);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_title_block_is_185_by_55_in_the_corner_and_filled() {
+    let run = run_task(&TaskSource::new("default", DEFAULT_TASK)).unwrap();
+    let sh = sheets(&run.docs);
+    assert!(sh.len() >= 4, "the default project has the four course sheets");
+    for (path, svg) in &sh {
+        let (lines, texts) = group(svg, "title-block");
+        let xs = lines.iter().flat_map(|l| [l.0, l.2]);
+        let ys = lines.iter().flat_map(|l| [l.1, l.3]);
+        let (x0, x1) = xs.clone().fold((f64::MAX, f64::MIN), |a, v| (a.0.min(v), a.1.max(v)));
+        let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |a, v| (a.0.min(v), a.1.max(v)));
+        assert_eq!((x0, x1, y0, y1), (841.0 - 5.0 - 185.0, 836.0, 594.0 - 5.0 - 55.0, 589.0), "{path}");
+        // the column grid of form 1 (GOST 2.104): 7, 10, 23, 15, 10 | 70 | 5, 5, 5, 17, 18
+        let verticals: Vec<f64> = lines.iter().filter(|l| l.0 == l.2).map(|l| l.0 - x0).collect();
+        for x in [7.0, 17.0, 40.0, 55.0, 65.0, 135.0, 140.0, 145.0, 150.0, 167.0, 155.0] {
+            assert!(verticals.iter().any(|v| (v - x).abs() < 1e-9), "{path}: no column at {x}");
+        }
+        let rows: Vec<f64> = lines.iter().filter(|l| l.1 == l.3 && l.0 == x0).map(|l| l.1 - y0).collect();
+        for k in 1..11 {
+            assert!(
+                rows.iter().any(|v| (v - 5.0 * k as f64).abs() < 1e-9),
+                "{path}: no row at {}",
+                5 * k
+            );
+        }
+        let all = texts.join("|");
+        assert!(
+            all.contains("ТММ.КП.017.00.000") && all.contains("Иванов И. И.") && all.contains("Петров П. П."),
+            "{path}: {all}"
+        );
+        assert!(all.contains(&format!("|{}|", sh.len())), "{path}: the sheet count");
+    }
+}
+
+#[test]
+fn the_dxf_reads_back_with_its_layers_and_inside_the_sheet() {
+    for format in ["A1", "A2"] {
+        let run = run_task(&TaskSource::new("default", with_sheet(DEFAULT_TASK, format))).unwrap();
+        let (w, h) = if format == "A1" { (841.0, 594.0) } else { (594.0, 420.0) };
+        let dxfs: Vec<_> = run
+            .docs
+            .iter()
+            .filter(|d| d.path.starts_with("sheets/") && d.extension() == "dxf")
+            .collect();
+        assert!(dxfs.len() >= 4);
+        for d in dxfs {
+            let drawing = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap_or_else(|e| panic!("{}: {e}", d.path));
+            let layers: Vec<String> = drawing.layers().map(|l| l.name.clone()).collect();
+            for l in ["contour", "thin", "axis", "dimension", "text"] {
+                assert!(layers.iter().any(|x| x == l), "{}: no layer {l}", d.path);
+            }
+            let mut n = 0;
+            let mut on = std::collections::BTreeSet::new();
+            let inside = |x: f64, y: f64| (-1e-6..=w + 1e-6).contains(&x) && (-1e-6..=h + 1e-6).contains(&y);
+            for e in drawing.entities() {
+                n += 1;
+                on.insert(e.common.layer.clone());
+                use dxf::entities::EntityType as E;
+                match &e.specific {
+                    E::Line(l) => assert!(inside(l.p1.x, l.p1.y) && inside(l.p2.x, l.p2.y), "{}: line {:?}", d.path, l.p1),
+                    E::LwPolyline(p) => assert!(p.vertices.iter().all(|v| inside(v.x, v.y)), "{}: polyline", d.path),
+                    E::Circle(c) => assert!(
+                        inside(c.center.x - c.radius, c.center.y - c.radius) && inside(c.center.x + c.radius, c.center.y + c.radius)
+                    ),
+                    E::Text(t) => assert!(inside(t.location.x, t.location.y), "{}: text {}", d.path, t.value),
+                    _ => {}
+                }
+            }
+            assert!(n > 100, "{}: {n} entities", d.path);
+            for l in ["contour", "thin", "text"] {
+                assert!(on.contains(l), "{}: nothing on {l}", d.path);
+            }
+        }
+        // the frame: the thick inner rectangle on `contour`, 20 mm from the left, 5 mm elsewhere (y up)
+        let d = run.docs.get("sheets/sheet-1.dxf").unwrap();
+        let drawing = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
+        let frame_lines = drawing
+            .entities()
+            .filter(|e| e.common.layer == "contour")
+            .filter_map(|e| match &e.specific {
+                dxf::entities::EntityType::Line(l) => Some((l.p1.x, l.p1.y, l.p2.x, l.p2.y)),
+                _ => None,
+            })
+            .filter(|l| (l.0 - 20.0).abs() < 1e-9 && (l.2 - 20.0).abs() < 1e-9)
+            .count();
+        assert!(frame_lines >= 1, "{format}: the frame's left line at x = 20");
+    }
+}
+
+#[test]
+fn the_same_task_gives_the_same_bytes() {
+    let a = run_task(&TaskSource::new("t", DEFAULT_TASK)).unwrap();
+    let b = run_task(&TaskSource::new("t", DEFAULT_TASK)).unwrap();
+    let pick = |r: &tmm_report::run::Run| r.docs.iter().filter(|d| d.path.starts_with("sheets/")).cloned().collect::<Vec<_>>();
+    let (x, y) = (pick(&a), pick(&b));
+    assert!(x.len() >= 8);
+    assert_eq!(x, y);
+}
+
+#[test]
+fn the_frame_speaks_the_sheets_language() {
+    let fields = ["ТММ.КП.017.00.000", "Иванов И. И.", "Петров П. П.", "2бАТ1"];
+    for lang in [Language::Ru, Language::Uk, Language::En] {
+        let run = run_task_in(&TaskSource::new("t", DEFAULT_TASK), Some(lang)).unwrap();
+        for (path, svg) in sheets(&run.docs) {
+            let (_, texts) = group(&svg, "title-block");
+            for k in [
+                "sheet.tb_drawn",
+                "sheet.tb_checked",
+                "sheet.tb_scale",
+                "sheet.tb_sheets",
+                "sheet.tb_document",
+            ] {
+                assert!(texts.iter().any(|t| t == word(lang, k)), "{path} {}: no {k}", lang.code());
+            }
+            if lang != Language::En {
+                for t in texts
+                    .iter()
+                    .filter(|t| !fields.contains(&t.as_str()) && !t.contains("МАДИ") && !t.contains("Кафедра"))
+                {
+                    assert!(
+                        !t.chars().any(|c| c.is_ascii_alphabetic()),
+                        "{path} {}: English in the title block: {t}",
+                        lang.code()
+                    );
+                }
+                let caps = tokens(&svg)
+                    .unwrap()
+                    .windows(2)
+                    .filter(|w| w[0].attr("class") == Some("caption"))
+                    .filter_map(|w| if let Token::Text(s) = &w[1] { Some(s.clone()) } else { None })
+                    .collect::<Vec<_>>();
+                assert!(!caps.is_empty());
+                for c in caps {
+                    assert!(
+                        !c.chars().any(|c| c.is_ascii_alphabetic()),
+                        "{path} {}: English caption {c}",
+                        lang.code()
+                    );
+                }
+            } else {
+                assert!(texts.iter().all(|t| !t.contains("Разраб.")));
+            }
+        }
+    }
+}
+
+fn fake(w: f64, h: f64, extra: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\"{extra}>\n<g id=\"x\"><line x1=\"0\" y1=\"0\" x2=\"{w}\" y2=\"{h}\" stroke=\"#000\" stroke-width=\"0.7\"/></g></svg>\n"
+    )
+}
+
+#[test]
+fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
+    use tmm_report::project::Project;
+    use tmm_report::sheets::layout_sheets;
+    let mut docs = Documents::new();
+    docs.add_text("cam/cam.svg", fake(200.0, 200.0, " data-scale=\"2:1\"")).unwrap();
+    docs.add_text("cam/cam-motion.svg", fake(200.0, 150.0, " data-scale=\"1:5\""))
+        .unwrap();
+    docs.add_text("cam/cam-pressure.svg", fake(900.0, 100.0, "")).unwrap(); // wider than any A1 field
+    docs.add_text("cam/extra-7.svg", fake(100.0, 100.0, "")).unwrap();
+    let sheets = layout_sheets(&docs, &Project::default());
+    assert_eq!(sheets.len(), 1);
+    let s = &sheets[0];
+    assert_eq!(s.scale, "2:1");
+    assert_eq!(s.placed.len(), 3);
+    assert_eq!(s.left_out, vec![word(Language::Ru, "sheet.fig_cam_cam_pressure").to_string()]);
+    assert!(s.svg.contains(word(Language::Ru, "sheet.left_out")));
+    let (_, texts) = group(&s.svg, "title-block");
+    assert!(texts.iter().any(|t| t == "2:1") && texts.iter().any(|t| t == "Кулачковый механизм"));
+    // ids of the nested drawings are made unique
+    assert!(!s.svg.contains("id=\"x\""));
+    let mut ids: Vec<&str> = s
+        .svg
+        .split("id=\"")
+        .skip(1)
+        .filter_map(|t| t.split('"').next())
+        .filter(|t| t.ends_with("-x"))
+        .collect();
+    assert_eq!(ids.len(), 3, "one prefixed id per drawing");
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), 3, "the ids differ");
+    // the placed boxes are the drawings' own sizes
+    let mut sizes: Vec<(f64, f64)> = drawings(&s.svg).iter().map(|(_, r)| (r.w, r.h)).collect();
+    sizes.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(sizes, vec![(100.0, 100.0), (200.0, 150.0), (200.0, 200.0)]);
+}
