@@ -169,8 +169,10 @@ await js(`document.querySelector('#tabs [data-view="mechanism"]').click(), true`
 await js("(window.tmmPage.fpsFrames = 0, document.getElementById('play').click(), true)");
 const t0 = Date.now();
 await sleep(3000);
-const nFrames = await js("(document.getElementById('play').click(), window.tmmPage.fpsFrames)");
+const nFrames = await js("window.tmmPage.fpsFrames");
 results.figures.animation_fps = nFrames / ((Date.now() - t0) / 1000);
+await shot("mechanism", "mechanism-seed-003-playing");
+await js("(document.getElementById('play').click(), true)");
 results.figures.at_angle_ms = await js("window.tmmPage.lastAngleMs");
 console.log("animation of seed-003 with plans:", results.figures.animation_fps.toFixed(1), "frames/s");
 await shot("mechanism", "mechanism-seed-003");
