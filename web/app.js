@@ -168,7 +168,7 @@ function showFiles() {
   const ul = $("file-list"); ul.replaceChildren();
   const add = (label, fn) => { const li = document.createElement("li"); const b = document.createElement("a"); b.href = "#"; b.textContent = label; b.onclick = (e) => { e.preventDefault(); fn(); }; li.append(b); ul.append(li); };
   add("task.toml (the task in the editor)", () => download(state.name, $("editor").value, "text/plain"));
-  const all = ["report", ...state.reply.sections.map((s) => s.section)].flatMap(sectionFiles);
+  const all = ["report", ...state.reply.sections.map((s) => s.section), "sheets"].flatMap(sectionFiles);
   for (const f of all) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
 }
 

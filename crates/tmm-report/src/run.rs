@@ -208,7 +208,7 @@ pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run
         docs.append(o.docs.clone());
     }
     // the drawing sheets, made of the drawings above
-    let sheets = crate::sheets::sheet_documents(&docs, &project)?;
+    let sheets = crate::sheets::sheet_documents(&docs, &prepared.project)?;
     docs.append(sheets);
     Ok(Run {
         sections,

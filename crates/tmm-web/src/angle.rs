@@ -143,7 +143,7 @@ fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_repo
 /// let p = tmm_web::page::Page::new("t.toml", tmm_report::run::DEFAULT_TASK, None).unwrap();
 /// let v: serde_json::Value = serde_json::from_str(&tmm_web::angle::plan_vectors(&p, 1.0)).unwrap();
 /// assert_eq!(v["ok"], true);
-/// assert!(v["velocity"].as_array().unwrap().iter().any(|x| x["label"] == "V_A"));
+/// assert!(v["velocity"].as_array().unwrap().iter().any(|x| x["label"] == "V_B" && x["kind"] == "Absolute"));
 /// ```
 pub fn plan_vectors(p: &Page, phi: f64) -> String {
     if !phi.is_finite() {

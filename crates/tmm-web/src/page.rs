@@ -58,6 +58,10 @@ pub struct Page {
     kept: Vec<Rc<Kept>>,
     /// `report.json`, made when asked.
     report_doc: OnceCell<Documents>,
+    /// The `[project]` data (sheet format, title block) for the sheets.
+    project: tmm_report::project::Project,
+    /// The drawing sheets (`sheets/…`), made when asked.
+    sheets: OnceCell<Result<Documents, Value>>,
 }
 
 impl Page {
@@ -130,6 +134,8 @@ impl Page {
             rerun,
             kept,
             report_doc: OnceCell::new(),
+            project: prepared.project,
+            sheets: OnceCell::new(),
         })
     }
 
@@ -185,6 +191,9 @@ impl Page {
             return d.get(path);
         }
         let (dir, _) = path.split_once('/')?;
+        if dir == "sheets" {
+            return self.sheets().as_ref().ok()?.get(path);
+        }
         let (k, s) = self.sections().find(|(_, s)| s.output.section == dir)?;
         s.output.docs.get(path).or_else(|| self.drawn(k, s).as_ref().ok()?.get(path))
     }
@@ -196,6 +205,15 @@ impl Page {
         if name == "report" {
             let size = self.file("report.json").map_or(0, |d| d.bytes.len());
             return json!({ "ok": true, "files": [{ "path": "report.json", "size": size }] });
+        }
+        if name == "sheets" {
+            return match self.sheets() {
+                Ok(d) => {
+                    let files: Vec<Value> = d.iter().map(|d| json!({ "path": d.path, "size": d.bytes.len() })).collect();
+                    json!({ "ok": true, "files": files })
+                }
+                Err(e) => e.clone(),
+            };
         }
         let Some((k, s)) = self.sections().find(|(_, s)| s.output.section == name) else {
             return json!({ "ok": true, "files": [] });
@@ -212,8 +230,15 @@ impl Page {
         json!({ "ok": true, "files": files })
     }
 
-    /// Every file of the run, as `tmm run` writes them (all drawings made).
+    /// Every file of the run in `tmm run`'s order (all drawings made).
     pub fn docs(&self) -> Result<Vec<&Document>, Value> {
+        let mut all = self.section_docs()?;
+        all.extend(self.sheets().as_ref().map_err(Clone::clone)?.iter());
+        Ok(all)
+    }
+
+    /// `report.json` and every section's files, in `tmm run`'s order.
+    fn section_docs(&self) -> Result<Vec<&Document>, Value> {
         let mut all: Vec<&Document> = self.file("report.json").into_iter().collect();
         for (k, s) in self.sections() {
             let drawn = self.drawn(k, s).as_ref().map_err(Clone::clone)?;
@@ -223,10 +248,30 @@ impl Page {
         Ok(all)
     }
 
+    /// The drawing sheets of the run ([`tmm_report::sheets::sheet_documents`]
+    /// over every section's files), made on the first call.
+    fn sheets(&self) -> &Result<Documents, Value> {
+        self.sheets.get_or_init(|| {
+            let mut docs = Documents::new();
+            for d in self.section_docs()? {
+                docs.append(single(d));
+            }
+            tmm_report::sheets::sheet_documents(&docs, &self.project).map_err(|e| reply::from_error(&self.task, &e))
+        })
+    }
+
     /// Whether the run has the section `name`.
     pub fn has(&self, name: &str) -> bool {
         self.sections().any(|(_, s)| s.output.section == name)
     }
+}
+
+/// One document as a set of one (its bytes were checked when first made).
+fn single(d: &Document) -> Documents {
+    let mut one = Documents::new();
+    // a path taken from a set of documents is a valid path
+    let _ = one.add_bytes(d.path.clone(), d.bytes.clone());
+    one
 }
 
 /// Run the task and build the page's reply: on success

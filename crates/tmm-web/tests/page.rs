@@ -55,7 +55,17 @@ fn the_reply_and_the_files_are_those_of_tmm_run() {
     assert!(page.report() == cli.report, "the page's report is not tmm run's");
     // each section lists its files, drawings made on asking, the CLI's bytes
     let mut listed = 0;
-    for s in ["report", "synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam"] {
+    for s in [
+        "report",
+        "synthesis",
+        "linkage",
+        "forces",
+        "dynamics",
+        "gear",
+        "planetary",
+        "cam",
+        "sheets",
+    ] {
         let l = page.files(s);
         assert_eq!(l["ok"], true);
         for f in l["files"].as_array().unwrap() {
