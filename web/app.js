@@ -76,22 +76,48 @@ function analyse() {
   $("status").classList.remove("bad");
   showError(null);
   state.reply = r;
-  showNumbers(r);
-  showFiles(r);
+  state.lists = {};
   state.frames = JSON.parse(tmm.frames(360));
   if (!state.frames.ok) state.frames = null;
-  setAngleIndex(+$("angle").value);
-  showDiagrams();
-  showGear();
-  showPlanetary();
-  showCam();
+  // every view is drawn anew when it is next shown; the shown one now
+  state.dirty = new Set(Object.keys(VIEWS));
+  render(activeView());
 }
-// the median time of n analyses of the editor's text (for the browser test)
-state.timeAnalyse = (n) => {
-  const ts = [];
-  for (let k = 0; k < n; k++) { const t0 = performance.now(); tmm.analyse(state.name, $("editor").value, $("lang").value); ts.push(performance.now() - t0); }
-  ts.sort((a, b) => a - b);
-  return ts[Math.floor(n / 2)];
+// The views, each drawn only when shown after a new analysis (a section's
+// drawings are made by the module only when a view or a download asks).
+const VIEWS = {
+  numbers: () => showNumbers(state.reply),
+  mechanism: () => setAngleIndex(+$("angle").value),
+  diagrams: () => showDiagrams(),
+  gear: () => showGear(),
+  planetary: () => showPlanetary(),
+  cam: () => showCam(),
+  files: () => showFiles(),
+};
+state.dirty = new Set();
+const activeView = () => document.querySelector("#tabs button.active").dataset.view;
+function render(view) {
+  if (!state.reply || !state.dirty.has(view)) return;
+  state.dirty.delete(view);
+  VIEWS[view]();
+}
+// The median time of n edits (for the browser test): the analyses of the
+// texts in turn, each a change from the one before, so the sections that
+// read the changed table run each time. Returns the median of the module's
+// call alone and with the page reading its reply; the editor's text is
+// analysed again at the end.
+state.timeAnalyse = (n, texts) => {
+  const call = [], whole = [];
+  for (let k = 0; k < n; k++) {
+    const t0 = performance.now();
+    const out = tmm.analyse(state.name, texts[k % texts.length], $("lang").value);
+    const t1 = performance.now();
+    JSON.parse(out);
+    call.push(t1 - t0); whole.push(performance.now() - t0);
+  }
+  analyse();
+  const med = (ts) => ts.sort((a, b) => a - b)[Math.floor(ts.length / 2)];
+  return { call: med(call), with_reply: med(whole) };
 };
 let analyseTimer = 0;
 function scheduleAnalyse() { clearTimeout(analyseTimer); analyseTimer = setTimeout(analyse, 150); }
@@ -118,7 +144,18 @@ function drawing(title, svg) {
 function fill(id, items) {
   const el = $(id); el.replaceChildren(...items.map(([t, s]) => drawing(t, s)));
 }
-const files = (prefix, ext = ".svg") => (state.reply ? state.reply.files.map((f) => f.path).filter((p) => p.startsWith(prefix) && p.endsWith(ext)) : []);
+// The files of one section of the last run ("report" for report.json),
+// asked for once per analysis: the module makes the section's drawings then.
+function sectionFiles(section) {
+  if (!state.reply) return [];
+  if (!(section in state.lists)) {
+    const l = JSON.parse(tmm.files(section));
+    if (!l.ok) { $("status").textContent = l.error.message; $("status").classList.add("bad"); }
+    state.lists[section] = l.ok ? l.files : [];
+  }
+  return state.lists[section];
+}
+const files = (prefix, ext = ".svg") => sectionFiles(prefix.split("/")[0]).map((f) => f.path).filter((p) => p.startsWith(prefix) && p.endsWith(ext));
 
 // ---------- downloads ----------
 function download(name, bytes, type) {
@@ -127,11 +164,12 @@ function download(name, bytes, type) {
   a.download = name; a.click();
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 }
-function showFiles(r) {
+function showFiles() {
   const ul = $("file-list"); ul.replaceChildren();
   const add = (label, fn) => { const li = document.createElement("li"); const b = document.createElement("a"); b.href = "#"; b.textContent = label; b.onclick = (e) => { e.preventDefault(); fn(); }; li.append(b); ul.append(li); };
   add("task.toml (the task in the editor)", () => download(state.name, $("editor").value, "text/plain"));
-  for (const f of r.files) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
+  const all = ["report", ...state.reply.sections.map((s) => s.section), "sheets"].flatMap(sectionFiles);
+  for (const f of all) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
 }
 
 // ---------- mechanism: animation, slider, dragging, plans at the angle ----------
@@ -145,16 +183,55 @@ function setAngleIndex(i) {
   $("angle-out").dataset.phi = phi;
   drawMechanism();
   const t0 = performance.now();
-  const a = JSON.parse(tmm.at_angle(phi, !state.playing));
+  if (state.playing) {
+    // a frame: the plans' vectors of the one solved position, drawn here;
+    // the drawings (the CLI's SVG), the forces and the cursors when the
+    // crank stops
+    const a = JSON.parse(tmm.plan_vectors(phi));
+    state.lastAngleMs = performance.now() - t0;
+    if (a.ok) drawPlans(a);
+    return;
+  }
+  const a = JSON.parse(tmm.at_angle(phi, true));
   state.lastAngleMs = performance.now() - t0;
   if (!a.ok) return;
   fill("plans", [["Velocity plan", a.velocity_plan], ["Acceleration plan", a.acceleration_plan]]);
-  if (state.playing) return; // the forces and the cursors when the crank stops
   if (a.forces) {
     fill("force-plans", Object.entries(a.forces.files));
     $("torque").textContent = `Mb = ${fmt(a.forces.balancing_moment)} N·m (Zhukovsky: ${fmt(a.forces.zhukovsky_moment)} N·m)`;
   } else { $("force-plans").replaceChildren(); $("torque").textContent = ""; }
   moveCursors(a.psi);
+}
+// The velocity and acceleration plans of a frame of the animation on two
+// canvases: each vector from its start to its end, the pole p (π) at the
+// origin, the points' images named; the scale fits each plan to its box.
+function drawPlans(a) {
+  let cs = [...document.querySelectorAll("#plans canvas")];
+  if (cs.length !== 2) {
+    fill("plans", [["Velocity plan", ""], ["Acceleration plan", ""]]);
+    cs = [...document.querySelectorAll("#plans .drawing")].map((d) => { const c = document.createElement("canvas"); c.width = 420; c.height = 320; d.append(c); return c; });
+  }
+  [[a.velocity, "p"], [a.acceleration, "π"]].forEach(([vs, pole], i) => {
+    const c = cs[i], g = c.getContext("2d");
+    g.clearRect(0, 0, c.width, c.height);
+    let r = 1e-12;
+    for (const v of vs) r = Math.max(r, Math.abs(v.from[0]), Math.abs(v.from[1]), Math.abs(v.to[0]), Math.abs(v.to[1]));
+    const s = (Math.min(c.width, c.height) / 2 - 24) / r, cx = c.width / 2, cy = c.height / 2;
+    const to = ([x, y]) => [cx + s * x, cy - s * y];
+    g.font = "12px sans-serif"; g.lineCap = "round";
+    for (const v of vs) {
+      const [u1, v1] = to(v.from), [u2, v2] = to(v.to), L = Math.hypot(u2 - u1, v2 - v1);
+      if (L < 0.5) continue;
+      g.strokeStyle = g.fillStyle = v.kind === "Absolute" ? "#1f4e9c" : "#555";
+      g.lineWidth = v.kind === "Absolute" ? 2 : 1;
+      g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke();
+      const ux = (u2 - u1) / L, uy = (v2 - v1) / L, k = Math.min(8, L / 2);
+      g.beginPath(); g.moveTo(u2, v2); g.lineTo(u2 - k * ux - k * 0.35 * uy, v2 - k * uy + k * 0.35 * ux); g.lineTo(u2 - k * ux + k * 0.35 * uy, v2 - k * uy - k * 0.35 * ux); g.closePath(); g.fill();
+      if (v.kind === "Absolute") { g.fillStyle = "#000"; g.fillText(v.label.replace(/^[Va]_?/, "").toLowerCase(), u2 + 4, v2 - 4); }
+    }
+    g.fillStyle = "#000"; g.fillText(pole, cx - 12, cy + 14);
+    g.beginPath(); g.arc(cx, cy, 3, 0, 2 * Math.PI); g.fill();
+  });
 }
 function mechTransform() {
   const F = state.frames, c = $("mech");
@@ -164,12 +241,14 @@ function mechTransform() {
   const ox = (c.width - s * (x1 - x0)) / 2 - s * x0, oy = (c.height + s * (y1 - y0)) / 2 + s * y0;
   return { s, to: ([x, y]) => [ox + s * x, oy - s * y], from: (u, v) => [(u - ox) / s, (oy - v) / s] };
 }
-function drawMechanism() {
-  const F = state.frames, c = $("mech"), g = c.getContext("2d");
-  g.clearRect(0, 0, c.width, c.height);
-  if (!F) return;
-  const T = mechTransform(); state.T = T;
-  // traced paths of every point
+// The scale and the traced paths of every point, drawn once per set of
+// frames onto a canvas of their own; a frame copies it and draws the links.
+function mechBackground() {
+  const F = state.frames, c = $("mech");
+  if (state.bg && state.bg.frames === F && state.bg.canvas.width === c.width && state.bg.canvas.height === c.height) return state.bg;
+  const T = mechTransform();
+  const canvas = document.createElement("canvas"); canvas.width = c.width; canvas.height = c.height;
+  const g = canvas.getContext("2d");
   g.lineWidth = 1;
   F.names.forEach((_, j) => {
     g.strokeStyle = `hsl(${(j * 67) % 360} 60% 60%)`;
@@ -177,6 +256,20 @@ function drawMechanism() {
     F.xy.forEach((fr, k) => { const [u, v] = T.to(fr[j]); k ? g.lineTo(u, v) : g.moveTo(u, v); });
     g.closePath(); g.stroke();
   });
+  // the frame's pivots: the points that do not move over the cycle
+  const half = F.xy[Math.floor(F.xy.length / 2)];
+  const quarter = F.xy[Math.floor(F.xy.length / 4)];
+  const still = (a, b, j) => Math.hypot(a[j][0] - b[j][0], a[j][1] - b[j][1]) <= 1e-9;
+  const fixed = F.names.map((_, j) => still(F.xy[0], half, j) && still(F.xy[0], quarter, j));
+  state.bg = { frames: F, canvas, T, fixed };
+  return state.bg;
+}
+function drawMechanism() {
+  const F = state.frames, c = $("mech"), g = c.getContext("2d");
+  g.clearRect(0, 0, c.width, c.height);
+  if (!F) return;
+  const bg = mechBackground(), T = bg.T; state.T = T;
+  g.drawImage(bg.canvas, 0, 0);
   const fr = F.xy[state.frame];
   g.strokeStyle = "#1f4e9c"; g.lineWidth = 4; g.lineCap = "round";
   for (const [a, b] of F.segments) { const [u1, v1] = T.to(fr[a]), [u2, v2] = T.to(fr[b]); g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke(); }
@@ -186,10 +279,8 @@ function drawMechanism() {
     g.beginPath(); g.arc(u, v, 4, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.lineWidth = 1.5; g.strokeStyle = "#000"; g.stroke();
     g.fillStyle = "#000"; g.fillText(n, u + 6, v - 6);
   });
-  // the frame's pivots: the points that do not move over the cycle
-  const half = F.xy[Math.floor(F.xy.length / 2)];
   F.names.forEach((_, j) => {
-    if (Math.hypot(fr[j][0] - half[j][0], fr[j][1] - half[j][1]) > 1e-9 || Math.hypot(fr[j][0] - F.xy[0][j][0], fr[j][1] - F.xy[0][j][1]) > 1e-9) return;
+    if (!bg.fixed[j]) return;
     const [pu, pv] = T.to(fr[j]);
     g.beginPath(); g.moveTo(pu, pv + 4); g.lineTo(pu - 8, pv + 14); g.lineTo(pu + 8, pv + 14); g.closePath(); g.stroke();
     g.beginPath(); g.moveTo(pu - 12, pv + 14); g.lineTo(pu + 12, pv + 14); g.stroke();
@@ -225,7 +316,7 @@ function playLoop() {
 $("play").onclick = () => {
   state.playing = !state.playing;
   $("play").textContent = state.playing ? "❚❚ Pause" : "▶ Play";
-  if (state.playing) requestAnimationFrame(playLoop);
+  if (state.playing) { $("torque").textContent = ""; $("force-plans").replaceChildren(); requestAnimationFrame(playLoop); }
   else setAngleIndex(state.frame);
 };
 
@@ -328,6 +419,7 @@ $("cam-play").onclick = () => { state.camPlaying = !state.camPlaying; $("cam-pla
 document.querySelectorAll("#tabs button").forEach((b) => (b.onclick = () => {
   document.querySelectorAll("#tabs button, .view").forEach((x) => x.classList.remove("active"));
   b.classList.add("active"); $("view-" + b.dataset.view).classList.add("active");
+  render(b.dataset.view);
   if (b.dataset.view === "diagrams" && state.frames) moveCursors(cursorPsi());
 }));
 async function main() {

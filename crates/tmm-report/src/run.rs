@@ -61,27 +61,141 @@ pub fn run_task(task: &TaskSource) -> Result<Run, Error> {
 /// assert_eq!(run.project.lang, Language::En);
 /// ```
 pub fn run_task_in(task: &TaskSource, lang: Option<crate::project::Language>) -> Result<Run, Error> {
+    let prepared = prepare(task, lang)?;
+    let mut sections = Vec::new();
+    for run in RUNNERS {
+        if let Some(o) = run(&prepared.task)? {
+            sections.push(o);
+        }
+    }
+    assemble(&prepared, sections)
+}
+
+/// A task made ready for its sections: the top-level tables as the user
+/// wrote them, the `[project]` data, and the task as the sections read it
+/// (language and sheet applied, a synthesised `[linkage]` written in).
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    /// The top-level tables of the text the user wrote.
+    pub table: toml::Table,
+    /// The `[project]` data (with the language asked for).
+    pub project: crate::project::Project,
+    /// The task as the sections read it.
+    pub task: TaskSource,
+}
+
+/// Check the task's sections, read `[project]` and write in the mechanism
+/// a `[synthesis]` without `[linkage]` gives; the first step of
+/// [`run_task_in`], for a caller that runs the sections one by one
+/// ([`run_section`]) and puts them together with [`assemble`].
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{prepare, DEFAULT_TASK}};
+/// let p = prepare(&TaskSource::new("t.toml", DEFAULT_TASK), None).unwrap();
+/// assert!(p.table.contains_key("gear"));
+/// ```
+pub fn prepare(task: &TaskSource, lang: Option<crate::project::Language>) -> Result<Prepared, Error> {
     let table = task.check_sections()?;
     let mut project = crate::project::load(task)?;
     if let Some(l) = lang {
         project.lang = l;
     }
-    let task = &task.clone().with_lang(project.lang).with_sheet(project.sheet);
+    let task = task.clone().with_lang(project.lang).with_sheet(project.sheet);
     if !table.keys().any(|k| k != "title" && k != "project") {
         return Err(Error::input(&task.name, "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[2..].join(", "))));
     }
     // [synthesis] without [linkage]: the other sections see the synthesised one
-    let task = &*synthesis::with_linkage(task)?;
-    let mut sections = Vec::new();
-    for run in RUNNERS {
-        if let Some(o) = run(task)? {
-            sections.push(o);
-        }
+    let task = synthesis::with_linkage(&task)?.into_owned();
+    Ok(Prepared { table, project, task })
+}
+
+/// The sections in the order of the course project, each with the
+/// top-level tables of the task it reads (besides the language and sheet,
+/// which come from `[project]`): a section's output depends on these only.
+pub const SECTION_TABLES: &[(&str, &[&str])] = &[
+    ("synthesis", &["title", "project", "synthesis", "linkage"]),
+    ("linkage", &["title", "project", "synthesis", "linkage"]),
+    ("forces", &["title", "project", "synthesis", "linkage", "forces"]),
+    ("dynamics", &["title", "project", "synthesis", "linkage", "forces", "dynamics"]),
+    ("gear", &["title", "project", "gear"]),
+    ("planetary", &["title", "project", "planetary"]),
+    ("cam", &["title", "project", "cam"]),
+];
+
+/// Run one section (a name of [`SECTION_TABLES`]) of a task made ready by
+/// [`prepare`]; `None` when the task has no such section.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{prepare, run_section, DEFAULT_TASK}};
+/// let p = prepare(&TaskSource::new("t.toml", DEFAULT_TASK), None).unwrap();
+/// let gear = run_section("gear", &p.task).unwrap().unwrap();
+/// assert!(gear.docs.get("gear/contour.svg").is_some());
+/// assert!(run_section("no such", &p.task).unwrap().is_none());
+/// ```
+pub fn run_section(name: &str, task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
+    match SECTION_TABLES.iter().position(|(n, _)| *n == name) {
+        Some(i) => RUNNERS[i](task),
+        None => Ok(None),
     }
+}
+
+/// A section's output in two stages: the tables and the JSON at once, the
+/// drawings (the section's SVG, DXF and CSV files) only when asked — for
+/// a caller that shows the numbers first and a drawing when it is looked
+/// at. `output` and the documents of `draw` together are what
+/// [`run_section`] gives.
+pub struct Staged {
+    /// The section's tables, JSON and the documents made without drawing.
+    pub output: SectionOutput,
+    /// Make the section's drawings.
+    pub draw: Box<dyn Fn() -> Result<Documents, Error>>,
+}
+
+impl std::fmt::Debug for Staged {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Staged").field("output", &self.output).finish_non_exhaustive()
+    }
+}
+
+impl Staged {
+    /// The section's drawings (see [`Staged`]).
+    pub fn drawings(&self) -> Result<Documents, Error> {
+        (self.draw)()
+    }
+}
+
+/// Run one section (a name of [`SECTION_TABLES`]) in two stages (see
+/// [`Staged`]): `linkage`, `forces` and `dynamics` defer their drawings;
+/// the other sections are computed whole and have no drawings left to make.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{prepare, run_section, run_staged, DEFAULT_TASK}};
+/// let p = prepare(&TaskSource::new("t.toml", DEFAULT_TASK), None).unwrap();
+/// let s = run_staged("linkage", &p.task).unwrap().unwrap();
+/// assert!(s.output.docs.get("linkage/positions.svg").is_none());
+/// let drawn = s.drawings().unwrap();
+/// let whole = run_section("linkage", &p.task).unwrap().unwrap();
+/// assert_eq!(drawn.get("linkage/positions.svg").unwrap().bytes, whole.docs.get("linkage/positions.svg").unwrap().bytes);
+/// ```
+pub fn run_staged(name: &str, task: &TaskSource) -> Result<Option<Staged>, Error> {
+    match name {
+        "linkage" => linkage::run_staged(task),
+        "forces" => forces::run_staged(task),
+        "dynamics" => dynamics::run_staged(task),
+        _ => Ok(run_section(name, task)?.map(|output| Staged {
+            output,
+            draw: Box::new(|| Ok(Documents::new())),
+        })),
+    }
+}
+
+/// Put the sections' outputs (in course order) together into a run: the
+/// combined report and the files.
+pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run, Error> {
     let mut doc = serde_json::Map::new();
     doc.insert("units".into(), "SI".into());
-    if let Some(toml::Value::String(t)) = table.get("title") {
+    if let Some(toml::Value::String(t)) = prepared.table.get("title") {
         doc.insert("title".into(), t.clone().into());
     }
     for o in &sections {
@@ -94,12 +208,12 @@ pub fn run_task_in(task: &TaskSource, lang: Option<crate::project::Language>) ->
         docs.append(o.docs.clone());
     }
     // the drawing sheets, made of the drawings above
-    let sheets = crate::sheets::sheet_documents(&docs, &project)?;
+    let sheets = crate::sheets::sheet_documents(&docs, &prepared.project)?;
     docs.append(sheets);
     Ok(Run {
         sections,
         report,
-        project,
+        project: prepared.project.clone(),
         docs,
     })
 }

@@ -99,19 +99,25 @@ fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_repo
     let Some(l) = &p.linkage else {
         return Ok(json!({ "none": true }));
     };
-    let a = tmm_report::linkage::analyse(l, &p.task, Some(phi), 1)?;
-    let docs = tmm_report::linkage::drawings(l, &a)?;
-    let text = |name: &str| docs.get(name).and_then(|d| d.as_text()).unwrap_or_default().to_string();
+    // Only the position at the angle: the mechanism is already loaded and
+    // no cycle or diagram is recomputed, so a frame of the animation costs
+    // one solution and two plans.
+    let m = &l.mech;
+    let mut sol = m.solution();
+    m.solve(phi, &mut sol)
+        .map_err(|e| tmm_report::linkage::locate(&p.task, &l.task, &e))?;
+    let (velocity, acceleration) = tmm_report::linkage::plan_drawings(l, &sol, phi, &p.task);
+    let psi = p.cycle_start.map(|start| (m.crank.omega.signum() * (phi - start)).rem_euclid(TAU));
     let mut v = json!({
         "ok": true,
-        "phi": a.plan_row.pos.phi,
-        "psi": a.plan_row.pos.psi,
-        "velocity_plan": text("velocity-plan.svg"),
-        "acceleration_plan": text("acceleration-plan.svg"),
+        "phi": phi,
+        "psi": psi,
+        "velocity_plan": velocity,
+        "acceleration_plan": acceleration,
     });
     if with_forces && let Some((fl, ft)) = &p.forces {
         let fa = tmm_report::forces::analyse(&p.task, fl, ft, Some(phi))?;
-        let fd = tmm_report::forces::drawings(fl, ft, &fa)?;
+        let fd = tmm_report::forces::drawings(fl, ft, &fa, &p.task)?;
         let mut files = serde_json::Map::new();
         for d in fd.iter().filter(|d| d.extension() == "svg" && !d.path.starts_with("strength")) {
             files.insert(d.path.clone(), d.as_text().unwrap_or_default().into());
@@ -124,4 +130,53 @@ fn try_at_angle(p: &Page, phi: f64, with_forces: bool) -> Result<Value, tmm_repo
         });
     }
     Ok(v)
+}
+
+/// The plans' vectors at the crank angle `phi` (rad), for a frame of the
+/// animation: `{"ok", "phi", "psi", "velocity": [v], "acceleration": [v]}`
+/// with each `v = {"label", "kind", "from": [x, y], "to": [x, y]}` (m/s,
+/// m/s²; the pole at the origin). One solution of the loaded mechanism and
+/// its plans ([`tmm_linkage::plans::plans`]); the page draws them while the
+/// crank turns and shows the drawings of [`at_angle`] when it stops.
+///
+/// ```
+/// let p = tmm_web::page::Page::new("t.toml", tmm_report::run::DEFAULT_TASK, None).unwrap();
+/// let v: serde_json::Value = serde_json::from_str(&tmm_web::angle::plan_vectors(&p, 1.0)).unwrap();
+/// assert_eq!(v["ok"], true);
+/// assert!(v["velocity"].as_array().unwrap().iter().any(|x| x["label"] == "V_B" && x["kind"] == "Absolute"));
+/// ```
+pub fn plan_vectors(p: &Page, phi: f64) -> String {
+    if !phi.is_finite() {
+        return reply::error_json("the crank angle must be a finite number", None, None);
+    }
+    let Some(l) = &p.linkage else {
+        return json!({ "none": true }).to_string();
+    };
+    let m = &l.mech;
+    let mut sol = m.solution();
+    if let Err(e) = m.solve(phi, &mut sol) {
+        return reply::from_error(&p.task, &tmm_report::linkage::locate(&p.task, &l.task, &e)).to_string();
+    }
+    let plans = tmm_linkage::plans::plans(m, &sol);
+    let list = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
+        v.iter()
+            .map(|x| {
+                json!({
+                    "label": x.label,
+                    "kind": format!("{:?}", x.kind),
+                    "from": [x.from.x, x.from.y],
+                    "to": [x.to.x, x.to.y],
+                })
+            })
+            .collect()
+    };
+    let psi = p.cycle_start.map(|start| (m.crank.omega.signum() * (phi - start)).rem_euclid(TAU));
+    json!({
+        "ok": true,
+        "phi": phi,
+        "psi": psi,
+        "velocity": list(&plans.velocity),
+        "acceleration": list(&plans.acceleration),
+    })
+    .to_string()
 }

@@ -18,6 +18,7 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "crank-slider-offset.toml",
         include_str!("../../../examples/crank-slider-offset.toml"),
     ),
+    ("double-rocker.toml", include_str!("../../../examples/double-rocker.toml")),
     ("gear-internal.toml", include_str!("../../../examples/gear-internal.toml")),
     ("gear-seed001.toml", include_str!("../../../examples/gear-seed001.toml")),
     ("gear-seed003.toml", include_str!("../../../examples/gear-seed003.toml")),

@@ -7,10 +7,12 @@
 //!
 //! | export | what |
 //! | --- | --- |
-//! | [`analyse`] | run the whole task ([`tmm_report::run::run_task_in`]); tables, report, file list or the located error |
+//! | [`analyse`] | run the task, only the sections whose tables changed ([`page::Page::after`]); tables, report or the located error |
+//! | [`files`] | the files of one section of the last run (its drawings made when first asked) |
 //! | [`file_text`], [`file_bytes`] | one file of the last run (the same bytes the CLI writes) |
 //! | [`frames`] | the mechanism over the cycle for the animation and traced paths |
 //! | [`at_angle`] | the plans, forces and Zhukovsky's lever at one crank angle |
+//! | [`plan_vectors`] | the plans' vectors at one crank angle, for a frame of the animation |
 //! | [`gear_contour`], [`gear_at`] | the blocking contour's axes; the pair at a picked (x1, x2) |
 //!
 //! The state between calls is the last successful run ([`page::Page`]); the
@@ -49,7 +51,7 @@ pub fn examples() -> String {
 /// becomes the page's state for the other calls.
 #[wasm_bindgen]
 pub fn analyse(name: &str, text: &str, lang: &str) -> String {
-    let (reply, page) = page::analyse_reply(name, text, lang);
+    let (reply, page) = PAGE.with(|s| page::analyse_reply_after(s.borrow().as_ref(), name, text, lang));
     if let Some(p) = page {
         PAGE.with(|s| *s.borrow_mut() = Some(p));
     }
@@ -65,6 +67,14 @@ pub fn file_text(path: &str) -> Option<String> {
             .and_then(|p| p.file(path))
             .and_then(|d| d.as_text().map(str::to_string))
     })
+}
+
+/// The files of the section `name` of the last successful run (`"report"`
+/// for `report.json`), as JSON `{"ok", "files": [{"path", "size"}]}`; the
+/// section's drawings are made on the first call (see [`page::Page::files`]).
+#[wasm_bindgen]
+pub fn files(name: &str) -> String {
+    with_page(|p| p.files(name).to_string())
 }
 
 /// The bytes of one file of the last successful run, for a download.
@@ -86,6 +96,13 @@ pub fn frames(n: usize) -> String {
 #[wasm_bindgen]
 pub fn at_angle(phi: f64, with_forces: bool) -> String {
     with_page(|p| angle::at_angle(p, phi, with_forces))
+}
+
+/// The plans' vectors at the crank angle `phi` (rad) for a frame of the
+/// animation, as JSON (see [`angle::plan_vectors`]).
+#[wasm_bindgen]
+pub fn plan_vectors(phi: f64) -> String {
+    with_page(|p| angle::plan_vectors(p, phi))
 }
 
 /// The blocking contour's axes and where they lie on its drawing, as JSON

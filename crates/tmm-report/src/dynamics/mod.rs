@@ -74,6 +74,32 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     }))
 }
 
+/// [`run_section`] in two stages: the tables and the JSON now, the
+/// drawings when [`crate::run::Staged::drawings`] is called (the same
+/// documents as [`run_section`]'s).
+pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
+    let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
+    let d = analyse(task, &l, &ft, &dt)?;
+    let mut docs = Documents::new();
+    let json = json::document(&l, &d);
+    docs.add_json("dynamics/dynamics.json", &json)?;
+    let text = text::report(&l, &d);
+    docs.add_text("dynamics/dynamics.txt", text.clone())?;
+    Ok(Some(crate::run::Staged {
+        output: SectionOutput {
+            section: "dynamics",
+            text,
+            json,
+            docs,
+        },
+        draw: Box::new(move || {
+            let mut docs = Documents::new();
+            draw::draw_all(&d, "dynamics/", &mut docs)?;
+            Ok(docs)
+        }),
+    }))
+}
+
 /// The human report.
 pub fn text_report(l: &Loaded, d: &Dynamics) -> String {
     text::report(l, d)

@@ -237,6 +237,33 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     }))
 }
 
+/// [`run_section`] in two stages: the tables and the JSON now, the
+/// drawings when [`crate::run::Staged::drawings`] is called (the same
+/// documents as [`run_section`]'s).
+pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
+    let Some((l, t)) = load(task)? else { return Ok(None) };
+    let a = analyse(task, &l, &t, None)?;
+    let mut docs = Documents::new();
+    let json = json::document(&l, &t, &a);
+    docs.add_json("forces/forces.json", &json)?;
+    let text = text::report(&l, &t, &a);
+    docs.add_text("forces/forces.txt", text.clone())?;
+    let task = task.clone();
+    Ok(Some(crate::run::Staged {
+        output: SectionOutput {
+            section: "forces",
+            text,
+            json,
+            docs,
+        },
+        draw: Box::new(move || {
+            let mut docs = Documents::new();
+            draw::draw_all(&l, &t, &a, &task, "forces/", &mut docs)?;
+            Ok(docs)
+        }),
+    }))
+}
+
 /// The human report.
 pub fn text_report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
     text::report(l, t, a)

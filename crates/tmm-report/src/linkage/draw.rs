@@ -72,6 +72,18 @@ pub fn draw_with(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, plans: 
     Ok(())
 }
 
+/// The velocity and acceleration plans (SVG) of one solved position at the
+/// crank angle `phi`, titled with that angle: the plans a view that follows
+/// the crank redraws, without the rest of the section.
+pub fn plans_at(l: &Loaded, sol: &Solution, phi: f64, task: &TaskSource) -> (String, String) {
+    let p = tmm_linkage::plans::plans(&l.mech, sol);
+    let pos = format!("φ_1 = {}°", num(phi.to_degrees(), 1, task.lang));
+    (
+        plan(task, Kind::Velocity, &p.velocity, &pos),
+        plan(task, Kind::Acceleration, &p.acceleration, &pos),
+    )
+}
+
 /// "position 1" in the drawing's language.
 fn position_text(lang: Language, label: &str) -> String {
     format!("{} {label}", word(lang, "linkage.position"))

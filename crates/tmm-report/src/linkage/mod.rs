@@ -455,6 +455,50 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     }))
 }
 
+/// [`run_section`] in two stages: the tables and the JSON now, the
+/// drawings when [`crate::run::Staged::drawings`] is called (the same
+/// documents as [`run_section`]'s).
+pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
+    let Some(l) = load(task)? else { return Ok(None) };
+    let a = analyse(&l, task, None, l.task.positions)?;
+    let mut docs = Documents::new();
+    let json = json::document(&l, &a);
+    docs.add_json("linkage/linkage.json", &json)?;
+    let text = text::report(&l, &a);
+    docs.add_text("linkage/linkage.txt", text.clone())?;
+    let task = task.clone();
+    Ok(Some(crate::run::Staged {
+        output: SectionOutput {
+            section: "linkage",
+            text,
+            json,
+            docs,
+        },
+        draw: Box::new(move || {
+            let mut docs = Documents::new();
+            draw::draw_all(&l, &a, &task, "linkage/", &mut docs)?;
+            Ok(docs)
+        }),
+    }))
+}
+
+/// The velocity and acceleration plans (SVG) of the position `sol` solved
+/// at the crank angle `phi` (rad): the same drawings as `velocity-plan.svg`
+/// and `acceleration-plan.svg`, with nothing else of the section computed.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::DEFAULT_TASK, linkage};
+/// let l = linkage::load(&TaskSource::new("t.toml", DEFAULT_TASK)).unwrap().unwrap();
+/// let mut sol = l.mech.solution();
+/// l.mech.solve(1.0, &mut sol).unwrap();
+/// let (v, a) = linkage::plan_drawings(&l, &sol, 1.0, &TaskSource::new("t.toml", DEFAULT_TASK));
+/// assert!(v.starts_with("<?xml") || v.starts_with("<svg"));
+/// assert_ne!(v, a);
+/// ```
+pub fn plan_drawings(l: &Loaded, sol: &Solution, phi: f64, task: &TaskSource) -> (String, String) {
+    draw::plans_at(l, sol, phi, task)
+}
+
 /// The human report.
 pub fn text_report(l: &Loaded, a: &Analysis) -> String {
     text::report(l, a)
