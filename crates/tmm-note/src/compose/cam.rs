@@ -42,7 +42,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("cam_f_analogs", &[])?,
         formula("v = omega (dif s) / (dif phi), quad a = omega^2 (dif^2 s) / (dif phi^2)"),
         cx.para("cam_f_pressure", &[])?,
-        formula("tan vartheta = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)"),
+        formula("tan theta.alt = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)"),
         cx.para("cam_f_roller", &[])?,
         // the numbers with the language's decimal separator
         formula(&format!(

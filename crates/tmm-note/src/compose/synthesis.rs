@@ -58,7 +58,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("sy_f_theta", &[])?,
         formula("theta = 180° (K_v - 1) / (K_v + 1)"),
         cx.para("sy_f_pressure", &[])?,
-        formula("gamma = 90° - vartheta, quad vartheta_max <= [vartheta]"),
+        formula("gamma = 90° - theta.alt, quad theta.alt_max <= [theta.alt]"),
     ];
     let mut results = Vec::new();
     let mut rows = Vec::new();

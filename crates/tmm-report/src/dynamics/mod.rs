@@ -80,6 +80,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
 pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
+    let (lang, sheet) = (task.lang, task.sheet);
     let mut docs = Documents::new();
     let json = json::document(&l, &d);
     docs.add_json("dynamics/dynamics.json", &json)?;
@@ -94,7 +95,7 @@ pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error
         },
         draw: Box::new(move || {
             let mut docs = Documents::new();
-            draw::draw_all(&d, "dynamics/", &mut docs)?;
+            draw::draw_all(&d, "dynamics/", lang, sheet, &mut docs)?;
             Ok(docs)
         }),
     }))
