@@ -20,12 +20,14 @@ struct Cli {
     command: Command,
 }
 
-const AFTER_HELP: &str = "Units: values take units (\"120 mm\", \"900 rpm\", \"15 deg\", \"3 kN\"); a plain number is SI, except angles (degrees).\nJSON output (--json) is SI with angles in radians.\nExit codes: 0 done, 2 bad input, 1 a file could not be written.\nExamples:\n  tmm run                                   the embedded default course project into ./tmm-out/\n  tmm run examples/seed-001-fourbar.toml    every section of a task file\n  tmm linkage examples/seed-001-fourbar.toml --at 15\n  tmm synth crank-rocker --k 1.28 --swing 60 --rocker \"245 mm\" --crank \"100 mm\" --task t.toml";
+const AFTER_HELP: &str = "Units: values take units (\"120 mm\", \"900 rpm\", \"15 deg\", \"3 kN\"); a plain number is SI, except angles (degrees).\nJSON output (--json) is SI with angles in radians.\nExit codes: 0 done, 2 bad input, 1 a file could not be written.\nExamples:\n  tmm run                                   the embedded default course project into ./tmm-out/\n  tmm run examples/seed-001-fourbar.toml    every section of a task file\n  tmm note examples/seed-001-fourbar.toml --lang uk   the explanatory note as ./note.pdf\n  tmm linkage examples/seed-001-fourbar.toml --at 15\n  tmm synth crank-rocker --k 1.28 --swing 60 --rocker \"245 mm\" --crank \"100 mm\" --task t.toml";
 
 #[derive(Subcommand)]
 enum Command {
     /// Run every section of a task file (or, with no file, the embedded default course project) into an output folder
     Run(cmd::run::Args),
+    /// The explanatory note of a task file (or of the embedded default course project) as note.pdf
+    Note(cmd::note::Args),
     /// Metric synthesis of a lever mechanism: lengths and frame from K, the stroke or swing, the pressure angles
     #[command(subcommand)]
     Synth(cmd::synth::SynthCommand),
@@ -50,6 +52,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Run(a) => cmd::run::run(a),
+        Command::Note(a) => cmd::note::run(a),
         Command::Synth(a) => cmd::synth::run(a),
         Command::Linkage(a) => cmd::linkage::run(a),
         Command::Forces(a) => cmd::forces::run(a),

@@ -99,4 +99,17 @@ pub enum NoteError {
         /// The diagnostics.
         messages: Vec<String>,
     },
+    /// The run's report lacks a value the note prints (a defect of the
+    /// report, or a report of another version).
+    #[error("the report has no value at {path}; the note cannot print it")]
+    MissingValue {
+        /// The JSON pointer of the value, e.g. `/gear/eps_alpha`.
+        path: String,
+    },
+    /// An SVG sheet has no size the page can take.
+    #[error("the sheet's SVG {what}; a sheet needs width and height in mm (1 … 5000)")]
+    SheetSize {
+        /// What is wrong.
+        what: String,
+    },
 }

@@ -23,16 +23,20 @@
 //! assert!(pdf.starts_with(b"%PDF"));
 //! ```
 
+pub mod compose;
 pub mod error;
 pub mod escape;
 pub mod markup;
 pub mod model;
 pub mod number;
+pub mod sheet;
 pub mod translation;
 pub mod world;
 
+pub use compose::compose;
 pub use error::NoteError;
 pub use model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
+pub use sheet::sheet_pdf;
 pub use translation::Translation;
 
 use typst::WorldExt;

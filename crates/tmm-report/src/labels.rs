@@ -280,8 +280,8 @@ impl Placer {
 /// drawing is at a length scale.
 pub fn finish(svg: String, labels: &Placer, scale: Option<&str>) -> String {
     let mut s = svg
-        .replace("stroke-dasharray=\"12.01 3.00\"", "stroke-dasharray=\"12 3 1 3\"")
-        .replace("stroke-dasharray=\"12.02 3.00\"", "stroke-dasharray=\"12 3 1 3 1 3\"");
+        .replace("stroke-dasharray=\"12.01 1.25 0.50 1.25\"", "stroke-dasharray=\"12 3 1 3\"")
+        .replace("stroke-dasharray=\"12.02 1.25 0.50 1.25\"", "stroke-dasharray=\"12 3 1 3 1 3\"");
     if let Some(i) = s.rfind("</svg>") {
         s.insert_str(i, labels.svg());
     }

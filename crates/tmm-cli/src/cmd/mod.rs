@@ -6,6 +6,7 @@ pub mod dynamics;
 pub mod forces;
 pub mod gear;
 pub mod linkage;
+pub mod note;
 pub mod planetary;
 pub mod run;
 pub mod synth;

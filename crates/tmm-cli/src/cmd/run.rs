@@ -1,12 +1,14 @@
 //! `tmm run [FILE]`: every section of a task file into an output folder,
-//! all or nothing.
+//! all or nothing — the tables, drawings and report, the explanatory note
+//! `note.pdf` and the sheets `sheets/sheet-N.pdf` (unless `--no-pdf`).
 
 use std::path::PathBuf;
 
-use tmm_report::run::{DEFAULT_TASK, DEFAULT_TASK_NAME, run_task};
-use tmm_report::{Error, TaskSource};
+use tmm_report::Error;
+use tmm_report::run::{DEFAULT_TASK, run_task_in};
 
-use super::common::{json_text, print, read_task, written};
+use super::common::{json_text, print, written};
+use super::note::{language, pdf_documents, progress, task_of};
 use crate::write::{Existing, write_folder};
 
 /// Run every section of a task file.
@@ -25,6 +27,13 @@ pub struct Args {
     /// Print the embedded default task file and exit
     #[arg(long)]
     pub print_default: bool,
+    /// Do not typeset: write no note.pdf and no sheets/*.pdf
+    #[arg(long)]
+    pub no_pdf: bool,
+    /// The language of the note, the sheets and the drawings (default: the
+    /// task's [project] lang, else ru)
+    #[arg(long, value_parser = ["ru", "uk", "en"])]
+    pub lang: Option<String>,
 }
 
 /// Run the command.
@@ -32,11 +41,9 @@ pub fn run(a: &Args) -> Result<(), Error> {
     if a.print_default {
         return print(DEFAULT_TASK);
     }
-    let task = match &a.file {
-        Some(p) => read_task(p)?,
-        None => TaskSource::new(DEFAULT_TASK_NAME, DEFAULT_TASK),
-    };
-    let run = run_task(&task)?;
+    let task = task_of(a.file.as_ref())?;
+    progress("computing");
+    let run = run_task_in(&task, language(a.lang.as_deref()))?;
     let out = if a.json {
         json_text(&run.report)?
     } else {
@@ -47,6 +54,11 @@ pub fn run(a: &Args) -> Result<(), Error> {
         }
         s
     };
-    let files = write_folder(&a.out, &run.docs, Existing::Refuse)?;
+    let mut docs = run.docs.clone();
+    if !a.no_pdf {
+        docs.append(pdf_documents(&run, &task)?);
+    }
+    progress("writing");
+    let files = write_folder(&a.out, &docs, Existing::Refuse)?;
     print(&if a.json { out } else { out + &written(&files) })
 }

@@ -9,5 +9,6 @@ mod fuzz;
 mod gear;
 mod hardening;
 mod linkage;
+mod note;
 mod planetary_cli;
 mod synth;

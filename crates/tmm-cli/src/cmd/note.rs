@@ -1,0 +1,91 @@
+//! `tmm note [FILE] [--lang ru|uk|en] [--out DIR]`: the explanatory note
+//! (пояснительная записка) of a task file as `DIR/note.pdf`; also the
+//! typesetting shared with `tmm run` (the note and the sheets' PDFs).
+
+use std::path::PathBuf;
+
+use tmm_report::output::Documents;
+use tmm_report::project::Language;
+use tmm_report::run::{DEFAULT_TASK, DEFAULT_TASK_NAME, Run, run_task_in};
+use tmm_report::{Error, TaskSource};
+
+use super::common::{print, read_task, write_named, written};
+
+/// The note of a task file as PDF.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The task file (TOML); without it, the embedded default course project
+    pub file: Option<PathBuf>,
+    /// The language of the note (default: the task's [project] lang, else ru)
+    #[arg(long, value_parser = ["ru", "uk", "en"])]
+    pub lang: Option<String>,
+    /// The folder note.pdf is written into
+    #[arg(short, long, default_value = ".")]
+    pub out: PathBuf,
+}
+
+/// The language of a `--lang` value (clap has already checked it).
+pub fn language(code: Option<&str>) -> Option<Language> {
+    code.and_then(Language::from_code)
+}
+
+/// The task of a command line: the file, or the embedded default.
+pub fn task_of(file: Option<&PathBuf>) -> Result<TaskSource, Error> {
+    match file {
+        Some(p) => read_task(p),
+        None => Ok(TaskSource::new(DEFAULT_TASK_NAME, DEFAULT_TASK)),
+    }
+}
+
+/// One progress line on standard error (a closed stderr is ignored).
+pub fn progress(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr().lock(), "tmm: {line}");
+}
+
+/// A typesetting failure: the note or a sheet could not be produced
+/// (exit code 1, as a failed write: the input was accepted).
+fn typeset_error(what: &str, e: &tmm_note::NoteError) -> Error {
+    Error::Io(format!("cannot typeset {what}: {e}"))
+}
+
+/// The note of `run` as PDF bytes.
+pub fn note_pdf(run: &Run, task: &TaskSource) -> Result<Vec<u8>, Error> {
+    let note = tmm_note::compose(run, task).map_err(|e| typeset_error("the note", &e))?;
+    tmm_note::typeset(&note).map_err(|e| typeset_error("the note", &e))
+}
+
+/// The PDF documents of a run: `note.pdf` and `sheets/sheet-N.pdf` for
+/// every `sheets/sheet-N.svg` of the run, with a progress line per stage.
+pub fn pdf_documents(run: &Run, task: &TaskSource) -> Result<Documents, Error> {
+    let mut docs = Documents::new();
+    progress("typesetting the note");
+    docs.add_bytes("note.pdf", note_pdf(run, task)?)?;
+    let sheets: Vec<_> = run
+        .docs
+        .iter()
+        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
+        .collect();
+    if !sheets.is_empty() {
+        progress(&format!("typesetting {} sheet(s)", sheets.len()));
+    }
+    for d in sheets {
+        let svg = d.as_text().ok_or_else(|| Error::Io(format!("{} is not text", d.path)))?;
+        let pdf = tmm_note::sheet_pdf(svg).map_err(|e| typeset_error(&d.path, &e))?;
+        let path = format!("{}.pdf", d.path.trim_end_matches(".svg"));
+        docs.add_bytes(path, pdf)?;
+    }
+    Ok(docs)
+}
+
+/// Run the command.
+pub fn run(a: &Args) -> Result<(), Error> {
+    let task = task_of(a.file.as_ref())?;
+    progress("computing");
+    let run = run_task_in(&task, language(a.lang.as_deref()))?;
+    progress("typesetting the note");
+    let pdf = note_pdf(&run, &task)?;
+    progress("writing");
+    let files = write_named(&[(a.out.join("note.pdf"), pdf)])?;
+    print(&written(&files))
+}

@@ -1,0 +1,165 @@
+//! What every section's composer reads: the report, the drawings, the task
+//! and the words, with helpers that format numbers for the language.
+
+use serde_json::Value;
+use tmm_report::output::Documents;
+
+use super::words::Words;
+use crate::error::NoteError;
+use crate::model::{Block, Cell, Lang, Text};
+use crate::number::format_quantity;
+
+/// Significant digits of every number the note prints (the stated rounding:
+/// four significant digits, the accuracy a course project reports).
+pub const DIGITS: u8 = 4;
+
+/// The width of a figure on the page, mm (the text width of an A4 page with
+/// the frame is 175 mm).
+pub const FIGURE_WIDTH_MM: f64 = 165.0;
+
+/// The composing context.
+pub(crate) struct Ctx<'a> {
+    pub lang: Lang,
+    pub words: &'a Words,
+    pub report: &'a Value,
+    pub docs: &'a Documents,
+    pub task: &'a toml::Table,
+}
+
+impl Ctx<'_> {
+    /// A word.
+    pub fn w(&self, key: &str) -> Result<String, NoteError> {
+        self.words.get(key).map(str::to_string)
+    }
+
+    /// A word with its places filled.
+    pub fn fill(&self, key: &str, args: &[String]) -> Result<String, NoteError> {
+        self.words.fill(key, args)
+    }
+
+    /// A paragraph of a word with its places filled.
+    pub fn para(&self, key: &str, args: &[String]) -> Result<Block, NoteError> {
+        Ok(Block::Paragraph(Text::plain(self.fill(key, args)?)))
+    }
+
+    /// The value at a JSON pointer (`/gear/eps_alpha`), if it is a number.
+    pub fn opt(&self, ptr: &str) -> Option<f64> {
+        self.report.pointer(ptr).and_then(Value::as_f64)
+    }
+
+    /// The number at a JSON pointer.
+    pub fn v(&self, ptr: &str) -> Result<f64, NoteError> {
+        self.opt(ptr).ok_or_else(|| NoteError::MissingValue { path: ptr.to_string() })
+    }
+
+    /// The text at a JSON pointer.
+    pub fn s(&self, ptr: &str) -> Option<&str> {
+        self.report.pointer(ptr).and_then(Value::as_str)
+    }
+
+    /// A number with the unit of the words key `unit` (empty: none).
+    pub fn q(&self, value: f64, unit: &str) -> Result<String, NoteError> {
+        let u = if unit.is_empty() { String::new() } else { self.w(unit)? };
+        format_quantity(value, DIGITS, &u, self.lang)
+    }
+
+    /// The number at `ptr` with a unit, scaled by `scale` (1000 for mm).
+    pub fn qv(&self, ptr: &str, scale: f64, unit: &str) -> Result<String, NoteError> {
+        self.q(self.v(ptr)? * scale, unit)
+    }
+
+    /// An angle in radians at `ptr`, printed in degrees.
+    pub fn deg(&self, ptr: &str) -> Result<String, NoteError> {
+        format_quantity(self.v(ptr)?.to_degrees(), DIGITS, "°", self.lang)
+    }
+
+    /// The figure of the run's drawing `path`, or `None` if the run has none.
+    pub fn figure(&self, path: &str, caption_key: &str) -> Result<Option<Block>, NoteError> {
+        let Some(svg) = self.docs.get(path).and_then(|d| d.as_text()) else {
+            return Ok(None);
+        };
+        Ok(Some(Block::Figure {
+            caption: self.w(caption_key)?,
+            svg: svg.to_string(),
+            width_mm: FIGURE_WIDTH_MM,
+            label: None,
+        }))
+    }
+
+    /// A table with headings and units from words keys.
+    pub fn table(&self, caption: &str, columns: &[(&str, &str)], rows: Vec<Vec<Cell>>) -> Result<Block, NoteError> {
+        let mut header = Vec::new();
+        let mut units = Vec::new();
+        for (h, u) in columns {
+            header.push(self.w(h)?);
+            units.push(if u.is_empty() { String::new() } else { self.w(u)? });
+        }
+        Ok(Block::Table {
+            caption: self.w(caption)?,
+            header,
+            rows,
+            units,
+            label: None,
+        })
+    }
+
+    /// A two-column table "quantity | value" with the value's unit in the cell.
+    pub fn quantities(&self, caption: &str, rows: Vec<(String, String)>) -> Result<Block, NoteError> {
+        Ok(Block::Table {
+            caption: self.w(caption)?,
+            header: vec![self.w("col_quantity")?, self.w("col_value")?],
+            rows: rows.into_iter().map(|(a, b)| vec![text(a), text(b)]).collect(),
+            units: Vec::new(),
+            label: None,
+        })
+    }
+}
+
+/// A number cell with [`DIGITS`] significant digits.
+///
+/// A value below 10⁻⁹ in magnitude is the rounding noise of an exact zero
+/// (a rocker's speed at its dead position) and prints as 0.
+pub fn num(value: f64) -> Cell {
+    let value = if value.abs() < 1e-9 { 0.0 } else { value };
+    Cell::Number { value, digits: DIGITS }
+}
+
+/// A text cell.
+pub fn text(s: impl Into<String>) -> Cell {
+    Cell::Text(Text::plain(s))
+}
+
+/// A formula block.
+pub fn formula(math: &str) -> Block {
+    Block::Formula {
+        typst_math: math.to_string(),
+        label: None,
+    }
+}
+
+/// A section with the four subsections of the course's order.
+pub fn four_parts(
+    cx: &Ctx,
+    title_key: &str,
+    statement: Vec<Block>,
+    formulas: Vec<Block>,
+    results: Vec<Block>,
+    conclusions: Vec<Block>,
+) -> Result<crate::model::Section, NoteError> {
+    use crate::model::Section;
+    let mut s = Section::new(cx.w(title_key)?);
+    for (key, blocks) in [
+        ("sub_statement", statement),
+        ("sub_formulas", formulas),
+        ("sub_results", results),
+        ("sub_conclusions", conclusions),
+    ] {
+        if blocks.is_empty() {
+            continue;
+        }
+        let mut sub = Section::new(cx.w(key)?);
+        sub.blocks = blocks;
+        s.subsections.push(sub);
+    }
+    Ok(s)
+}

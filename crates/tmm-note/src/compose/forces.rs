@@ -1,0 +1,150 @@
+//! Section "kinetostatics" (кинетостатический анализ): inertia loads,
+//! reactions group by group, the balancing torque and its check by
+//! Zhukovsky's lever, the strength of a link.
+
+use serde_json::Value;
+
+use super::context::{Ctx, formula, four_parts, num, text};
+use crate::error::NoteError;
+use crate::model::{Block, Section};
+
+/// The section, if the report has `forces`.
+pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
+    let Some(fo) = cx.report.get("forces") else { return Ok(None) };
+    let phi = cx.deg("/forces/detail/phi")?;
+    let statement = vec![
+        Block::List(vec![
+            cx.w("assume_rigid")?.into(),
+            cx.w("assume_pairs")?.into(),
+            cx.w("assume_friction")?.into(),
+        ]),
+        cx.para("fo_given", &[cx.qv("/forces/omega1", 1.0, "u_rad_s")?, phi.clone()])?,
+        cx.para("fo_method", &[])?,
+        cx.para("fo_sought", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("fo_f_inertia", &[])?,
+        formula("arrow(F)_u = -m arrow(a)_S, quad M_u = -J_S epsilon"),
+        cx.para("fo_f_group", &[])?,
+        formula("sum arrow(F) = 0, quad sum M_C = 0"),
+        cx.para("fo_f_balancing", &[])?,
+        formula("M_b = P_b l_1"),
+        cx.para("fo_f_zhukovsky", &[])?,
+        formula("M_\"Zh\" omega_1 = sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i"),
+    ];
+    let mut results = Vec::new();
+    let mut rows = Vec::new();
+    if let Some(loads) = fo.pointer("/detail/loads").and_then(Value::as_object) {
+        for (name, l) in loads {
+            let f = l.get("inertia_force").and_then(Value::as_array);
+            let fm = f
+                .map(|a| {
+                    let x = a.first().and_then(Value::as_f64).unwrap_or(0.0);
+                    let y = a.get(1).and_then(Value::as_f64).unwrap_or(0.0);
+                    x.hypot(y)
+                })
+                .unwrap_or(0.0);
+            let m = l.get("inertia_moment").and_then(Value::as_f64).unwrap_or(0.0);
+            rows.push(vec![text(cx.fill("link_n", &[name.clone()])?), num(fm), num(m)]);
+        }
+    }
+    results.push(cx.para("fo_results_at", &[phi.clone()])?);
+    results.push(cx.table(
+        "tab_inertia",
+        &[("col_link", ""), ("col_inertia_force", "u_n"), ("col_inertia_moment", "u_nm")],
+        rows,
+    )?);
+    let mut rows = Vec::new();
+    if let Some(rs) = fo.pointer("/detail/reactions").and_then(Value::as_array) {
+        for r in rs {
+            let g = |k: &str| r.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+            let name = |k: &str| -> Result<String, NoteError> {
+                let v = r.get(k).and_then(Value::as_str).unwrap_or("");
+                if v == "frame" { cx.w("frame_short") } else { Ok(v.to_string()) }
+            };
+            let pair = r.get("pair").and_then(Value::as_str).unwrap_or("");
+            rows.push(vec![
+                text(pair),
+                text(format!("{}→{}", name("from")?, name("on")?)),
+                num(g("magnitude")),
+                num(g("normal")),
+                num(g("tangential")),
+            ]);
+        }
+    }
+    results.push(cx.table(
+        "tab_reactions",
+        &[
+            ("col_pair", ""),
+            ("col_from_on", ""),
+            ("col_reaction", "u_n"),
+            ("col_reaction_n", "u_n"),
+            ("col_reaction_t", "u_n"),
+        ],
+        rows,
+    )?);
+    let mb = cx.v("/forces/detail/balancing_moment")?;
+    let mzh = cx.v("/forces/detail/zhukovsky_moment")?;
+    results.push(cx.quantities(
+        "tab_balancing",
+        vec![
+            (cx.w("q_mb")?, cx.q(mb, "u_nm")?),
+            (cx.w("q_pb")?, cx.qv("/forces/detail/balancing_force", 1.0, "u_n")?),
+            (cx.w("q_mzh")?, cx.q(mzh, "u_nm")?),
+        ],
+    )?);
+    for (path, key) in [
+        ("forces/group-1.svg", "fig_force_group"),
+        ("forces/input-link.svg", "fig_input_link"),
+        ("forces/zhukovsky-lever.svg", "fig_zhukovsky"),
+        ("forces/balancing-torque.svg", "fig_balancing_torque"),
+        ("forces/strength-M.svg", "fig_strength_m"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            results.push(f);
+        }
+    }
+    let strength = fo.get("strength").filter(|s| !s.is_null());
+    if strength.is_some() {
+        results.push(cx.quantities(
+            "tab_strength",
+            vec![
+                (cx.w("q_allowed_stress")?, cx.qv("/forces/strength/allowed_stress", 1e-6, "u_mpa")?),
+                (cx.w("q_round_d")?, cx.qv("/forces/strength/round/d", 1000.0, "u_mm")?),
+                (cx.w("q_rect_b")?, cx.qv("/forces/strength/rectangle/b", 1000.0, "u_mm")?),
+                (cx.w("q_rect_h")?, cx.qv("/forces/strength/rectangle/h", 1000.0, "u_mm")?),
+            ],
+        )?);
+    }
+    let mut conclusions = vec![cx.para(
+        "fo_conclusion",
+        &[
+            phi,
+            cx.q(mb, "u_nm")?,
+            cx.q(mzh, "u_nm")?,
+            cx.qv("/forces/detail/relative_difference", 1.0, "")?,
+            cx.qv("/forces/max_relative_difference", 1.0, "")?,
+        ],
+    )?];
+    if let Some(cycle) = fo.get("cycle").and_then(Value::as_array) {
+        let m: Vec<f64> = cycle
+            .iter()
+            .filter_map(|c| c.get("balancing_moment").and_then(Value::as_f64))
+            .collect();
+        if !m.is_empty() {
+            let lo = m.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = m.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            conclusions.push(cx.para("fo_conclusion_cycle", &[cx.q(lo, "u_nm")?, cx.q(hi, "u_nm")?])?);
+        }
+    }
+    if strength.is_some() {
+        conclusions.push(cx.para(
+            "fo_conclusion_strength",
+            &[
+                cx.s("/forces/strength/link").unwrap_or("").to_string(),
+                cx.qv("/forces/strength/round/d", 1000.0, "u_mm")?,
+            ],
+        )?);
+    }
+    Ok(Some(four_parts(cx, "sec_forces", statement, formulas, results, conclusions)?))
+}

@@ -1,0 +1,164 @@
+//! Section "structure and kinematics" (структурный и кинематический анализ):
+//! the structure formula, the 12 positions, the plans of velocities and
+//! accelerations at the given position and the kinematic diagrams.
+
+use serde_json::Value;
+
+use super::context::{Ctx, formula, four_parts, num, text};
+use crate::error::NoteError;
+use crate::model::{Block, Section};
+
+/// The links of the analysed mechanism with their lengths in m: the largest
+/// distance between the link's joints in the first position of the report.
+/// The joints come from the task's `[[linkage.links]]`, or from the
+/// synthesised `[linkage]` the synthesis report carries.
+pub(crate) fn link_lengths(cx: &Ctx) -> Vec<(String, f64)> {
+    let synthesised: Option<toml::Table> = cx.s("/synthesis/task").and_then(|t| toml::from_str(t).ok());
+    let linkage = cx
+        .task
+        .get("linkage")
+        .or_else(|| synthesised.as_ref().and_then(|t| t.get("linkage")))
+        .cloned();
+    let links = linkage
+        .as_ref()
+        .and_then(|l| l.get("links"))
+        .and_then(|l| l.as_array())
+        .cloned()
+        .unwrap_or_default();
+    let points = cx.report.pointer("/linkage/positions/0/points");
+    let at = |j: &str| -> Option<(f64, f64)> {
+        let p = points?.get(j)?;
+        Some((p.get("x")?.as_f64()?, p.get("y")?.as_f64()?))
+    };
+    let mut out = Vec::new();
+    for l in links {
+        let Some(name) = l.get("name").and_then(|n| n.as_str()) else {
+            continue;
+        };
+        let joints: Vec<(f64, f64)> = l
+            .get("joints")
+            .and_then(|j| j.as_array())
+            .map(|a| a.iter().filter_map(|j| j.as_str().and_then(at)).collect())
+            .unwrap_or_default();
+        let mut len: f64 = 0.0;
+        for (i, a) in joints.iter().enumerate() {
+            for b in &joints[i + 1..] {
+                len = len.max((a.0 - b.0).hypot(a.1 - b.1));
+            }
+        }
+        if len > 0.0 {
+            out.push((name.to_string(), len));
+        }
+    }
+    out
+}
+
+/// The section, if the report has `linkage`.
+pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
+    let Some(lk) = cx.report.get("linkage") else { return Ok(None) };
+    let st = "/linkage/structure";
+    let dof = cx.v(&format!("{st}/dof"))?;
+    let n = cx.v(&format!("{st}/n"))?;
+    let p5 = cx.v(&format!("{st}/p5"))?;
+    let p4 = cx.v(&format!("{st}/p4"))?;
+    let formula_text = cx.s(&format!("{st}/formula")).unwrap_or("").to_string();
+    let class = cx.v(&format!("{st}/class"))?;
+    let omega = cx.v("/linkage/input/omega")?;
+
+    let statement = vec![
+        Block::List(vec![
+            cx.w("assume_rigid")?.into(),
+            cx.w("assume_pairs")?.into(),
+            cx.w("assume_omega")?.into(),
+        ]),
+        cx.para("lk_given", &[cx.q(omega, "u_rad_s")?, cx.deg("/linkage/plans/phi")?])?,
+        cx.para("lk_method", &[])?,
+        cx.para("lk_sought", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("lk_f_dof", &[])?,
+        formula("W = 3 n - 2 p_5 - p_4"),
+        cx.para("lk_f_velocity", &[])?,
+        formula("arrow(v)_C = arrow(v)_B + arrow(v)_(C B), quad v_B = omega_1 l_(A B)"),
+        cx.para("lk_f_acceleration", &[])?,
+        formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B), quad a^n_(C B) = omega_2^2 l_(B C)"),
+        cx.para("lk_f_kv", &[])?,
+        formula("K_v = (180° + theta) / (180° - theta)"),
+    ];
+    let mut results = vec![cx.para(
+        "lk_structure",
+        &[
+            format!("{n}"),
+            format!("{p5}"),
+            format!("{p4}"),
+            format!("{dof}"),
+            formula_text.clone(),
+            format!("{class}"),
+        ],
+    )?];
+    for (path, key) in [
+        ("linkage/positions.svg", "fig_positions"),
+        ("linkage/velocity-plan.svg", "fig_velocity_plan"),
+        ("linkage/acceleration-plan.svg", "fig_acceleration_plan"),
+        ("linkage/diagram-s.svg", "fig_diagram_s"),
+        ("linkage/diagram-v.svg", "fig_diagram_v"),
+        ("linkage/diagram-a.svg", "fig_diagram_a"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            results.push(f);
+        }
+    }
+    // the plan position: the point speeds and accelerations from the plans
+    if let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) {
+        let acc = lk
+            .pointer("/plans/acceleration")
+            .and_then(Value::as_array)
+            .cloned()
+            .unwrap_or_default();
+        let mut rows = Vec::new();
+        for v in plan.iter().filter(|v| v.get("kind").and_then(Value::as_str) == Some("absolute")) {
+            let label = v.get("label").and_then(Value::as_str).unwrap_or("");
+            let point = label.trim_start_matches("V_").trim_start_matches("v_");
+            let mag = vec_len(v);
+            let a = acc
+                .iter()
+                .find(|a| {
+                    a.get("kind").and_then(Value::as_str) == Some("absolute")
+                        && a.get("label").and_then(Value::as_str).map(|l| l.trim_start_matches("a_")) == Some(point)
+                })
+                .map(vec_len);
+            rows.push(vec![text(point), num(mag), a.map_or(crate::model::Cell::Empty, num)]);
+        }
+        if !rows.is_empty() {
+            results.push(cx.para("lk_plans", &[cx.deg("/linkage/plans/phi")?])?);
+            results.push(cx.table(
+                "tab_point_kinematics",
+                &[("col_point", ""), ("col_speed", "u_m_s"), ("col_acceleration", "u_m_s2")],
+                rows,
+            )?);
+        }
+    }
+    let conclusions = vec![
+        cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
+        cx.para(
+            "lk_conclusion_kinematics",
+            &[cx.qv("/linkage/kv", 1.0, "")?, cx.deg("/linkage/theta")?, pressure_max(cx)?],
+        )?,
+    ];
+    Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
+}
+
+/// The largest pressure angle of the report's list, printed.
+fn pressure_max(cx: &Ctx) -> Result<String, NoteError> {
+    let list = cx.report.pointer("/linkage/pressure_angle_max").and_then(Value::as_array);
+    let m = list
+        .map(|l| l.iter().filter_map(|p| p.get("max").and_then(Value::as_f64)).fold(0.0, f64::max))
+        .unwrap_or(0.0);
+    cx.q(m.to_degrees(), "u_deg")
+}
+
+/// The magnitude of a plan vector `{from, to}`.
+fn vec_len(v: &Value) -> f64 {
+    let p = |k: &str, i: usize| v.get(k).and_then(|a| a.get(i)).and_then(Value::as_f64).unwrap_or(0.0);
+    (p("to", 0) - p("from", 0)).hypot(p("to", 1) - p("from", 1))
+}

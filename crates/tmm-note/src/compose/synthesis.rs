@@ -1,0 +1,101 @@
+//! Section "metric synthesis" (метрический синтез): the lengths of the
+//! links from the time ratio K and the stroke or swing, with the check of
+//! the pressure angles.
+
+use serde_json::Value;
+
+use super::context::{Ctx, formula, four_parts, num, text};
+use crate::error::NoteError;
+use crate::model::{Block, Section};
+
+/// Keys of the given values that are angles (printed in degrees).
+const ANGLES: &[&str] = &["swing", "theta", "angle", "phi", "psi", "pressure_angle", "transmission_angle"];
+/// Keys of the given values without a unit.
+const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
+
+/// One given value printed with its unit: angles in degrees, ratios bare,
+/// everything else a length in mm.
+fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
+    if ANGLES.contains(&key) {
+        cx.q(v.to_degrees(), "u_deg")
+    } else if PURE.contains(&key) {
+        cx.q(v, "")
+    } else {
+        cx.q(v * 1000.0, "u_mm")
+    }
+}
+
+/// The name of a given value: the words' `given_<key>`, else the key.
+fn given_name(cx: &Ctx, key: &str) -> String {
+    cx.w(&format!("given_{key}")).unwrap_or_else(|_| key.to_string())
+}
+
+/// The given values of the synthesis as (name, value) rows.
+pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
+    let mut rows = Vec::new();
+    if let Some(g) = cx.report.pointer("/synthesis/given").and_then(Value::as_object) {
+        for (k, v) in g {
+            if let Some(x) = v.as_f64() {
+                rows.push((given_name(cx, k), given_value(cx, k, x)?));
+            }
+        }
+    }
+    Ok(rows)
+}
+
+/// The section, if the report has `synthesis`.
+pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
+    let Some(sy) = cx.report.get("synthesis") else { return Ok(None) };
+    let k = cx.v("/synthesis/k")?;
+    let statement = vec![
+        Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
+        cx.para("sy_given", &[cx.q(k, "")?])?,
+        cx.quantities("tab_given", given_rows(cx)?)?,
+        cx.para("sy_method", &[])?,
+        cx.para("sy_sought", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("sy_f_theta", &[])?,
+        formula("theta = 180° (K_v - 1) / (K_v + 1)"),
+        cx.para("sy_f_pressure", &[])?,
+        formula("gamma = 90° - vartheta, quad vartheta_max <= [vartheta]"),
+    ];
+    let mut results = Vec::new();
+    let mut rows = Vec::new();
+    if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
+        for (name, v) in l {
+            if let Some(x) = v.as_f64() {
+                rows.push(vec![text(format!("l_{name}")), num(x * 1000.0)]);
+            }
+        }
+    }
+    results.push(cx.table("tab_synth_lengths", &[("col_length_name", ""), ("col_length", "u_mm")], rows)?);
+    let mut q = vec![
+        (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
+        (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
+    ];
+    if let Some(w) = cx.opt("/synthesis/pressure_angle_max/working") {
+        q.push((cx.w("q_pressure_working")?, cx.q(w.to_degrees(), "u_deg")?));
+    }
+    if let Some(r) = cx.opt("/synthesis/pressure_angle_max/return") {
+        q.push((cx.w("q_pressure_return")?, cx.q(r.to_degrees(), "u_deg")?));
+    }
+    if let Some(t) = cx.opt("/synthesis/transmission_angle_min") {
+        q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
+    }
+    results.push(cx.quantities("tab_synth_results", q)?);
+    for (path, key) in [
+        ("synthesis/construction.svg", "fig_synth_construction"),
+        ("synthesis/pressure.svg", "fig_synth_pressure"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            results.push(f);
+        }
+    }
+    let check = cx.v("/synthesis/check/k")?;
+    let conclusions = vec![cx.para(
+        "sy_conclusion",
+        &[cx.q(check, "")?, cx.q(k, "")?, cx.q(((check - k) / k).abs(), "")?],
+    )?];
+    Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
+}
