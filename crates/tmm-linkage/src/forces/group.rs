@@ -141,8 +141,8 @@ pub fn solve_dyad(
     }
     let id = 1.0 / det;
     let lm = [(u * s - qq * v) * id, (p * v - u * r) * id];
-    let le1 = outer(a10, a11, m10, m11, b1, lm);
-    let le2 = outer(a20, a21, m20, m21, b2, lm);
+    let le1 = outer(pairs[0], x, a10, m10, m11, b1, lm);
+    let le2 = outer(pairs[2], y, a20, m20, m21, b2, lm);
     for (k, l) in [le1, lm, le2].into_iter().enumerate() {
         out[k] = pair_force(pairs[k], states, l[0], l[1]);
     }
@@ -195,18 +195,39 @@ fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` by its 2×2 normal equations.
+/// Solve the consistent `[a0 a1]·λ = b − [m0 m1]·lm` for the outer pair `p`
+/// of link `l` in closed form, from the structure of its two columns (see
+/// [`columns`]): for a revolute pair the first two rows are ±I, so
+/// λ = ±(r₀, r₁); for a prismatic pair a0 = ±(n, c) with |n| = 1 and
+/// a1 = (0, 0, ±1), so λ₀ = ±n·(r₀, r₁) and λ₁ follows from the third row.
+/// Derived here; no division, the same solution as the least squares of the
+/// consistent 3×2 system.
 #[inline(always)]
-fn outer(a0: [f64; 3], a1: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
+fn outer(p: &Pair, l: usize, a0: [f64; 3], m0: [f64; 3], m1: [f64; 3], b: [f64; 3], lm: [f64; 2]) -> [f64; 2] {
     let rr = [
         b[0] - m0[0] * lm[0] - m1[0] * lm[1],
         b[1] - m0[1] * lm[0] - m1[1] * lm[1],
         b[2] - m0[2] * lm[0] - m1[2] * lm[1],
     ];
-    let (g00, g01, g11) = (dot3(a0, a0), dot3(a0, a1), dot3(a1, a1));
-    let (h0, h1) = (dot3(a0, rr), dot3(a1, rr));
-    let id = 1.0 / (g00 * g11 - g01 * g01);
-    [(h0 * g11 - g01 * h1) * id, (g00 * h1 - g01 * h0) * id]
+    match *p {
+        Pair::R { a, .. } => {
+            if a == l {
+                [rr[0], rr[1]]
+            } else {
+                [-rr[0], -rr[1]]
+            }
+        }
+        Pair::P { slider, .. } => {
+            // a0 = s·(n, c), a1 = (0, 0, s) with s = ±1: n·(r₀, r₁) = s·λ₀,
+            // c·s·λ₀ + s·λ₁ = r₂
+            let l0 = a0[0] * rr[0] + a0[1] * rr[1];
+            if slider == l {
+                [l0, rr[2] - a0[2] * l0]
+            } else {
+                [l0, a0[2] * l0 - rr[2]]
+            }
+        }
+    }
 }
 
 #[inline(always)]
@@ -245,4 +266,95 @@ pub fn is_ordered_dyad(pairs: &[&Pair], links: &[usize]) -> bool {
 #[inline(always)]
 pub fn about_origin(o: Vec2, f: Vec2, p: Vec2, c: f64) -> (Vec2, f64) {
     (f, cross(p - o, f) + c)
+}
+
+/// A dyad of three revolute pairs (RRR, the first kind), prepared once: the
+/// links, each joint's local vector on the link whose equations use it, and
+/// the side of each pair, so that a position costs two moment equations and
+/// no branching on the pair kinds.
+///
+/// The same elimination as [`solve_dyad`] (docs/forces.md, "Dyads: the
+/// course's elimination") written out for revolute pairs, derived here
+/// (seed 001 sheet 3: "ΣM(C) = 0 ⇒ R^τ"): with
+/// joints J₁ (outer, link x), J₂ (inner) and J₃ (outer, link y), the force
+/// F on x from y satisfies, by the moments about J₁ of link x and about J₃
+/// of link y,
+/// `(J₂ − J₁) × F = −M_x(J₁)` and `(J₂ − J₃) × F = M_y(J₃)`,
+/// where `M(J) = M_o − (J − o) × Q` is the moment of the applied load
+/// `(Q, M_o about the link's origin o)` about J; then the outer reactions
+/// follow from each link's ΣF = 0: `F₁ = −Q_x − F`, `F₃ = −Q_y + F`.
+#[derive(Debug, Clone, Copy)]
+pub struct RrrDyad {
+    x: usize,
+    y: usize,
+    /// J₁, J₂ on link x; J₂, J₃ on link y, local.
+    j1x: Vec2,
+    j2x: Vec2,
+    j2y: Vec2,
+    j3y: Vec2,
+    /// The pair's first link (`a`) is the one on which the force is found:
+    /// x for pairs 0 and 1, y for pair 2 (else the force is reversed).
+    a_is: [bool; 3],
+    /// Each pair's first link and its local point (where the reaction acts).
+    at: [(usize, Vec2); 3],
+}
+
+impl RrrDyad {
+    /// Prepare a dyad ordered as [`is_ordered_dyad`] says; `None` unless all
+    /// three pairs are revolute.
+    pub fn new(pairs: &[&Pair], links: &[usize]) -> Option<Self> {
+        if !is_ordered_dyad(pairs, links) {
+            return None;
+        }
+        let (x, y) = (links[0], links[1]);
+        let local = |p: &Pair, l: usize| match *p {
+            Pair::R { a, la, lb, .. } => Some(if a == l { la } else { lb }),
+            Pair::P { .. } => None,
+        };
+        let first = |p: &Pair| match *p {
+            Pair::R { a, la, .. } => (a, la),
+            Pair::P { slider, ps, .. } => (slider, ps),
+        };
+        Some(RrrDyad {
+            x,
+            y,
+            j1x: local(pairs[0], x)?,
+            j2x: local(pairs[1], x)?,
+            j2y: local(pairs[1], y)?,
+            j3y: local(pairs[2], y)?,
+            a_is: [first(pairs[0]).0 == x, first(pairs[1]).0 == x, first(pairs[2]).0 == y],
+            at: [first(pairs[0]), first(pairs[1]), first(pairs[2])],
+        })
+    }
+
+    /// Same contract as [`solve_dyad`].
+    #[inline(always)]
+    pub fn solve(&self, states: &[LinkState], q: &[(Vec2, f64)], out: &mut [PairForce]) -> bool {
+        let (sx, sy) = (&states[self.x], &states[self.y]);
+        let (r1, r2x) = (rot(sx.u, self.j1x), rot(sx.u, self.j2x));
+        let (r2y, r3) = (rot(sy.u, self.j2y), rot(sy.u, self.j3y));
+        let (qx, qy) = (q[0], q[1]);
+        let mx1 = qx.1 - cross(r1, qx.0);
+        let my3 = qy.1 - cross(r3, qy.0);
+        let (d1, d3) = (r2x - r1, r2y - r3);
+        // d × F = d.x·F.y − d.y·F.x: rows (−d1.y, d1.x) = −mx1, (−d3.y, d3.x) = my3
+        let det = cross(d1, d3);
+        let size = (d1.x.abs() + d1.y.abs()) * (d3.x.abs() + d3.y.abs());
+        if det.abs() <= 1e-12 * size || !det.is_finite() {
+            return false;
+        }
+        let id = 1.0 / det;
+        let f = Vec2::new((-mx1 * d3.x - d1.x * my3) * id, (-d1.y * my3 - mx1 * d3.y) * id);
+        let forces = [-qx.0 - f, f, f - qy.0];
+        for k in 0..3 {
+            let (l, p) = self.at[k];
+            let force = if self.a_is[k] { forces[k] } else { -forces[k] };
+            out[k] = PairForce {
+                force,
+                at: states[l].pos(p),
+                couple: 0.0,
+            };
+        }
+        out[..3].iter().all(|f| f.force.x.is_finite() && f.force.y.is_finite())
+    }
 }

@@ -15,7 +15,7 @@
 use tmm_geom::{Vec2, cross, perp};
 
 use super::error::ForceError;
-use super::group::{GroupWork, PairForce, about_origin, is_ordered_dyad, solve_dyad, solve_group};
+use super::group::{GroupWork, PairForce, RrrDyad, about_origin, is_ordered_dyad, solve_dyad, solve_group};
 use super::inertia::inertia_load;
 use super::loads::Loads;
 use super::stroke::{Phase, Stroke, Working};
@@ -68,6 +68,19 @@ pub struct Reaction {
     pub offset: f64,
     /// `true` for a prismatic pair (the force is normal to the guide).
     pub prismatic: bool,
+}
+
+/// Where the reaction of one pair of a group goes: the pair, the link it
+/// acts on (inside the group) and the link exerting it, whether the group
+/// solve's force (on the pair's first link) must be reversed, and whether
+/// its opposite loads a link of an earlier group.
+#[derive(Debug, Clone, Copy)]
+struct PairPlan {
+    pid: usize,
+    on: usize,
+    from: usize,
+    flip: bool,
+    carry: bool,
 }
 
 /// The result at one crank angle.
@@ -129,7 +142,13 @@ pub struct Kinetostatics<'m> {
     gpairs: Vec<Vec<&'m Pair>>,
     /// Per group: solved by the dyad elimination (else the general solve).
     dyad: Vec<bool>,
+    /// Per group: prepared when it is a dyad of three revolute pairs.
+    rrr: Vec<Option<RrrDyad>>,
+    /// Per group, per pair: where its reaction goes (found once, not per position).
+    plan: Vec<Vec<PairPlan>>,
     pivot_pair: usize,
+    /// 1 / |pin − pivot| of the crank, 1/m.
+    inv_radius: f64,
     work: GroupWork,
     /// Solve every group by the general Jᵀ·λ system (for cross-checks).
     pub general: bool,
@@ -176,6 +195,35 @@ impl<'m> Kinetostatics<'m> {
             .iter()
             .position(|p| matches!(*p, Pair::R { a, b, .. } if (a == 0 && b == c) || (a == c && b == 0)))
             .ok_or_else(|| ForceError::load("input", "the crank has no revolute pair with the frame"))?;
+        let rrr = m
+            .groups
+            .iter()
+            .zip(&gpairs)
+            .map(|(g, p)| RrrDyad::new(p, &g.info.link_ids))
+            .collect();
+        let plan = m
+            .groups
+            .iter()
+            .map(|g| {
+                let links = &g.info.link_ids;
+                g.info
+                    .pair_ids
+                    .iter()
+                    .map(|&pid| {
+                        let (first, other) = m.pairs[pid].links();
+                        let flip = !links.contains(&first);
+                        let (on, from) = if flip { (other, first) } else { (first, other) };
+                        PairPlan {
+                            pid,
+                            on,
+                            from,
+                            flip,
+                            carry: from != 0 && !links.contains(&from),
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
         let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
         Ok(Kinetostatics {
             m,
@@ -183,7 +231,10 @@ impl<'m> Kinetostatics<'m> {
             stroke,
             gpairs,
             dyad,
+            rrr,
+            plan,
             pivot_pair,
+            inv_radius: 1.0 / (m.crank.dir_local.hypot() * m.crank.radius),
             work: GroupWork::new(max_links),
             general: false,
         })
@@ -236,6 +287,20 @@ impl<'m> Kinetostatics<'m> {
         for l in 1..m.link_names.len() {
             let ld = &self.loads.links[l];
             let st = &sol.links[l];
+            if ld.mass == 0.0
+                && ld.inertia == 0.0
+                && ld.moment == 0.0
+                && ld.forces.is_empty()
+                && self.loads.resistance.iter().all(|r| r.link != l)
+            {
+                // an unloaded link (a balanced crank): nothing to reduce
+                out.links[l] = LinkForces {
+                    s: st.pos(m.mass_centers[l]),
+                    ..LinkForces::default()
+                };
+                out.acc[l] = (Vec2::ZERO, 0.0);
+                continue;
+            }
             let (fi, s, mi) = inertia_load(st, m.mass_centers[l], ld.mass, ld.inertia);
             let w = self.loads.gravity * ld.mass;
             power += (fi + w).dot(st.kin_at(s).0) + (mi + ld.moment) * st.omega;
@@ -276,7 +341,9 @@ impl<'m> Kinetostatics<'m> {
             }
             let prs = &self.gpairs[g];
             // a direct call, so that the dyad's elimination is inlined
-            let solved = if self.dyad[g] && !self.general {
+            let solved = if let (Some(d), false) = (&self.rrr[g], self.general) {
+                d.solve(&sol.links, &out.q[..links.len()], &mut out.pf[..prs.len()])
+            } else if self.dyad[g] && !self.general {
                 solve_dyad(
                     prs,
                     links,
@@ -301,20 +368,13 @@ impl<'m> Kinetostatics<'m> {
                     group: grp.label(),
                 });
             }
-            for (k, &pid) in grp.info.pair_ids.iter().enumerate() {
-                let p = &m.pairs[pid];
-                let (first, other) = p.links();
-                let pf = out.pf[k];
-                let (on, from, f, c) = if links.contains(&first) {
-                    (first, other, pf.force, pf.couple)
-                } else {
-                    (other, first, -pf.force, -pf.couple)
-                };
-                out.reactions[pid] = reaction(pid, p, from, on, f, pf.at, c, sol);
-                if from != 0 && !links.contains(&from) {
-                    let (df, dm) = about_origin(sol.links[from].o, -f, pf.at, -c);
-                    out.acc[from].0 += df;
-                    out.acc[from].1 += dm;
+            for (pl, (pf, p)) in self.plan[g].iter().zip(out.pf.iter().zip(prs)) {
+                let (f, c) = if pl.flip { (-pf.force, -pf.couple) } else { (pf.force, pf.couple) };
+                out.reactions[pl.pid] = reaction(pl.pid, p, pl.from, pl.on, f, pf.at, c, sol);
+                if pl.carry {
+                    let (df, dm) = about_origin(sol.links[pl.from].o, -f, pf.at, -c);
+                    out.acc[pl.from].0 += df;
+                    out.acc[pl.from].1 += dm;
                 }
             }
         }
@@ -328,9 +388,9 @@ impl<'m> Kinetostatics<'m> {
         out.reactions[self.pivot_pair] = reaction(self.pivot_pair, &m.pairs[self.pivot_pair], 0, c, -f, pivot, 0.0, sol);
         // the pin from the crank's own state (pivot + radius along the crank)
         let r = crate::state::rot(sol.links[c].u, m.crank.dir_local) * m.crank.radius;
-        let rl = r.hypot();
-        out.balancing_force = out.balancing_moment / rl;
-        out.balancing_force_vec = perp(r) * (out.balancing_moment / (rl * rl));
+        // |r| = l₁·|d| (a rotation keeps lengths): fixed, its inverse found once
+        out.balancing_force = out.balancing_moment * self.inv_radius;
+        out.balancing_force_vec = perp(r) * (out.balancing_moment * self.inv_radius * self.inv_radius);
         out.pin = pivot + r;
         // with P_b at the pin the crank's ΣF = 0 changes: R₀₁ = −(f + P_b)
         out.pivot_reaction_with_force = -f - out.balancing_force_vec;
@@ -342,6 +402,15 @@ impl<'m> Kinetostatics<'m> {
         };
         if !(out.balancing_moment.is_finite() && out.zhukovsky_moment.is_finite()) {
             return Err(bad("the balancing torque"));
+        }
+        // x·0 is NaN exactly when x is not finite: one test for all the
+        // reactions, the search for the culprit only when it fails
+        let all = out
+            .reactions
+            .iter()
+            .fold(0.0, |acc, r| acc + (r.force.x + r.force.y + r.at.x + r.at.y) * 0.0);
+        if all == 0.0 {
+            return Ok(());
         }
         for r in &out.reactions {
             if !(r.force.x.is_finite() && r.force.y.is_finite() && r.at.x.is_finite() && r.at.y.is_finite()) {

@@ -167,7 +167,16 @@ impl Stroke {
     /// The phase of the cycle of a solved position.
     #[inline]
     pub fn phase(&self, sol: &Solution) -> Phase {
-        let angle = wrap_2pi((sol.phi - self.phi_start) * self.dir);
+        let a = (sol.phi - self.phi_start) * self.dir;
+        // φ and φ_start lie in [0, 2π) as a rule: one shift instead of a
+        // remainder (the same value as wrap_2pi there)
+        let angle = if (0.0..2.0 * PI).contains(&a) {
+            a
+        } else if (-2.0 * PI..0.0).contains(&a) && a + 2.0 * PI < 2.0 * PI {
+            a + 2.0 * PI
+        } else {
+            wrap_2pi(a)
+        };
         let angle = if angle >= 2.0 * PI - 1e-12 { 0.0 } else { angle };
         Phase {
             working: angle <= self.work_span + 1e-12,
