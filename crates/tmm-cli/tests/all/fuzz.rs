@@ -11,7 +11,7 @@
 //! `TMM_FUZZ_CASES` sets the number of in-process cases (default 2000);
 //! every 25th case also runs through the `tmm` binary, and so do the
 //! command-line option cases. `TMM_FUZZ_SEED` changes the seed. The long run
-//! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test fuzz -- --nocapture`.
+//! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test all fuzz:: -- --nocapture`.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};

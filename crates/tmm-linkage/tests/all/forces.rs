@@ -3,8 +3,7 @@
 //! solved by hand, seed 001 sheet 3 recomputed from its own data with
 //! kinematics by finite differences, and the beam diagrams' closure and M' = Q.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::*;
 use tmm_geom::{Vec2, cross};

@@ -2,8 +2,7 @@
 //! reference: the Scotch yoke's closed form (s = r·cos(φ − α)), the offset
 //! crank-slider's closed form, brute-force sampling, and exact scaling.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 

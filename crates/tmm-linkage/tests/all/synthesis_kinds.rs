@@ -4,8 +4,7 @@
 //! compared with the construction's extreme positions, and every failure a
 //! typed error.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

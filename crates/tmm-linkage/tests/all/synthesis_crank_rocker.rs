@@ -6,8 +6,7 @@
 //! of the pivots meeting the condition, have a smallest transmission angle no
 //! worse than the original's (cos μ = (b² + c² − (d ∓ a)²)/(2bc)).
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

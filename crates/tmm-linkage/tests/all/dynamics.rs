@@ -3,7 +3,7 @@
 //! the flywheel by three methods against each other, a hand-solved case and
 //! the time integration; the true motion against the kinetostatics; bad input.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

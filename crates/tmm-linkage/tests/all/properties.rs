@@ -3,8 +3,7 @@
 //! finite differences of positions and accelerations of velocities, and the
 //! force polygon of every group and of the crank closes.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::v;
 use proptest::prelude::*;

@@ -3,7 +3,7 @@
 //! of the chosen language, the numbers with its decimal separator, the
 //! literal user text, and the title block's labels.
 
-mod common;
+use crate::common;
 
 use common::{TRICKY_NAME, sample_note};
 use tmm_note::{Block, Lang, Note, NoteError, Section, Span, Text, typeset, typeset_with_warnings};

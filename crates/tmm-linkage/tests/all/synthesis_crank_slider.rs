@@ -4,8 +4,7 @@
 //! back; closed forms derived in the test; seed 000's formulas; infeasible
 //! requests give typed errors with the nearest feasible value.
 
-#[path = "common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::Rng;
 use tmm_geom::Vec2;

@@ -1,0 +1,16 @@
+//! The integration tests of tmm-linkage, linked into one test binary (one link of
+//! the dependency graph instead of one per file). Each former test file is
+//! a module here: run one with `cargo test --release -p tmm-linkage --test all <module>::`.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod dynamics;
+mod forces;
+mod fourbar_closed_form;
+mod hardening;
+mod properties;
+mod synthesis_crank_rocker;
+mod synthesis_crank_slider;
+mod synthesis_kinds;
+mod synthesis_proptest;
+mod synthesis_seeds;

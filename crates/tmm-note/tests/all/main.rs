@@ -1,0 +1,8 @@
+//! The integration tests of tmm-note, linked into one test binary (one link of
+//! the dependency graph instead of one per file). Each former test file is
+//! a module here: run one with `cargo test --release -p tmm-note --test all <module>::`.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod compose;
+mod typeset;

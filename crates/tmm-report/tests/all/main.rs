@@ -1,0 +1,11 @@
+//! The integration tests of tmm-report, linked into one test binary (one link of
+//! the dependency graph instead of one per file). Each former test file is
+//! a module here: run one with `cargo test --release -p tmm-report --test all <module>::`.
+
+mod cam_diagrams;
+mod drawings_gear_cam;
+mod drawings_linkage;
+mod force_polygons;
+mod hardening_examples;
+mod linkage_examples;
+mod sheets;
