@@ -33,7 +33,7 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             for (name, l) in links {
                 let m = l.get("mass").and_then(|v| v.as_f64()).unwrap_or(0.0);
                 let j = l.get("inertia").and_then(|v| v.as_f64()).unwrap_or(0.0);
-                rows.push(vec![text(cx.fill("link_n", &[name.clone()])?), num(m), num(j)]);
+                rows.push(vec![text(cx.fill("link_n", std::slice::from_ref(name))?), num(m), num(j)]);
             }
         }
         b.push(cx.table(

@@ -45,10 +45,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 })
                 .unwrap_or(0.0);
             let m = l.get("inertia_moment").and_then(Value::as_f64).unwrap_or(0.0);
-            rows.push(vec![text(cx.fill("link_n", &[name.clone()])?), num(fm), num(m)]);
+            rows.push(vec![text(cx.fill("link_n", std::slice::from_ref(name))?), num(fm), num(m)]);
         }
     }
-    results.push(cx.para("fo_results_at", &[phi.clone()])?);
+    results.push(cx.para("fo_results_at", std::slice::from_ref(&phi))?);
     results.push(cx.table(
         "tab_inertia",
         &[("col_link", ""), ("col_inertia_force", "u_n"), ("col_inertia_moment", "u_nm")],

@@ -53,6 +53,9 @@ pub fn lang_of(l: Language) -> Lang {
     }
 }
 
+/// A section's composer: its part of the note, if the run has it.
+type SectionBuilder = fn(&Ctx) -> Result<Option<crate::model::Section>, NoteError>;
+
 /// Composes the note of `run` (computed from `task`) in the run's language.
 ///
 /// ```no_run
@@ -99,7 +102,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         designation,
     };
     let mut sections = Vec::new();
-    let builders: [fn(&Ctx) -> Result<Option<crate::model::Section>, NoteError>; 7] = [
+    let builders: [SectionBuilder; 7] = [
         synthesis::section,
         linkage::section,
         forces::section,
