@@ -744,7 +744,7 @@ pub fn plot_in(
     width: f64,
     height: f64,
 ) -> String {
-    plot_impl(lang, title, xlabel, ylabel, series, &[], width, height)
+    plot_with_impulses_in(lang, title, xlabel, ylabel, series, &[], width, height)
 }
 
 /// An impulse (a Dirac δ of the plotted quantity) at `x`, as the course marks
@@ -770,26 +770,12 @@ pub fn plot_with_impulses(
     width: f64,
     height: f64,
 ) -> String {
-    plot_impl(crate::project::Language::En, title, xlabel, ylabel, series, impulses, width, height)
+    plot_with_impulses_in(crate::project::Language::En, title, xlabel, ylabel, series, impulses, width, height)
 }
 
 /// [`plot_with_impulses`] with its tick labels in `lang`.
 #[allow(clippy::too_many_arguments)]
 pub fn plot_with_impulses_in(
-    lang: crate::project::Language,
-    title: &str,
-    xlabel: &str,
-    ylabel: &str,
-    series: &[Series<'_>],
-    impulses: &[Impulse],
-    width: f64,
-    height: f64,
-) -> String {
-    plot_impl(lang, title, xlabel, ylabel, series, impulses, width, height)
-}
-
-#[allow(clippy::too_many_arguments)]
-fn plot_impl(
     lang: crate::project::Language,
     title: &str,
     xlabel: &str,
