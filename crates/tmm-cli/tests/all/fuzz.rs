@@ -9,8 +9,11 @@
 //! written by a run that failed, or an exit code other than 0, 1 or 2.
 //!
 //! `TMM_FUZZ_CASES` sets the number of in-process cases (default 2000);
-//! every 25th case also runs through the `tmm` binary, and so do the
-//! command-line option cases. `TMM_FUZZ_SEED` changes the seed. The long run
+//! every 25th case also runs through the `tmm` binary (with the note and the
+//! sheets typeset on every 250th), and so do the command-line option cases.
+//! Every case draws from its own generator, seeded by the case number, and the
+//! cases are shared out over the machine's cores. `TMM_FUZZ_SEED` changes the
+//! seed; `TMM_FUZZ_FROM=K TMM_FUZZ_CASES=1` replays case K alone. The long run
 //! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test all fuzz:: -- --nocapture`.
 
 use std::path::{Path, PathBuf};
@@ -241,79 +244,131 @@ fn seed() -> u64 {
         .unwrap_or(0x5eed_7a5c_0ffe_e001)
 }
 
+/// What one worker saw: cases run, refused, and the slowest in-process run.
+#[derive(Default)]
+struct Tally {
+    ok: usize,
+    refused: usize,
+    slowest: Duration,
+}
+
+/// The generator of case `case`: every case has its own stream, so a case is
+/// reproduced by its number alone and the workers may share the cases out.
+fn case_rng(case: usize) -> Rng {
+    // splitmix64 of the case number, mixed with the seed (never zero)
+    let mut z = (case as u64).wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    Rng((seed() ^ z ^ (z >> 31)) | 1)
+}
+
+/// One case: mutate, run in process, and every 25th through the binary.
+fn fuzz_case(case: usize, corpus: &[(String, String)], work: &Path, tally: &mut Tally) {
+    let mut rng = case_rng(case);
+    let (name, text) = rng.pick(corpus);
+    let bytes = mutate(&mut rng, text);
+    let what = format!("case {case} (from {name})");
+    if let Ok(text) = std::str::from_utf8(&bytes) {
+        let src = TaskSource::new("task.toml", text);
+        let t0 = Instant::now();
+        let r = std::panic::catch_unwind(|| run_task(&src));
+        let dt = t0.elapsed();
+        tally.slowest = tally.slowest.max(dt);
+        let Ok(r) = r else {
+            panic!("{what}: panic on this task:\n{text}");
+        };
+        assert!(dt < TIME_LIMIT, "{what}: {dt:?}\n{text}");
+        match r {
+            Ok(run) => {
+                tally.ok += 1;
+                for d in &run.docs {
+                    if let Some(t) = d.as_text() {
+                        assert!(!has_nonfinite(t), "{what}: non-finite number in {}\n{text}", d.path);
+                    }
+                }
+                for o in &run.sections {
+                    assert!(
+                        !has_nonfinite(&o.text),
+                        "{what}: non-finite number in the {} tables\n{text}",
+                        o.section
+                    );
+                }
+            }
+            Err(e) => {
+                tally.refused += 1;
+                assert!(matches!(e.exit_code(), 1 | 2), "{what}: exit code {}", e.exit_code());
+                let msg = e.to_string();
+                assert!(!msg.is_empty());
+                for leak in ["Vec2 {", "Some(", "RawQty", "untagged enum"] {
+                    assert!(!msg.contains(leak), "{what}: debug output in the message: {msg}");
+                }
+            }
+        }
+    }
+    if case % 25 == 0 {
+        let file = work.join("task.toml");
+        std::fs::write(&file, &bytes).unwrap();
+        let out = work.join("out");
+        let _ = std::fs::remove_dir_all(&out);
+        // the note and the sheets' PDF are typeset on every 250th case only:
+        // typesetting takes most of a run's time
+        let args: &[&str] = if case % 250 == 0 {
+            &["run", "task.toml", "--out", "out"]
+        } else {
+            &["run", "task.toml", "--out", "out", "--no-pdf"]
+        };
+        let code = check_bin(args, work, &what);
+        if code == 0 {
+            assert!(out.join(".tmm-out").exists(), "{what}: no marker");
+        } else {
+            assert!(!out.exists(), "{what}: a failed run left files");
+        }
+    }
+}
+
 #[test]
 fn mutated_task_files() {
     let corpus = corpus();
     let n = cases();
-    let mut rng = Rng(seed());
-    let work = std::env::temp_dir().join(format!("tmm-fuzz-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&work);
-    std::fs::create_dir_all(&work).unwrap();
-    let (mut ok, mut refused, mut slowest) = (0usize, 0usize, Duration::ZERO);
+    // `TMM_FUZZ_FROM` starts at a later case (to replay one, with TMM_FUZZ_CASES=1)
+    let from: usize = std::env::var("TMM_FUZZ_FROM").ok().and_then(|v| v.parse().ok()).unwrap_or(0);
+    let workers = std::thread::available_parallelism().map_or(1, |n| n.get()).min(8);
+    let done = std::sync::atomic::AtomicUsize::new(0);
     let started = Instant::now();
-    for case in 0..n {
-        let (name, text) = rng.pick(&corpus);
-        let bytes = mutate(&mut rng, text);
-        let what = format!("case {case} (from {name})");
-        if let Ok(text) = std::str::from_utf8(&bytes) {
-            let src = TaskSource::new("task.toml", text);
-            let t0 = Instant::now();
-            let r = std::panic::catch_unwind(|| run_task(&src));
-            let dt = t0.elapsed();
-            slowest = slowest.max(dt);
-            let Ok(r) = r else {
-                panic!("{what}: panic on this task:\n{text}");
-            };
-            assert!(dt < TIME_LIMIT, "{what}: {dt:?}\n{text}");
-            match r {
-                Ok(run) => {
-                    ok += 1;
-                    for d in &run.docs {
-                        if let Some(t) = d.as_text() {
-                            assert!(!has_nonfinite(t), "{what}: non-finite number in {}\n{text}", d.path);
+    let tallies: Vec<Tally> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..workers)
+            .map(|w| {
+                let (corpus, done) = (&corpus, &done);
+                s.spawn(move || {
+                    let work = std::env::temp_dir().join(format!("tmm-fuzz-{}-{w}", std::process::id()));
+                    let _ = std::fs::remove_dir_all(&work);
+                    std::fs::create_dir_all(&work).unwrap();
+                    let mut tally = Tally::default();
+                    for case in (from + w..from + n).step_by(workers) {
+                        fuzz_case(case, corpus, &work, &mut tally);
+                        let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                        if d % 10_000 == 0 {
+                            eprintln!("fuzz: {d} cases in {:.1} s", started.elapsed().as_secs_f64());
                         }
                     }
-                    for o in &run.sections {
-                        assert!(
-                            !has_nonfinite(&o.text),
-                            "{what}: non-finite number in the {} tables\n{text}",
-                            o.section
-                        );
-                    }
-                }
-                Err(e) => {
-                    refused += 1;
-                    assert!(matches!(e.exit_code(), 1 | 2), "{what}: exit code {}", e.exit_code());
-                    let msg = e.to_string();
-                    assert!(!msg.is_empty());
-                    for leak in ["Vec2 {", "Some(", "RawQty", "untagged enum"] {
-                        assert!(!msg.contains(leak), "{what}: debug output in the message: {msg}");
-                    }
-                }
-            }
-        }
-        if case > 0 && case % 10_000 == 0 {
-            eprintln!(
-                "fuzz: {case} cases in {:.1} s: {ok} ran, {refused} refused, slowest {slowest:?}",
-                started.elapsed().as_secs_f64()
-            );
-        }
-        if case % 25 == 0 {
-            let file = work.join("task.toml");
-            std::fs::write(&file, &bytes).unwrap();
-            let out = work.join("out");
-            let _ = std::fs::remove_dir_all(&out);
-            let code = check_bin(&["run", "task.toml", "--out", "out"], &work, &what);
-            if code == 0 {
-                assert!(out.join(".tmm-out").exists(), "{what}: no marker");
-            } else {
-                assert!(!out.exists(), "{what}: a failed run left files");
-            }
-        }
-    }
-    let _ = std::fs::remove_dir_all(&work);
+                    let _ = std::fs::remove_dir_all(&work);
+                    tally
+                })
+            })
+            .collect();
+        // a worker's panic (a failed case) fails the test with its message
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    });
+    let ok: usize = tallies.iter().map(|t| t.ok).sum();
+    let refused: usize = tallies.iter().map(|t| t.refused).sum();
+    let slowest = tallies.iter().map(|t| t.slowest).max().unwrap_or_default();
     eprintln!(
-        "fuzz: {n} cases in {:.1} s: {ok} ran, {refused} refused with a message, slowest {slowest:?}",
+        "fuzz: {n} cases (from case {from}, seed {:#x}, {workers} workers) in {:.1} s: \
+         {ok} ran, {refused} refused with a message, slowest {slowest:?}",
+        seed(),
         started.elapsed().as_secs_f64()
     );
 }
