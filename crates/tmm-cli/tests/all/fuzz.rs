@@ -18,6 +18,8 @@
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use tmm_report::TaskSource;
@@ -333,20 +335,48 @@ fn mutated_task_files() {
     // `TMM_FUZZ_FROM` starts at a later case (to replay one, with TMM_FUZZ_CASES=1)
     let from: usize = std::env::var("TMM_FUZZ_FROM").ok().and_then(|v| v.parse().ok()).unwrap_or(0);
     let workers = std::thread::available_parallelism().map_or(1, |n| n.get()).min(8);
-    let done = std::sync::atomic::AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    // what each worker runs now (case number + 1, 0 when idle) and since when
+    let running: Vec<(AtomicUsize, Mutex<Instant>)> = (0..workers).map(|_| (AtomicUsize::new(0), Mutex::new(Instant::now()))).collect();
+    let finished = AtomicBool::new(false);
     let started = Instant::now();
     let tallies: Vec<Tally> = std::thread::scope(|s| {
+        // the watchdog: a case that runs past the time limit is a hang, which
+        // no check after the run could see; name it and stop the process
+        s.spawn(|| {
+            while !finished.load(Ordering::Relaxed) {
+                std::thread::sleep(Duration::from_millis(200));
+                for (case, since) in &running {
+                    let c = case.load(Ordering::Relaxed);
+                    let t = *since.lock().unwrap_or_else(|e| e.into_inner());
+                    if c > 0 && t.elapsed() > TIME_LIMIT {
+                        let case = c - 1;
+                        let mut rng = case_rng(case);
+                        let (name, text) = rng.pick(&corpus);
+                        let bytes = mutate(&mut rng, text);
+                        eprintln!(
+                            "fuzz: case {case} (from {name}) runs past {TIME_LIMIT:?}: a hang; the task:\n{}",
+                            String::from_utf8_lossy(&bytes)
+                        );
+                        std::process::abort();
+                    }
+                }
+            }
+        });
         let handles: Vec<_> = (0..workers)
             .map(|w| {
-                let (corpus, done) = (&corpus, &done);
+                let (corpus, done, slot) = (&corpus, &done, &running[w]);
                 s.spawn(move || {
                     let work = std::env::temp_dir().join(format!("tmm-fuzz-{}-{w}", std::process::id()));
                     let _ = std::fs::remove_dir_all(&work);
                     std::fs::create_dir_all(&work).unwrap();
                     let mut tally = Tally::default();
                     for case in (from + w..from + n).step_by(workers) {
+                        *slot.1.lock().unwrap_or_else(|e| e.into_inner()) = Instant::now();
+                        slot.0.store(case + 1, Ordering::Relaxed);
                         fuzz_case(case, corpus, &work, &mut tally);
-                        let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                        slot.0.store(0, Ordering::Relaxed);
+                        let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                         if d % 10_000 == 0 {
                             eprintln!("fuzz: {d} cases in {:.1} s", started.elapsed().as_secs_f64());
                         }
@@ -357,9 +387,11 @@ fn mutated_task_files() {
             })
             .collect();
         // a worker's panic (a failed case) fails the test with its message
-        handles
+        let joined: Vec<_> = handles.into_iter().map(|h| h.join()).collect();
+        finished.store(true, Ordering::Relaxed);
+        joined
             .into_iter()
-            .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .map(|r| r.unwrap_or_else(|e| std::panic::resume_unwind(e)))
             .collect()
     });
     let ok: usize = tallies.iter().map(|t| t.ok).sum();

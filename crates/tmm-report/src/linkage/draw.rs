@@ -468,8 +468,10 @@ fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(
     let (xe, _) = map(360.0, 0.0);
     c.line_paper((xe, yz - 1.2), (xe, yz + 1.2), Style::THIN);
     // the y ticks: every 10 mm at the round μ
-    let mut k = ((ymin / mu_y) / 10.0).ceil() as i64;
-    while (k as f64) * 10.0 * mu_y <= ymax + 1e-12 {
+    // (the tolerance is relative to the step: the values may be of any size,
+    // such as accelerations of 1e-17 m/s² at a crank speed of 1e-7 rpm)
+    let mut k = ((ymin / mu_y) / 10.0 - 1e-9).ceil() as i64;
+    while (k as f64 - 1e-9) * 10.0 * mu_y <= ymax {
         let v = k as f64 * 10.0 * mu_y;
         let (_, yp) = map(0.0, v);
         c.line_paper((x0 - 1.2, yp), (x0, yp), Style::THIN);
