@@ -5,7 +5,7 @@
 // Writes <out dir>/results.json and one screenshot per view; exits 1 on the
 // first failed check.
 import { spawn, execFileSync } from "node:child_process";
-import { writeFileSync, readFileSync, mkdtempSync } from "node:fs";
+import { writeFileSync, readFileSync, mkdtempSync, readdirSync } from "node:fs";
 import { gzipSync } from "node:zlib";
 import { join } from "node:path";
 import { tmpdir } from "node:os";
@@ -184,6 +184,77 @@ await send("Page.navigate", { url: editedUrl });
 check("the page opened from the link is ready", await until("document.body && document.body.dataset.ready === '1'"));
 const kvLink = await js(`+document.querySelector('[data-key="linkage.kv"]').dataset.value`);
 check("the link reproduces the edited task", Math.abs(kvLink - expEdited.linkage.kv) <= 1e-12, `Kv ${kvLink}`);
+
+// The first difference of two JSON values (numbers to 1e-12 relative), or null.
+function jsonDiff(a, b, path = "") {
+  if (typeof a === "number" && typeof b === "number") return Math.abs(a - b) <= 1e-12 * Math.max(1e-3, Math.abs(a), Math.abs(b)) ? null : `${path}: ${a} and ${b}`;
+  if (Array.isArray(a) !== Array.isArray(b) || typeof a !== typeof b || (a === null) !== (b === null)) return `${path}: ${JSON.stringify(a)?.slice(0, 40)} and ${JSON.stringify(b)?.slice(0, 40)}`;
+  if (a === null || typeof a !== "object") return a === b ? null : `${path}: ${a} and ${b}`;
+  const ka = Object.keys(a), kb = Object.keys(b);
+  if (ka.length !== kb.length || ka.some((k, i) => k !== kb[i])) return `${path}: keys ${ka.slice(0, 5)} and ${kb.slice(0, 5)}`;
+  for (const k of ka) { const d = jsonDiff(a[k], b[k], `${path}.${k}`); if (d) return d; }
+  return null;
+}
+
+// ---------- the files: the list, a download, save and load ----------
+// (the page now holds the edited task, from the link)
+// every download goes through an anchor's click: catch them instead
+// (the list's own links are clicked by an event, which the catch lets through)
+await js(`(window.__downloads = [], HTMLAnchorElement.prototype.click = function () { window.__downloads.push([this.download, this.href]); }, URL.revokeObjectURL = () => {}, true)`);
+await js(`document.querySelector('#tabs [data-view="files"]').click(), true`);
+await until("document.querySelectorAll('#file-list li').length > 1");
+const listed = await js("[...document.querySelectorAll('#file-list li')].map((li) => li.textContent.replace(/ \\(.*$/, ''))");
+const cliOut = join(editedDir, "out-files");
+execFileSync(tmmBin, ["run", "--no-pdf", "--out", cliOut, join(editedDir, "edited.toml")], { stdio: "pipe" });
+const walk = (d, pre = "") => readdirSync(d, { withFileTypes: true }).flatMap((e) => e.isDirectory() ? walk(join(d, e.name), pre + e.name + "/") : [pre + e.name]);
+const cliFiles = walk(cliOut).filter((f) => f !== ".tmm-out").sort();
+const pageFiles = listed.filter((f) => !f.startsWith("task.toml")).sort();
+const missing = cliFiles.filter((f) => !pageFiles.includes(f));
+check("the page offers every file tmm run writes", missing.length === 0 && pageFiles.length === cliFiles.length, `${pageFiles.length} files on the page, ${cliFiles.length} written by the CLI${missing.length ? "; missing " + missing.slice(0, 5).join(", ") : ""}`);
+const fetchDownload = async (i) => js(`fetch(window.__downloads[${i}][1]).then((r) => r.text())`);
+for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
+  const n0 = await js("window.__downloads.length");
+  await js(`[...document.querySelectorAll('#file-list li')].find((li) => li.textContent.startsWith(${JSON.stringify(want + " ")})).querySelector('a').dispatchEvent(new MouseEvent('click', { bubbles: true, cancelable: true })), true`);
+  await until(`window.__downloads.length > ${n0}`);
+  const got = await fetchDownload(n0);
+  const cli = readFileSync(join(cliOut, want), "utf8");
+  if (want.endsWith(".json")) {
+    // the page's floating point runs on WebAssembly's own libm: numbers
+    // agree to 1e-12, not always to the last bit
+    const diff = jsonDiff(JSON.parse(got), JSON.parse(cli));
+    check(`the downloaded ${want} is the CLI's (numbers to 1e-12)`, diff === null, diff ?? `${got.length} bytes`);
+  } else {
+    // text with numbers printed to many places (the DXF's 12 decimals): every
+    // word equal, every number to 1e-9 of its size
+    const words = (t) => t.split(/[\s,"<>=]+/);
+    const [wa, wb] = [words(got), words(cli)];
+    let bad = wa.length === wb.length ? -1 : Math.min(wa.length, wb.length);
+    for (let i = 0; bad < 0 && i < wa.length; i++) {
+      const [x, y] = [Number(wa[i]), Number(wb[i])];
+      const same = wa[i] === wb[i] || (wa[i] !== "" && Number.isFinite(x) && Number.isFinite(y) && Math.abs(x - y) <= 1e-9 * Math.max(1, Math.abs(x)));
+      if (!same) bad = i;
+    }
+    check(`the downloaded ${want} is the CLI's (numbers to 1e-9)`, bad < 0, bad < 0 ? `${got.length} bytes, ${wa.length} words` : `word ${bad}: page ${wa[bad]}, cli ${wb[bad]}`);
+  }
+}
+{
+  const n0 = await js("window.__downloads.length");
+  await js("(document.getElementById('save').click(), true)");
+  await until(`window.__downloads.length > ${n0}`);
+  const saved = await fetchDownload(n0);
+  check("Save task downloads the editor's text", saved === (await js("document.getElementById('editor').value")), `${saved.length} bytes`);
+}
+{
+  const example = new URL("../examples/seed-001-fourbar.toml", import.meta.url).pathname;
+  const { root } = await send("DOM.getDocument");
+  const { nodeId } = await send("DOM.querySelector", { nodeId: root.nodeId, selector: "#load" });
+  await send("DOM.setFileInputFiles", { nodeId, files: [example] });
+  const text = readFileSync(example, "utf8");
+  check("Load puts the file into the editor", await until(`document.getElementById('editor').value === ${JSON.stringify(text)}`));
+  const exp = JSON.parse(execFileSync(tmmBin, ["run", "--json", example], { maxBuffer: 64 << 20 }).toString());
+  await js(`document.querySelector('#tabs [data-view="numbers"]').click(), true`);
+  check("the loaded task is analysed", await until(`Math.abs(+document.querySelector('[data-key="linkage.kv"]').dataset.value - ${exp.linkage.kv}) <= 1e-12`), `Kv ${exp.linkage.kv}`);
+}
 
 // ---------- bundle size ----------
 const wasm = readFileSync(join(distDir, "tmm_web_bg.wasm"));
