@@ -421,27 +421,30 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
         free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title, task),
     )?;
     docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a, task))?;
+    // the balancing torque over the cycle: by kinetostatics as the curve, by
+    // Zhukovsky's lever at the positions as circles (as the course builds
+    // the lever at each of the 12 positions)
     let mb: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[2])).collect();
-    let mz: Vec<(f64, f64)> = a.curve.iter().map(|c| (c[0].to_degrees(), c[3])).collect();
-    let svg = plot_in(
-        lang,
+    let mz: Vec<(f64, f64)> = a
+        .rows
+        .iter()
+        .map(|r| (r.psi.to_degrees(), r.fs.zhukovsky_moment))
+        .chain(a.curve.last().map(|c| (c[0].to_degrees(), c[3])))
+        .collect();
+    let marks: Vec<(f64, String)> = a.rows.iter().map(|r| (r.psi.to_degrees(), r.label.clone())).collect();
+    let svg = crate::linkage::draw::cycle_diagram(
+        task,
         word(lang, "forces.torque_title"),
-        word(lang, "forces.torque_x"),
-        word(lang, "forces.torque_y"),
-        &[
-            Series {
-                name: word(lang, "forces.kinetostatics"),
-                points: &mb,
-                color: "#c00000",
-            },
-            Series {
-                name: word(lang, "forces.lever"),
-                points: &mz,
-                color: "#0050c0",
-            },
-        ],
-        240.0,
-        150.0,
+        word(lang, "forces.torque_sym"),
+        word(lang, "forces.unit_nm"),
+        &mb,
+        &marks,
+        l.mech.crank.omega.abs(),
+        Some(crate::linkage::draw::CycleDots {
+            points: &mz,
+            curve_name: word(lang, "forces.kinetostatics"),
+            dots_name: word(lang, "forces.lever"),
+        }),
     );
     docs.add_text(format!("{dir}balancing-torque.svg"), svg)?;
     if let Some(b) = &a.beam {

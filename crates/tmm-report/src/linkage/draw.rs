@@ -398,15 +398,39 @@ fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, S
                 pts.push((d[0].to_degrees(), pick(d, w)));
             }
             let marks: Vec<(f64, String)> = a.rows.iter().map(|r| (r.pos.psi.to_degrees(), r.pos.label.clone())).collect();
-            (file, cycle_diagram(task, word(lang, title), &sym, &unit, &pts, &marks, w))
+            (file, cycle_diagram(task, word(lang, title), &sym, &unit, &pts, &marks, w, None))
         })
         .collect()
 }
 
+/// Values found another way at the positions, drawn as circles over the
+/// curve, with a legend naming the curve and the circles (the balancing
+/// torque by kinetostatics as the curve, by Zhukovsky's lever at the 12
+/// positions as circles).
+pub(crate) struct CycleDots<'a> {
+    /// (φ from the start of the working stroke in degrees, value).
+    pub points: &'a [(f64, f64)],
+    /// The curve's name in the legend.
+    pub curve_name: &'a str,
+    /// The circles' name in the legend.
+    pub dots_name: &'a str,
+}
+
 /// A diagram over one revolution of the crank: the φ axis 0 … 360° marked
 /// with the positions (0 … 12), the quantity's axis at a round μ, both μ
-/// and the time's μ_t = μ_φ/ω1 written under the title.
-fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(f64, f64)], marks: &[(f64, String)], omega: f64) -> String {
+/// and the time's μ_t = μ_φ/ω1 written under the title; `dots` adds values
+/// at points as circles, with a legend.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn cycle_diagram(
+    task: &TaskSource,
+    title: &str,
+    sym: &str,
+    unit: &str,
+    pts: &[(f64, f64)],
+    marks: &[(f64, String)],
+    omega: f64,
+    dots: Option<CycleDots<'_>>,
+) -> String {
     let lang = task.lang;
     let (w, h) = slot_mm(Slot::Diagram, task.sheet);
     let mut c = Canvas::new(w, h);
@@ -414,7 +438,8 @@ fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(
     // x: 360° at a round μ_φ (° per mm)
     let mu_phi = round_mu(360.0 / (w - left - right));
     let (mut ymin, mut ymax) = (0.0f64, 0.0f64);
-    for p in pts.iter().filter(|p| p.1.is_finite()) {
+    let dot_pts = dots.as_ref().map_or(&[][..], |d| d.points);
+    for p in pts.iter().chain(dot_pts).filter(|p| p.1.is_finite()) {
         ymin = ymin.min(p.1);
         ymax = ymax.max(p.1);
     }
@@ -496,6 +521,25 @@ fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(
         "<path class=\"curve\" d=\"{}\" stroke=\"#000\" stroke-width=\"0.7\" fill=\"none\"/>",
         d.trim_end()
     ));
+    let dot_paper: Vec<(f64, f64)> = dot_pts.iter().map(|p| map(p.0, p.1)).collect();
+    if let Some(dots) = &dots {
+        for &(x, y) in dots.points.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
+            let (px, py) = map(x, y);
+            c.raw(&format!(
+                "<circle class=\"dot\" cx=\"{px:.3}\" cy=\"{py:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>"
+            ));
+        }
+        // the legend, top right inside the paper
+        let (lx, ly) = (w - right - 52.0, top - 3.0);
+        c.line_paper((lx, ly - 0.9), (lx + 6.0, ly - 0.9), Style::THIN.widened(0.7));
+        c.rich_paper((lx + 7.5, ly), dots.curve_name, H_SMALL, Anchor::Start, "#000");
+        c.raw(&format!(
+            "<circle class=\"legend\" cx=\"{:.3}\" cy=\"{:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>",
+            lx + 3.0,
+            ly + 3.5 - 0.9
+        ));
+        c.rich_paper((lx + 7.5, ly + 3.5), dots.dots_name, H_SMALL, Anchor::Start, "#000");
+    }
     // position numbers under the axis, clear of the curve
     for (x, label) in marks.iter().chain(std::iter::once(&(360.0, "12".to_string()))) {
         if label.ends_with('\'') && marks.len() > 1 {
@@ -510,7 +554,21 @@ fn cycle_diagram(task: &TaskSource, title: &str, sym: &str, unit: &str, pts: &[(
         } else {
             label.clone()
         };
-        c.rich_paper((xp, yz + 4.5), &n, H_SMALL, Anchor::Middle, "#000");
+        // under the axis unless the curve or a circle passes there: then above
+        let (bx0, bx1) = (xp - 1.5, xp + 1.5);
+        let hits = |y0: f64, y1: f64| {
+            curve
+                .iter()
+                .chain(dot_paper.iter())
+                .any(|&(px, py)| (bx0 - 1.2..=bx1 + 1.2).contains(&px) && (y0 - 1.2..=y1 + 1.2).contains(&py))
+        };
+        let y = match (hits(yz + 2.0, yz + 4.5), hits(yz - 4.5, yz - 2.0)) {
+            (false, _) => yz + 4.5,
+            (true, false) => yz - 2.0,
+            // the curve crosses the axis there: lower, clear of a circle on the axis
+            (true, true) => yz + 6.0,
+        };
+        c.rich_paper((xp, y), &n, H_SMALL, Anchor::Middle, "#000");
     }
     c.finish()
 }

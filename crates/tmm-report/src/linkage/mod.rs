@@ -1,7 +1,7 @@
 //! The `[linkage]` section: read the mechanism, analyse its structure and its
 //! cycle, and write the tables, the JSON document and the drawings.
 
-mod draw;
+pub(crate) mod draw;
 mod json;
 pub mod task;
 mod text;

@@ -351,3 +351,64 @@ fn force_plans_and_the_lever_fit_their_slot_with_labels_apart() {
         }
     }
 }
+
+/// The balancing torque over the cycle: the curve by kinetostatics and
+/// Zhukovsky's lever as circles at the positions. Each circle sits on the
+/// curve (the two methods agree, so a circle off the curve is a misdrawn
+/// point), the φ axis runs over one turn (0 … 360°, the positions 0 … 12,
+/// not to 400°) and the scale factors are written.
+#[test]
+fn balancing_torque_circles_sit_on_the_curve() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let text = std::fs::read_to_string(dir.join("seed-001-fourbar.toml")).unwrap();
+    let run = tmm_report::run::run_task(&TaskSource::new("seed-001-fourbar.toml", text)).unwrap();
+    let svg = run
+        .docs
+        .iter()
+        .find(|d| d.path == "forces/balancing-torque.svg")
+        .and_then(|d| d.as_text())
+        .unwrap()
+        .to_string();
+    // the curve's vertices
+    let path = svg.lines().find(|l| l.contains("class=\"curve\"")).unwrap();
+    let d = attr(path, "d").unwrap();
+    let pts: Vec<(f64, f64)> = d
+        .split(['M', 'L'])
+        .filter_map(|p| {
+            let (x, y) = p.trim().split_once(',')?;
+            Some((x.parse().ok()?, y.parse().ok()?))
+        })
+        .collect();
+    assert!(pts.len() > 300, "{} vertices", pts.len());
+    let (x0, x1) = (pts[0].0, pts[pts.len() - 1].0);
+    let dots: Vec<(f64, f64)> = svg
+        .lines()
+        .filter(|l| l.contains("class=\"dot\""))
+        .map(|l| (num(l, "cx"), num(l, "cy")))
+        .collect();
+    // 12 positions, the extreme one and position 12 (= 0 a turn later)
+    assert!(dots.len() >= 13, "{} circles", dots.len());
+    for &(cx, cy) in &dots {
+        let k = pts.windows(2).position(|w| w[0].0 <= cx && cx <= w[1].0).unwrap();
+        let (a, b) = (pts[k], pts[k + 1]);
+        let t = if b.0 > a.0 { (cx - a.0) / (b.0 - a.0) } else { 0.0 };
+        let y = a.1 + t * (b.1 - a.1);
+        assert!((y - cy).abs() < 0.05, "circle at x {cx}: {cy} against the curve's {y}");
+    }
+    // one turn: the last position mark at the curve's end, 360° from its start
+    let shown = texts(&svg);
+    let twelve = shown.iter().find(|t| t.0 == "12").unwrap().1;
+    assert!(
+        (0.5 * (twelve[0] + twelve[2]) - x1).abs() < 0.5,
+        "12 at {twelve:?}, the curve ends at {x1}"
+    );
+    let zero = shown.iter().find(|t| t.0 == "0").unwrap().1;
+    assert!(
+        (0.5 * (zero[0] + zero[2]) - x0).abs() < 0.5,
+        "0 at {zero:?}, the curve starts at {x0}"
+    );
+    assert!(
+        shown.iter().any(|t| t.0.starts_with("μM = ") && t.0.contains("μφ = ")),
+        "no scale factors"
+    );
+}
