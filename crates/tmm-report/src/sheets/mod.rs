@@ -694,13 +694,13 @@ mod tests {
         let svg = concat!(
             r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm" viewBox="0 0 20 10">"#,
             r#"<defs><marker id="a"><path d="M0 0L1 1"/></marker><clipPath id="ab"><rect width="5" height="5"/></clipPath></defs>"#,
-            r#"<path d="M0 0H9" marker-end="url(#a)" clip-path="url(#ab)" fill="#abc"/>"#,
+            r##"<path d="M0 0H9" marker-end="url(#a)" clip-path="url(#ab)" fill="#abc"/>"##,
             r##"<use href="#ab"/><use xlink:href="#a"/><text>#a ab a"</text>"##,
             "</svg>\n"
         );
         let expected = concat!(
             r#"<defs><marker id="d7-a"><path d="M0 0L1 1"/></marker><clipPath id="d7-ab"><rect width="5" height="5"/></clipPath></defs>"#,
-            r#"<path d="M0 0H9" marker-end="url(#d7-a)" clip-path="url(#d7-ab)" fill="#abc"/>"#,
+            r##"<path d="M0 0H9" marker-end="url(#d7-a)" clip-path="url(#d7-ab)" fill="#abc"/>"##,
             r##"<use href="#d7-ab"/><use xlink:href="#d7-a"/><text>#a ab a"</text>"##,
         );
         let d = read_drawing("linkage/positions.svg", svg, Language::En, true, 7).unwrap();
