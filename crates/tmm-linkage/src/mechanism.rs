@@ -730,6 +730,7 @@ impl Mechanism {
         Ok(())
     }
 
+    #[inline]
     fn solve_once(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
         let (s, co) = phi.sin_cos();
         self.solve_dir(phi, Vec2::new(co, s), sol)
