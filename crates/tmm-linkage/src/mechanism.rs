@@ -622,7 +622,13 @@ impl Mechanism {
 
     /// A fresh solution buffer for this mechanism.
     pub fn solution(&self) -> Solution {
-        let n = 3 * self.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(2);
+        // Newton's buffers only for a mechanism with a larger group (a dyad
+        // needs none): a stored solution stays small
+        let n = if self.has_general {
+            3 * self.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(2)
+        } else {
+            0
+        };
         Solution {
             phi: f64::NAN,
             links: if self.init.is_empty() {
@@ -724,6 +730,7 @@ impl Mechanism {
         Ok(())
     }
 
+    #[inline]
     fn solve_once(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
         let (s, co) = phi.sin_cos();
         self.solve_dir(phi, Vec2::new(co, s), sol)
@@ -801,12 +808,24 @@ impl Mechanism {
     }
 
     fn solve_general(&self, g: &Group, sol: &mut Solution) -> Result<(), DyadFail> {
-        let prs: Vec<&Pair> = g.pairs.iter().map(|&i| &self.pairs[i]).collect();
+        // the group's pairs on the stack (a class-III triad has 6, a
+        // class-IV group 8): no allocation per position below 32 pairs
+        let mut buf = [&self.pairs[0]; 32];
+        let heap: Vec<&Pair>;
+        let prs: &[&Pair] = if g.pairs.len() <= buf.len() {
+            for (b, &i) in buf.iter_mut().zip(&g.pairs) {
+                *b = &self.pairs[i];
+            }
+            &buf[..g.pairs.len()]
+        } else {
+            heap = g.pairs.iter().map(|&i| &self.pairs[i]).collect();
+            &heap
+        };
         let unknown = &g.info.link_ids;
         let n = 3 * unknown.len();
-        constraints::newton(&prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::NoClosure)?;
+        constraints::newton(prs, unknown, &mut sol.links, &mut sol.jac, &mut sol.rhs, self.scale).ok_or(DyadFail::NoClosure)?;
         for mode in [Mode::Velocity, Mode::Acceleration] {
-            constraints::assemble(&prs, unknown, &sol.links, mode, &mut sol.jac, &mut sol.rhs);
+            constraints::assemble(prs, unknown, &sol.links, mode, &mut sol.jac, &mut sol.rhs);
             // angles as arc lengths at the size of the mechanism, so that the
             // pivot test does not depend on the unit of length
             constraints::scale_angle_columns(&mut sol.jac[..n * n], n, n, 1.0 / self.scale);

@@ -29,6 +29,8 @@ use crate::constraints::{self, Mode};
 use crate::mechanism::Pair;
 use crate::state::{LinkState, rot};
 
+pub use super::dyads::RrrDyad;
+
 /// Buffers of a group solve, sized once.
 #[derive(Debug, Clone)]
 pub struct GroupWork {
@@ -266,95 +268,4 @@ pub fn is_ordered_dyad(pairs: &[&Pair], links: &[usize]) -> bool {
 #[inline(always)]
 pub fn about_origin(o: Vec2, f: Vec2, p: Vec2, c: f64) -> (Vec2, f64) {
     (f, cross(p - o, f) + c)
-}
-
-/// A dyad of three revolute pairs (RRR, the first kind), prepared once: the
-/// links, each joint's local vector on the link whose equations use it, and
-/// the side of each pair, so that a position costs two moment equations and
-/// no branching on the pair kinds.
-///
-/// The same elimination as [`solve_dyad`] (docs/forces.md, "Dyads: the
-/// course's elimination") written out for revolute pairs, derived here
-/// (seed 001 sheet 3: "ΣM(C) = 0 ⇒ R^τ"): with
-/// joints J₁ (outer, link x), J₂ (inner) and J₃ (outer, link y), the force
-/// F on x from y satisfies, by the moments about J₁ of link x and about J₃
-/// of link y,
-/// `(J₂ − J₁) × F = −M_x(J₁)` and `(J₂ − J₃) × F = M_y(J₃)`,
-/// where `M(J) = M_o − (J − o) × Q` is the moment of the applied load
-/// `(Q, M_o about the link's origin o)` about J; then the outer reactions
-/// follow from each link's ΣF = 0: `F₁ = −Q_x − F`, `F₃ = −Q_y + F`.
-#[derive(Debug, Clone, Copy)]
-pub struct RrrDyad {
-    x: usize,
-    y: usize,
-    /// J₁, J₂ on link x; J₂, J₃ on link y, local.
-    j1x: Vec2,
-    j2x: Vec2,
-    j2y: Vec2,
-    j3y: Vec2,
-    /// The pair's first link (`a`) is the one on which the force is found:
-    /// x for pairs 0 and 1, y for pair 2 (else the force is reversed).
-    a_is: [bool; 3],
-    /// Each pair's first link and its local point (where the reaction acts).
-    at: [(usize, Vec2); 3],
-}
-
-impl RrrDyad {
-    /// Prepare a dyad ordered as [`is_ordered_dyad`] says; `None` unless all
-    /// three pairs are revolute.
-    pub fn new(pairs: &[&Pair], links: &[usize]) -> Option<Self> {
-        if !is_ordered_dyad(pairs, links) {
-            return None;
-        }
-        let (x, y) = (links[0], links[1]);
-        let local = |p: &Pair, l: usize| match *p {
-            Pair::R { a, la, lb, .. } => Some(if a == l { la } else { lb }),
-            Pair::P { .. } => None,
-        };
-        let first = |p: &Pair| match *p {
-            Pair::R { a, la, .. } => (a, la),
-            Pair::P { slider, ps, .. } => (slider, ps),
-        };
-        Some(RrrDyad {
-            x,
-            y,
-            j1x: local(pairs[0], x)?,
-            j2x: local(pairs[1], x)?,
-            j2y: local(pairs[1], y)?,
-            j3y: local(pairs[2], y)?,
-            a_is: [first(pairs[0]).0 == x, first(pairs[1]).0 == x, first(pairs[2]).0 == y],
-            at: [first(pairs[0]), first(pairs[1]), first(pairs[2])],
-        })
-    }
-
-    /// Same contract as [`solve_dyad`].
-    #[inline(always)]
-    pub fn solve(&self, states: &[LinkState], q: &[(Vec2, f64)], out: &mut [PairForce]) -> bool {
-        let (sx, sy) = (&states[self.x], &states[self.y]);
-        let (r1, r2x) = (rot(sx.u, self.j1x), rot(sx.u, self.j2x));
-        let (r2y, r3) = (rot(sy.u, self.j2y), rot(sy.u, self.j3y));
-        let (qx, qy) = (q[0], q[1]);
-        let mx1 = qx.1 - cross(r1, qx.0);
-        let my3 = qy.1 - cross(r3, qy.0);
-        let (d1, d3) = (r2x - r1, r2y - r3);
-        // d × F = d.x·F.y − d.y·F.x: rows (−d1.y, d1.x) = −mx1, (−d3.y, d3.x) = my3
-        let det = cross(d1, d3);
-        let size = (d1.x.abs() + d1.y.abs()) * (d3.x.abs() + d3.y.abs());
-        if det.abs() <= 1e-12 * size || !det.is_finite() {
-            return false;
-        }
-        let id = 1.0 / det;
-        let f = Vec2::new((-mx1 * d3.x - d1.x * my3) * id, (-d1.y * my3 - mx1 * d3.y) * id);
-        let forces = [-qx.0 - f, f, f - qy.0];
-        for k in 0..3 {
-            let (l, p) = self.at[k];
-            let force = if self.a_is[k] { forces[k] } else { -forces[k] };
-            out[k] = PairForce {
-                force,
-                at: states[l].pos(p),
-                couple: 0.0,
-            };
-        }
-        out[..3].iter().all(|f| f.force.x.is_finite() && f.force.y.is_finite())
-    }
 }

@@ -14,8 +14,9 @@
 
 use tmm_geom::{Vec2, cross, perp};
 
+use super::dyads::{RrpDyad, RrrDyad};
 use super::error::ForceError;
-use super::group::{GroupWork, PairForce, RrrDyad, about_origin, is_ordered_dyad, solve_dyad, solve_group};
+use super::group::{GroupWork, PairForce, about_origin, is_ordered_dyad, solve_dyad, solve_group};
 use super::inertia::inertia_load;
 use super::loads::Loads;
 use super::stroke::{Phase, Stroke, Working};
@@ -72,8 +73,9 @@ pub struct Reaction {
 
 /// Where the reaction of one pair of a group goes: the pair, the link it
 /// acts on (inside the group) and the link exerting it, whether the group
-/// solve's force (on the pair's first link) must be reversed, and whether
-/// its opposite loads a link of an earlier group.
+/// solve's force (on the pair's first link) must be reversed, whether its
+/// opposite loads a link of an earlier group, and for a prismatic pair its
+/// guide (the link and the direction on it).
 #[derive(Debug, Clone, Copy)]
 struct PairPlan {
     pid: usize,
@@ -81,6 +83,34 @@ struct PairPlan {
     from: usize,
     flip: bool,
     carry: bool,
+    guide: Option<(usize, Vec2)>,
+}
+
+impl PairPlan {
+    fn new(m: &Mechanism, pid: usize, on: usize, from: usize, flip: bool, carry: bool) -> Self {
+        let guide = match m.pairs[pid] {
+            Pair::P { guide, d, .. } => Some((guide, d)),
+            Pair::R { .. } => None,
+        };
+        PairPlan {
+            pid,
+            on,
+            from,
+            flip,
+            carry,
+            guide,
+        }
+    }
+}
+
+/// How a group's reactions are found, chosen once: a dyad written out for
+/// its pair kinds, another dyad by the elimination, or the general solve.
+#[derive(Debug, Clone)]
+enum GroupSolver {
+    Rrr(RrrDyad),
+    Rrp(RrpDyad),
+    Dyad,
+    General,
 }
 
 /// The result at one crank angle.
@@ -140,13 +170,14 @@ pub struct Kinetostatics<'m> {
     /// The output's stroke, when a resistance law needs it.
     pub stroke: Option<Stroke>,
     gpairs: Vec<Vec<&'m Pair>>,
-    /// Per group: solved by the dyad elimination (else the general solve).
-    dyad: Vec<bool>,
-    /// Per group: prepared when it is a dyad of three revolute pairs.
-    rrr: Vec<Option<RrrDyad>>,
+    /// Per group: how its reactions are found.
+    solver: Vec<GroupSolver>,
     /// Per group, per pair: where its reaction goes (found once, not per position).
     plan: Vec<Vec<PairPlan>>,
+    /// Per link: a useful resistance acts on it.
+    resisted: Vec<bool>,
     pivot_pair: usize,
+    pivot_plan: PairPlan,
     /// 1 / |pin − pivot| of the crank, 1/m.
     inv_radius: f64,
     work: GroupWork,
@@ -183,11 +214,22 @@ impl<'m> Kinetostatics<'m> {
             .iter()
             .map(|g| g.info.pair_ids.iter().map(|&i| &m.pairs[i]).collect())
             .collect();
-        let dyad = m
+        let solver = m
             .groups
             .iter()
             .zip(&gpairs)
-            .map(|(g, p)| is_ordered_dyad(p, &g.info.link_ids))
+            .map(|(g, p)| {
+                let links = &g.info.link_ids;
+                if let Some(d) = RrrDyad::new(p, links) {
+                    GroupSolver::Rrr(d)
+                } else if let Some(d) = RrpDyad::new(p, links) {
+                    GroupSolver::Rrp(d)
+                } else if is_ordered_dyad(p, links) {
+                    GroupSolver::Dyad
+                } else {
+                    GroupSolver::General
+                }
+            })
             .collect();
         let c = m.crank.link;
         let pivot_pair = m
@@ -195,12 +237,6 @@ impl<'m> Kinetostatics<'m> {
             .iter()
             .position(|p| matches!(*p, Pair::R { a, b, .. } if (a == 0 && b == c) || (a == c && b == 0)))
             .ok_or_else(|| ForceError::load("input", "the crank has no revolute pair with the frame"))?;
-        let rrr = m
-            .groups
-            .iter()
-            .zip(&gpairs)
-            .map(|(g, p)| RrrDyad::new(p, &g.info.link_ids))
-            .collect();
         let plan = m
             .groups
             .iter()
@@ -213,13 +249,7 @@ impl<'m> Kinetostatics<'m> {
                         let (first, other) = m.pairs[pid].links();
                         let flip = !links.contains(&first);
                         let (on, from) = if flip { (other, first) } else { (first, other) };
-                        PairPlan {
-                            pid,
-                            on,
-                            from,
-                            flip,
-                            carry: from != 0 && !links.contains(&from),
-                        }
+                        PairPlan::new(m, pid, on, from, flip, from != 0 && !links.contains(&from))
                     })
                     .collect()
             })
@@ -227,15 +257,18 @@ impl<'m> Kinetostatics<'m> {
         let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
         Ok(Kinetostatics {
             m,
-            loads,
             stroke,
             gpairs,
-            dyad,
-            rrr,
+            solver,
             plan,
+            resisted: (0..m.link_names.len())
+                .map(|l| loads.resistance.iter().any(|r| r.link == l))
+                .collect(),
             pivot_pair,
+            pivot_plan: PairPlan::new(m, pivot_pair, c, 0, false, false),
             inv_radius: 1.0 / (m.crank.dir_local.hypot() * m.crank.radius),
             work: GroupWork::new(max_links),
+            loads,
             general: false,
         })
     }
@@ -279,6 +312,9 @@ impl<'m> Kinetostatics<'m> {
         for (k, r) in self.loads.resistance.iter().enumerate() {
             out.resistance[k] = r.law.value(&phase);
         }
+        // 1/ω₁ of the crank depends on the position only: found before the
+        // loads, off their path
+        let inv_omega = 1.0 / sol.links[m.crank.link].omega;
         // --- loads on every link, reduced to S and to the link's origin
         out.acc[0] = (Vec2::ZERO, 0.0);
         // virtual power of the same raw loads, summed alongside (Zhukovsky's
@@ -287,12 +323,7 @@ impl<'m> Kinetostatics<'m> {
         for l in 1..m.link_names.len() {
             let ld = &self.loads.links[l];
             let st = &sol.links[l];
-            if ld.mass == 0.0
-                && ld.inertia == 0.0
-                && ld.moment == 0.0
-                && ld.forces.is_empty()
-                && self.loads.resistance.iter().all(|r| r.link != l)
-            {
+            if ld.mass == 0.0 && ld.inertia == 0.0 && ld.moment == 0.0 && ld.forces.is_empty() && !self.resisted[l] {
                 // an unloaded link (a balanced crank): nothing to reduce
                 out.links[l] = LinkForces {
                     s: st.pos(m.mass_centers[l]),
@@ -312,7 +343,7 @@ impl<'m> Kinetostatics<'m> {
                 power += pf.force.dot(st.kin_at(p).0);
             }
             for (k, r) in self.loads.resistance.iter().enumerate() {
-                if r.link == l {
+                if self.resisted[l] && r.link == l {
                     let (f, p, c) = r.apply(st, out.resistance[k]);
                     fe += f;
                     me += cross(p - s, f) + c;
@@ -340,27 +371,13 @@ impl<'m> Kinetostatics<'m> {
                 out.q[i] = out.acc[l];
             }
             let prs = &self.gpairs[g];
-            // a direct call, so that the dyad's elimination is inlined
-            let solved = if let (Some(d), false) = (&self.rrr[g], self.general) {
-                d.solve(&sol.links, &out.q[..links.len()], &mut out.pf[..prs.len()])
-            } else if self.dyad[g] && !self.general {
-                solve_dyad(
-                    prs,
-                    links,
-                    &sol.links,
-                    &out.q[..links.len()],
-                    &mut self.work,
-                    &mut out.pf[..prs.len()],
-                )
-            } else {
-                solve_group(
-                    prs,
-                    links,
-                    &sol.links,
-                    &out.q[..links.len()],
-                    &mut self.work,
-                    &mut out.pf[..prs.len()],
-                )
+            let (q, pf) = (&out.q[..links.len()], &mut out.pf[..prs.len()]);
+            // direct calls, so that the dyads' eliminations are inlined
+            let solved = match (&self.solver[g], self.general) {
+                (GroupSolver::Rrr(d), false) => d.solve(&sol.links, q, pf),
+                (GroupSolver::Rrp(d), false) => d.solve(&sol.links, q, pf),
+                (GroupSolver::Dyad, false) => solve_dyad(prs, links, &sol.links, q, &mut self.work, pf),
+                _ => solve_group(prs, links, &sol.links, q, &mut self.work, pf),
             };
             if !solved {
                 return Err(ForceError::Singular {
@@ -368,9 +385,9 @@ impl<'m> Kinetostatics<'m> {
                     group: grp.label(),
                 });
             }
-            for (pl, (pf, p)) in self.plan[g].iter().zip(out.pf.iter().zip(prs)) {
+            for (pl, pf) in self.plan[g].iter().zip(out.pf.iter()) {
                 let (f, c) = if pl.flip { (-pf.force, -pf.couple) } else { (pf.force, pf.couple) };
-                out.reactions[pl.pid] = reaction(pl.pid, p, pl.from, pl.on, f, pf.at, c, sol);
+                out.reactions[pl.pid] = reaction(pl, f, pf.at, c, sol);
                 if pl.carry {
                     let (df, dm) = about_origin(sol.links[pl.from].o, -f, pf.at, -c);
                     out.acc[pl.from].0 += df;
@@ -385,7 +402,7 @@ impl<'m> Kinetostatics<'m> {
         let pivot = m.crank.pivot;
         let m_pivot = mo + cross(o - pivot, f);
         out.balancing_moment = -m_pivot;
-        out.reactions[self.pivot_pair] = reaction(self.pivot_pair, &m.pairs[self.pivot_pair], 0, c, -f, pivot, 0.0, sol);
+        out.reactions[self.pivot_pair] = reaction(&self.pivot_plan, -f, pivot, 0.0, sol);
         // the pin from the crank's own state (pivot + radius along the crank)
         let r = crate::state::rot(sol.links[c].u, m.crank.dir_local) * m.crank.radius;
         // |r| = l₁·|d| (a rotation keeps lengths): fixed, its inverse found once
@@ -394,7 +411,7 @@ impl<'m> Kinetostatics<'m> {
         out.pin = pivot + r;
         // with P_b at the pin the crank's ΣF = 0 changes: R₀₁ = −(f + P_b)
         out.pivot_reaction_with_force = -f - out.balancing_force_vec;
-        out.zhukovsky_moment = -power / sol.links[c].omega;
+        out.zhukovsky_moment = -power * inv_omega;
         // --- nothing non-finite leaves
         let bad = |what: &str| ForceError::NonFinite {
             phi_deg: phi.to_degrees(),
@@ -403,13 +420,14 @@ impl<'m> Kinetostatics<'m> {
         if !(out.balancing_moment.is_finite() && out.zhukovsky_moment.is_finite()) {
             return Err(bad("the balancing torque"));
         }
-        // x·0 is NaN exactly when x is not finite: one test for all the
-        // reactions, the search for the culprit only when it fails
-        let all = out
+        // a sum is finite when its terms are (inside the ranges of `limits`
+        // nothing overflows): one test per reaction, each independent of the
+        // others, the search for the culprit only when one fails
+        if out
             .reactions
             .iter()
-            .fold(0.0, |acc, r| acc + (r.force.x + r.force.y + r.at.x + r.at.y) * 0.0);
-        if all == 0.0 {
+            .all(|r| ((r.force.x + r.force.y) + (r.at.x + r.at.y)).is_finite())
+        {
             return Ok(());
         }
         for r in &out.reactions {
@@ -423,24 +441,23 @@ impl<'m> Kinetostatics<'m> {
 
 /// Build a reaction record: split along the axis of `on`, and for a prismatic
 /// pair turn the couple into a shift of the force along the guide.
-#[allow(clippy::too_many_arguments)]
-#[inline]
-fn reaction(pair: usize, p: &Pair, from: usize, on: usize, force: Vec2, at: Vec2, couple: f64, sol: &Solution) -> Reaction {
-    let u = sol.links[on].u;
-    let (prismatic, offset, at) = match *p {
-        Pair::P { guide, d, .. } => {
+#[inline(always)]
+fn reaction(pl: &PairPlan, force: Vec2, at: Vec2, couple: f64, sol: &Solution) -> Reaction {
+    let u = sol.links[pl.on].u;
+    let (prismatic, offset, at) = match pl.guide {
+        Some((guide, d)) => {
             let dg = crate::state::rot(sol.links[guide].u, d);
             // force ⟂ guide: couple = x·(d × F) ⇒ x = couple / (d × F)
             let k = cross(dg, force);
             let x = if k.abs() > 1e-300 { couple / k } else { 0.0 };
             (true, x, at + dg * x)
         }
-        Pair::R { .. } => (false, 0.0, at),
+        None => (false, 0.0, at),
     };
     Reaction {
-        pair,
-        from,
-        on,
+        pair: pl.pid,
+        from: pl.from,
+        on: pl.on,
         force,
         at,
         normal: force.dot(u),

@@ -17,6 +17,7 @@
 //! - [`stroke`]: dead positions and travel of the output link (for the law);
 //! - [`inertia`]: inertia force −m·a_S and torque −J_S·ε;
 //! - [`group`]: the reactions of one Assur group from its constraint Jacobian;
+//! - [`dyads`]: the RRR and RRP dyads' reactions written out, prepared once;
 //! - [`kinetostatics`]: the whole mechanism, group by group, then the crank;
 //! - [`polygon`]: each group's and the crank's force polygon, closed;
 //! - [`zhukovsky`]: the balancing torque by virtual power, and the lever's geometry;
@@ -53,6 +54,7 @@
 //! ```
 
 pub mod beam;
+pub mod dyads;
 pub mod error;
 pub mod group;
 pub mod inertia;

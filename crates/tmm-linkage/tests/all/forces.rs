@@ -557,3 +557,80 @@ fn dyad_elimination_agrees_with_the_general_group_solve() {
         }
     }
 }
+
+/// An RRP dyad whose guide is on a moving link: a four-bar O–A–B–E whose
+/// rocker 3 (E–B) carries the guide of block 5, joined at D to link 4
+/// pivoted at F on the frame. The dyad's written-out reactions against the
+/// general Jᵀλ solve, and the whole mechanism's balancing torque against
+/// virtual power computed here, at every position that assembles.
+#[test]
+fn rrp_dyad_on_a_moving_guide_agrees_with_the_general_solve_and_virtual_power() {
+    let def = MechanismDef {
+        fixed: vec![("O".into(), v(0.0, 0.0)), ("E".into(), v(0.4, 0.0)), ("F".into(), v(0.45, 0.3))],
+        links: vec![
+            LinkDef::bar("1", "O", "A", 0.1),
+            LinkDef::bar("2", "A", "B", 0.45),
+            LinkDef::bar("3", "E", "B", 0.35),
+            LinkDef::bar("4", "F", "D", 0.2),
+            LinkDef::block("5", "D"),
+        ],
+        sliders: vec![SliderDef {
+            slider: "5".into(),
+            point: "D".into(),
+            guide_link: "3".into(),
+            through: v(0.0, 0.0),
+            angle: 0.0,
+            angle_on_slider: 0.0,
+        }],
+        input: Some(InputDef {
+            link: "1".into(),
+            pivot: "O".into(),
+            pin: "A".into(),
+            omega: 8.0,
+            epsilon: 3.0,
+        }),
+        hints: vec![
+            tmm_linkage::AssemblyHint {
+                point: "B".into(),
+                kind: tmm_linkage::HintKind::Above("O".into(), "E".into()),
+            },
+            tmm_linkage::AssemblyHint {
+                point: "D".into(),
+                kind: tmm_linkage::HintKind::Near(v(0.3, 0.15)),
+            },
+        ],
+        assembly_angle: 1.2,
+        ..Default::default()
+    };
+    let m = Mechanism::new(&def).unwrap();
+    let mut rng = Rng(99);
+    let loads = random_loads(&m, &mut rng);
+    let mut fast = Kinetostatics::new(&m, loads.clone()).unwrap();
+    let mut slow = Kinetostatics::new(&m, loads.clone()).unwrap();
+    slow.general = true;
+    let (mut sol, mut f1, mut f2) = (m.solution(), fast.result(), slow.result());
+    let mut solved = 0;
+    for i in 0..72 {
+        let phi = 1.2 + (i as f64 - 36.0) * 0.01;
+        if m.solve(phi, &mut sol).is_err() {
+            continue;
+        }
+        fast.solve(&sol, &mut f1).unwrap();
+        slow.solve(&sol, &mut f2).unwrap();
+        let scale = f2.reactions.iter().map(|r| r.force.hypot()).fold(1.0, f64::max);
+        for (a, b) in f1.reactions.iter().zip(&f2.reactions) {
+            assert!((a.force - b.force).hypot() < 1e-9 * scale, "φ={phi}");
+            assert!((a.at - b.at).hypot() < 1e-9, "φ={phi}");
+        }
+        // M_b·ω1 + Σ F·v + Σ M·ω = 0
+        let w1 = sol.links[m.crank.link].omega;
+        let (p, scale) = power(&m, &loads, &sol, |_, _| (Vec2::ZERO, Vec2::ZERO, 0.0));
+        let resid = f1.balancing_moment * w1 + p;
+        assert!(
+            resid.abs() <= 1e-9 * (scale + (f1.balancing_moment * w1).abs()),
+            "φ={phi}: {resid} vs {scale}"
+        );
+        solved += 1;
+    }
+    assert!(solved > 36, "{solved} positions assembled");
+}

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 use tmm_geom::Vec2;
+use tmm_linkage::forces::{Action, Law, Loads, Resistance};
 use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, SliderDef};
 
 pub fn v(x: f64, y: f64) -> Vec2 {
@@ -84,6 +85,26 @@ pub fn seed003_def() -> MechanismDef {
         assembly_angle: 80f64.to_radians(),
         ..Default::default()
     }
+}
+
+/// The seed-003 loads (examples/seed-003-sixbar.toml, [forces]): 30 kg/m,
+/// J = m·l²/12, gravity, 3000 N·sin(π·s/H) against the slider's motion.
+pub fn seed003_example_loads(m: &Mechanism) -> Loads {
+    let mut l = Loads::new(m);
+    l.gravity = v(0.0, -9.81);
+    for (i, mass, len) in [(2, 37.5, 1.25), (3, 18.0, 0.6), (4, 19.5, 0.65), (5, 19.5, 0.0)] {
+        l.links[i].mass = mass;
+        l.links[i].inertia = mass * len * len / 12.0;
+    }
+    l.resistance.push(Resistance {
+        link: 5,
+        action: Action::Force {
+            local: Vec2::ZERO,
+            dir: None,
+        },
+        law: Law::SineOfTravel(3000.0),
+    });
+    l
 }
 
 /// Seed 004 six-bar with two sliders (examples/seed-004-two-sliders.toml).

@@ -23,6 +23,7 @@ pub mod svg_to_dxf;
 pub mod title_block;
 pub mod xml;
 
+use std::collections::HashSet;
 use std::fmt::Write as _;
 
 use crate::Error;
@@ -221,19 +222,9 @@ fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize
     } else {
         [0.0, 0.0, w, h]
     };
-    let mut body = text[body_from..body_to].to_string();
     // unique ids: every id of the drawing gets the drawing's prefix
-    let mut ids: Vec<&str> = toks.iter().filter_map(|t| t.attr("id")).collect();
-    ids.sort_by_key(|s| std::cmp::Reverse(s.len()));
-    ids.dedup();
-    for id in ids {
-        let id = escape(id);
-        let new = format!("d{k}-{id}");
-        body = body
-            .replace(&format!("id=\"{id}\""), &format!("id=\"{new}\""))
-            .replace(&format!("#{id}\""), &format!("#{new}\""))
-            .replace(&format!("#{id})"), &format!("#{new})"));
-    }
+    let ids: HashSet<String> = toks.iter().filter_map(|t| t.attr("id")).map(escape).collect();
+    let body = prefix_ids(&text[body_from..body_to], &ids, &format!("d{k}-"));
     Some(Drawing {
         path: path.to_string(),
         caption: caption(path, lang),
@@ -244,6 +235,59 @@ fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize
         scale: root.attr("data-scale").map(str::to_string).filter(|s| !s.trim().is_empty()),
         body,
     })
+}
+
+/// The markup `body` with `prefix` put before every id of `ids` (as
+/// written in the markup, escaped) where it is defined, `id="X"`, and where
+/// it is referred to, `#X"` (`href="#X"`) and `#X)` (`url(#X)`), in one
+/// pass over the text: at each `id="` or `#` the name up to the closing
+/// `"` (or `)`) is looked up in the set, so that an id that begins another
+/// (`a` and `ab`) takes only its own places. Anything else (`fill="#abc"`
+/// when `abc` is no id) is copied as it is.
+fn prefix_ids(body: &str, ids: &HashSet<String>, prefix: &str) -> String {
+    if ids.is_empty() {
+        return body.to_string();
+    }
+    let bytes = body.as_bytes();
+    // no name is longer than the longest id: the search for its end stops there
+    let longest = ids.iter().map(String::len).max().unwrap_or(0);
+    let end_of = |start: usize, c: u8| {
+        let lim = bytes.len().min(start + longest + 1);
+        bytes[start..lim].iter().position(|&b| b == c).map(|e| start + e)
+    };
+    let mut out = String::with_capacity(body.len() + body.len() / 16);
+    let mut copied = 0;
+    let mut i = 0;
+    while let Some(off) = body[i..].find(['#', 'i']) {
+        let at = i + off;
+        // where a name may start, and the candidates for its end: the first
+        // `"`, and after `#` also the first `)`, the longer name first
+        let (start, ends) = if bytes[at] == b'#' {
+            let start = at + 1;
+            match (end_of(start, b'"'), end_of(start, b')')) {
+                (Some(q), Some(p)) => (start, [Some(q.max(p)), Some(q.min(p))]),
+                (q, p) => (start, [q.or(p), None]),
+            }
+        } else if body[at..].starts_with("id=\"") {
+            let start = at + 4;
+            (start, [end_of(start, b'"'), None])
+        } else {
+            i = at + 1;
+            continue;
+        };
+        match ends.into_iter().flatten().find(|&end| ids.contains(&body[start..end])) {
+            Some(end) => {
+                out.push_str(&body[copied..start]);
+                out.push_str(prefix);
+                out.push_str(&body[start..end]);
+                copied = end;
+                i = end;
+            }
+            None => i = at + 1,
+        }
+    }
+    out.push_str(&body[copied..]);
+    out
 }
 
 /// The drawings of one template found in the run, in the course's order.
@@ -636,4 +680,31 @@ pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents,
         out.add_bytes(format!("sheets/sheet-{}.dxf", sheet.number), dxf.to_bytes()?)?;
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two ids, one the beginning of the other (`a`, `ab`), defined and
+    /// referred to by `href="#…"` and `url(#…)`; a colour `#abc` that is no
+    /// id stays as it is. The expected markup is written out by hand.
+    #[test]
+    fn ids_take_the_drawing_prefix() {
+        let svg = concat!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm" viewBox="0 0 20 10">"#,
+            r#"<defs><marker id="a"><path d="M0 0L1 1"/></marker><clipPath id="ab"><rect width="5" height="5"/></clipPath></defs>"#,
+            r##"<path d="M0 0H9" marker-end="url(#a)" clip-path="url(#ab)" fill="#abc"/>"##,
+            r##"<use href="#ab"/><use xlink:href="#a"/><text>#a ab a"</text>"##,
+            "</svg>\n"
+        );
+        let expected = concat!(
+            r#"<defs><marker id="d7-a"><path d="M0 0L1 1"/></marker><clipPath id="d7-ab"><rect width="5" height="5"/></clipPath></defs>"#,
+            r##"<path d="M0 0H9" marker-end="url(#d7-a)" clip-path="url(#d7-ab)" fill="#abc"/>"##,
+            r##"<use href="#d7-ab"/><use xlink:href="#d7-a"/><text>#a ab a"</text>"##,
+        );
+        let d = read_drawing("linkage/positions.svg", svg, Language::En, true, 7).unwrap();
+        assert_eq!(d.body, expected);
+        assert_eq!((d.w, d.h, d.view_box), (20.0, 10.0, [0.0, 0.0, 20.0, 10.0]));
+    }
 }
