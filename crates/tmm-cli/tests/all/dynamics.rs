@@ -80,8 +80,13 @@ fn json_contract_keys() {
     for k in ["diameter", "width", "mass"] {
         assert!(d["flywheel"][k].is_f64(), "{k}");
     }
-    // a constant driving moment has no run-up, and the text says why
-    assert!(d["runup"].is_null());
+    // a constant driving moment has no run-up from rest (the JSON and the
+    // text say why), and δ measured on the steady cycle integrated in time is
+    // the requested one to 1e-4
+    let r = &d["runup"];
+    assert!(r["time"].is_null() && r["from_rest"] == false, "{r}");
+    assert!((f(&r["delta"]) - 0.02).abs() < 1e-4, "{r}");
+    assert!(r["why"].as_str().unwrap().contains("constant driving moment"), "{r}");
     let o = tmm(&["dynamics", "examples/seed-001-fourbar.toml"]);
     assert!(o.status.success());
     let text = String::from_utf8(o.stdout).unwrap();
@@ -247,7 +252,7 @@ fn kinetostatics_with_the_true_crank_motion() {
 fn motor_run_up() {
     let d = json(&tmm(&["dynamics", "examples/seed-003-sixbar.toml", "--json"]));
     let r = &d["runup"];
-    assert!(f(&r["time"]) > 0.0 && f(&r["delta"]) > 0.0, "{r}");
+    assert!(f(&r["time"]) > 0.0 && f(&r["delta"]) > 0.0 && r["from_rest"] == true, "{r}");
     assert!((f(&d["delta"]) - 0.05).abs() < 1e-9);
     // the rim: J = ρπb(D⁴ − d⁴)/32 with d = D − 2h, h = 0.1·D, b = 0.2·D
     let (dd, b, h) = (
@@ -368,4 +373,59 @@ fn bad_inputs_exit_2_naming_the_field() {
     // and `tmm run` refuses the whole run
     let e = bad_text("run", &format!("{}\n[dynamics]\ndelta = 2\n", &base[..b]), "run");
     assert!(e.contains("dynamics.delta"), "{e}");
+}
+
+/// Extreme values through the command line: each refused with exit code 2
+/// and a message naming the field in a readable form (no three-hundred-digit
+/// numbers, no NaN), or computed with every number finite.
+#[test]
+fn extreme_inputs_exit_2_or_finite_results() {
+    let refused = [
+        ("neg", "[dynamics]\ndelta = -0.1\n", "dynamics.delta"),
+        ("huge-delta", "[dynamics]\ndelta = 1e300\n", "not 1e300"),
+        (
+            "huge-inertia",
+            "[dynamics]\ndelta = 0.02\n[dynamics.inertia]\ncrank_shaft = \"1e306 kg m^2\"\n",
+            "dynamics.inertia.crank_shaft",
+        ),
+        (
+            "huge-motor",
+            "[dynamics]\ndelta = 0.02\n[dynamics.motor]\nsynchronous_speed = \"1e300 rpm\"\nnominal_speed = \"1400 rpm\"\nnominal_torque = \"60 N m\"\nratio = 1e290\n",
+            "dynamics.motor.synchronous_speed",
+        ),
+        // 1400 rpm / 1.6 = 875 rpm nominal: under the seed's 81.4 N·m the crank settles near 884 rpm < ω_min = 891 rpm
+        (
+            "slower-than-needed",
+            "[dynamics]\ndelta = 0.02\n[dynamics.motor]\nsynchronous_speed = \"1500 rpm\"\nnominal_speed = \"1400 rpm\"\nnominal_torque = \"60 N m\"\nratio = 1.6\n",
+            "dynamics.motor.ratio: the motor is slower than the crank needs",
+        ),
+    ];
+    for (name, dynamics, want) in refused {
+        let e = bad(name, dynamics);
+        assert!(e.contains(want), "{name}: {e}");
+        assert!(
+            !e.contains("0000000000") && !e.contains("NaN") && !e.contains("panicked"),
+            "{name}: {e}"
+        );
+    }
+    // [forces] without the useful resistance: no loads to drive
+    let base = example("seed-001-fourbar.toml");
+    let (a, b) = (base.find("[[forces.resistance]]").unwrap(), base.find("[forces.strength]").unwrap());
+    let e = bad_text("no-loads", &format!("{}{}", &base[..a], &base[b..]), "dynamics");
+    assert!(e.contains("forces") && e.contains("no resisting work"), "{e}");
+    // a tiny δ needs a huge flywheel, still finite and exact
+    let cut = base.find("\n[dynamics]").unwrap();
+    for (name, delta) in [("tiny", "1e-9"), ("large", "0.5")] {
+        let dir = tmp(name);
+        let p = dir.join("task.toml");
+        std::fs::write(&p, format!("{}\n[dynamics]\ndelta = {delta}\n", &base[..cut])).unwrap();
+        let o = tmm(&["dynamics", p.to_str().unwrap(), "--json"]);
+        let text = String::from_utf8_lossy(&o.stdout).to_string();
+        assert!(!text.contains("NaN") && !text.contains("non-finite"), "{name}");
+        let d = json(&o);
+        let want: f64 = delta.parse().unwrap();
+        assert!((f(&d["delta"]) / want - 1.0).abs() < 1e-6, "{name}: {}", d["delta"]);
+        let r = &d["required_inertia"];
+        assert!((f(&r["wittenbauer"]) / f(&r["exact"]) - 1.0).abs() < 1e-6, "{name}: {r}");
+    }
 }

@@ -66,3 +66,22 @@ impl DynamicsError {
         }
     }
 }
+
+/// A number for a message: as Rust writes it when it is of a usual size
+/// (`0.02`, `157.08`), in scientific notation otherwise (`1e300`, not three
+/// hundred digits).
+///
+/// ```
+/// use tmm_linkage::dynamics::error::show;
+/// assert_eq!(show(0.02), "0.02");
+/// assert_eq!(show(1e300), "1e300");
+/// assert_eq!(show(-2.5e-9), "-2.5e-9");
+/// assert_eq!(show(0.0), "0");
+/// ```
+pub fn show(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}

@@ -60,6 +60,7 @@ pub mod spec;
 pub mod wittenbauer;
 
 pub use error::DynamicsError;
+use error::show;
 pub use exact::{Steady, Target};
 pub use flywheel::FlywheelSize;
 pub use merkalov::Merkalov;
@@ -177,26 +178,7 @@ impl Dynamics {
         let md = cycle.driving_moment;
         let ratio = spec.motor().map_or(1.0, |mo| mo.ratio);
         if let Some(mo) = spec.motor() {
-            let sync = mo.synchronous_speed / mo.ratio;
-            if sync <= omega_m {
-                return Err(DynamicsError::spec(
-                    "dynamics.motor.synchronous_speed",
-                    format!(
-                        "the motor is too slow: its synchronous speed {:.3} rad/s through the ratio {} turns the crank at most at {:.3} rad/s, below the crank's nominal speed {:.3} rad/s; choose a faster motor or a smaller ratio",
-                        mo.synchronous_speed, mo.ratio, sync, omega_m
-                    ),
-                ));
-            }
-            let need = md / mo.ratio;
-            if need > mo.nominal_torque {
-                return Err(DynamicsError::spec(
-                    "dynamics.motor.nominal_torque",
-                    format!(
-                        "the motor is too weak: the machine needs {need:.3} N·m on the motor shaft on average, above its nominal torque {:.3} N·m",
-                        mo.nominal_torque
-                    ),
-                ));
-            }
+            check_motor(mo, md, omega_m, spec.delta)?;
         }
         let given = GivenInertia {
             crank: red.inertia_crank,
@@ -293,4 +275,82 @@ impl Dynamics {
     pub fn crank_motion_at(&self, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
         self.motion.at(&self.reducer, &self.cycle, phi, sol)
     }
+}
+
+/// The mean crank speed at which an induction motor's linear characteristic,
+/// reduced to the crank, delivers the mean driving moment `md` (N·m), rad/s.
+/// Derived here (docs/dynamics.md): the motor's work over a steady cycle,
+/// ∮ u·M(u·ω) dφ with M linear in ω, is 2π·u·M(u·ω̄) where ω̄ = ∮ω dφ/2π is
+/// the crank speed averaged over the angle; equal to the loads' work 2π·M_d,
+/// it gives u·M_n·(ω_s − u·ω̄)/(ω_s − ω_n) = M_d, so
+/// ω̄ = (ω_s − (M_d/u)·(ω_s − ω_n)/M_n)/u.
+///
+/// ```
+/// use tmm_linkage::dynamics::{Motor, balance_speed};
+/// let m = Motor { synchronous_speed: 150.0, nominal_speed: 140.0, nominal_torque: 20.0, ratio: 2.0 };
+/// // at the nominal torque on the motor shaft the crank turns at ω_n/u
+/// assert!((balance_speed(&m, 40.0) - 70.0).abs() < 1e-12);
+/// // unloaded, at ω_s/u
+/// assert!((balance_speed(&m, 0.0) - 75.0).abs() < 1e-12);
+/// ```
+pub fn balance_speed(m: &Motor, md: f64) -> f64 {
+    (m.synchronous_speed - md / m.ratio * (m.synchronous_speed - m.nominal_speed) / m.nominal_torque) / m.ratio
+}
+
+/// The motor against the machine: it must turn the crank faster than its
+/// nominal speed `omega_m` unloaded (ω_s/u > ω_m), carry the mean moment
+/// `md` within its nominal torque, and settle, under that moment, at a mean
+/// speed no lower than the slowest the flywheel allows, ω_m·(1 − δ/2):
+/// a slower motor would turn the crank slower than it needs, with a larger
+/// fluctuation than δ.
+fn check_motor(mo: &Motor, md: f64, omega_m: f64, delta: f64) -> Result<(), DynamicsError> {
+    let sync = mo.synchronous_speed / mo.ratio;
+    if sync <= omega_m {
+        return Err(DynamicsError::spec(
+            "dynamics.motor.synchronous_speed",
+            format!(
+                "the motor is too slow: its synchronous speed {} rad/s through the ratio {} turns the crank at most at {} rad/s, below the crank's nominal speed {} rad/s; choose a faster motor or a smaller ratio",
+                show(mo.synchronous_speed),
+                show(mo.ratio),
+                show(sync),
+                show(omega_m)
+            ),
+        ));
+    }
+    let need = md / mo.ratio;
+    if need > mo.nominal_torque {
+        return Err(DynamicsError::spec(
+            "dynamics.motor.nominal_torque",
+            format!(
+                "the motor is too weak: the machine needs {} N·m on the motor shaft on average, above its nominal torque {} N·m",
+                show(need),
+                show(mo.nominal_torque)
+            ),
+        ));
+    }
+    let w_bal = balance_speed(mo, md);
+    let w_min = omega_m * (1.0 - 0.5 * delta);
+    if w_bal < w_min {
+        // the largest ratio that keeps ω̄ ≥ ω_min: ω_min·u² − ω_s·u + M_d·(ω_s − ω_n)/M_n ≤ 0
+        let (ws, slip) = (mo.synchronous_speed, mo.synchronous_speed - mo.nominal_speed);
+        let disc = ws * ws - 4.0 * w_min * md * slip / mo.nominal_torque;
+        let hint = if disc >= 0.0 {
+            format!("a ratio of at most {:.4}", (ws + disc.sqrt()) / (2.0 * w_min))
+        } else {
+            "a faster or stronger motor".to_string()
+        };
+        return Err(DynamicsError::spec(
+            "dynamics.motor.ratio",
+            format!(
+                "the motor is slower than the crank needs: under the mean driving moment M_d = {} N·m its characteristic through the ratio {} settles the crank at a mean speed of {:.4} rad/s ({:.2} rpm), below the slowest speed the flywheel allows, ω_min = ω_m·(1 − δ/2) = {:.4} rad/s (ω_m = {:.4} rad/s, the [linkage] input speed); choose {hint}, or a motor of higher nominal speed",
+                show(md),
+                show(mo.ratio),
+                w_bal,
+                w_bal * 30.0 / std::f64::consts::PI,
+                w_min,
+                omega_m
+            ),
+        ));
+    }
+    Ok(())
 }

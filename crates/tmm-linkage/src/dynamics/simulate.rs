@@ -277,8 +277,14 @@ impl<'a> Simulator<'a> {
             DynamicsError::spec(
                 "dynamics.inertia",
                 format!(
-                    "the run-up from rest would take {} cycles of the crank, more than the {max_cycles} simulated at most: the inertia at the crank {:.6e} kg·m² against the motor's slope k = u²·M_n/(ω_s − ω_n) = {:.6e} N·m·s gives a time constant τ = I/k = {:.4e} s; reduce the inertia on the shafts or choose a motor with a larger nominal torque",
-                    cycles.map_or_else(|| "more than that".to_string(), |c| format!("about {c:.0}")),
+                    "the run-up from rest {}: the inertia at the crank {:.6e} kg·m² against the motor's slope k = u²·M_n/(ω_s − ω_n) = {:.6e} N·m·s gives a time constant τ = I/k = {:.4e} s; reduce the inertia on the shafts or choose a motor with a larger nominal torque",
+                    cycles.map_or_else(
+                        || format!("does not settle within the {max_cycles} cycles of the crank simulated at most"),
+                        |c| format!(
+                            "would take about {} cycles of the crank, more than the {max_cycles} simulated at most",
+                            super::error::show(c.round())
+                        )
+                    ),
                     inertia,
                     k,
                     tau

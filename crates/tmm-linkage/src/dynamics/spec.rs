@@ -7,7 +7,7 @@
 //! kinetostatics ([`crate::forces::Loads`]); the nominal crank speed is the
 //! mechanism's input speed.
 
-use super::error::DynamicsError;
+use super::error::{DynamicsError, show};
 use crate::forces::stroke::Working;
 
 /// Steel density used by default for the flywheel, kg/m³.
@@ -124,6 +124,21 @@ pub const MAX_POINTS: usize = 36_000;
 /// with the speeds leave the range where the integration stays exact).
 pub const MAX_TORQUE: f64 = 1e9;
 
+/// The largest constant inertia accepted on a shaft, kg·m² (the largest
+/// flywheels built, of rolling mills and pulsed generators, have some
+/// 1e6–1e7 kg·m²; beyond 1e12 the kinetic energies at the crank's speeds
+/// leave the range where the energy equation is computed exactly).
+pub const MAX_INERTIA: f64 = 1e12;
+
+/// The largest synchronous speed of a motor accepted, rad/s (about
+/// 1e7 rpm, some fifty times the fastest electric machines built).
+pub const MAX_MOTOR_SPEED: f64 = 1e6;
+
+/// The gear ratio u = ω_motor/ω_crank accepted: from 1/[`MAX_RATIO`] to
+/// [`MAX_RATIO`] (u² multiplies the motor shaft's inertia and the slope of
+/// its characteristic at the crank).
+pub const MAX_RATIO: f64 = 1e6;
+
 /// The whole specification of the dynamics (the `[dynamics]` section).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsSpec {
@@ -185,7 +200,7 @@ impl DynamicsSpec {
                 "dynamics.delta",
                 format!(
                     "the coefficient of speed fluctuation must be in (0, 1) (typically 0.01…0.1), not {}",
-                    self.delta
+                    show(self.delta)
                 ),
             ));
         }
@@ -202,20 +217,33 @@ impl DynamicsSpec {
             ("dynamics.inertia.crank_shaft", self.inertia_crank_shaft),
             ("dynamics.inertia.motor_shaft", self.inertia_motor_shaft),
         ] {
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(e(f, format!("a moment of inertia must be ≥ 0 kg·m², not {v}")));
+            if !(v.is_finite() && (0.0..=MAX_INERTIA).contains(&v)) {
+                return Err(e(
+                    f,
+                    format!(
+                        "a moment of inertia must be ≥ 0 and at most {MAX_INERTIA:e} kg·m² (beyond the largest flywheels built), not {}",
+                        show(v)
+                    ),
+                ));
             }
         }
         if let Some(m) = self.motor() {
-            if !(m.synchronous_speed.is_finite() && m.synchronous_speed > 0.0) {
-                return Err(e("dynamics.motor.synchronous_speed", "must be > 0".into()));
+            if !(m.synchronous_speed.is_finite() && m.synchronous_speed > 0.0 && m.synchronous_speed <= MAX_MOTOR_SPEED) {
+                return Err(e(
+                    "dynamics.motor.synchronous_speed",
+                    format!(
+                        "must be > 0 and at most {MAX_MOTOR_SPEED:e} rad/s (about 1e7 rpm), not {} rad/s",
+                        show(m.synchronous_speed)
+                    ),
+                ));
             }
             if !(m.nominal_speed.is_finite() && m.nominal_speed > 0.0 && m.nominal_speed < m.synchronous_speed) {
                 return Err(e(
                     "dynamics.motor.nominal_speed",
                     format!(
-                        "the nominal speed must be > 0 and below the synchronous speed {:.3} rad/s, not {}",
-                        m.synchronous_speed, m.nominal_speed
+                        "the nominal speed must be > 0 and below the synchronous speed {} rad/s, not {} rad/s",
+                        show(m.synchronous_speed),
+                        show(m.nominal_speed)
                     ),
                 ));
             }
@@ -228,10 +256,14 @@ impl DynamicsSpec {
                     ),
                 ));
             }
-            if !(m.ratio.is_finite() && m.ratio > 0.0) {
+            if !(m.ratio.is_finite() && (1.0 / MAX_RATIO..=MAX_RATIO).contains(&m.ratio)) {
                 return Err(e(
                     "dynamics.motor.ratio",
-                    format!("the gear ratio ω_motor/ω_crank must be > 0, not {}", m.ratio),
+                    format!(
+                        "the gear ratio ω_motor/ω_crank must be from {:e} to {MAX_RATIO:e}, not {}",
+                        1.0 / MAX_RATIO,
+                        show(m.ratio)
+                    ),
                 ));
             }
         } else {
@@ -250,12 +282,18 @@ impl DynamicsSpec {
         }
         let f = &self.flywheel;
         if !(f.density.is_finite() && f.density > 0.0) {
-            return Err(e("dynamics.flywheel.density", format!("must be > 0 kg/m³, not {}", f.density)));
+            return Err(e(
+                "dynamics.flywheel.density",
+                format!("must be > 0 kg/m³, not {}", show(f.density)),
+            ));
         }
         match f.shape {
             FlywheelShape::Disc { width_ratio } => {
                 if !(width_ratio.is_finite() && width_ratio > 0.0) {
-                    return Err(e("dynamics.flywheel.width_ratio", format!("b/D must be > 0, not {width_ratio}")));
+                    return Err(e(
+                        "dynamics.flywheel.width_ratio",
+                        format!("b/D must be > 0, not {}", show(width_ratio)),
+                    ));
                 }
             }
             FlywheelShape::Rim {
@@ -263,12 +301,15 @@ impl DynamicsSpec {
                 thickness_ratio,
             } => {
                 if !(width_ratio.is_finite() && width_ratio > 0.0) {
-                    return Err(e("dynamics.flywheel.width_ratio", format!("b/D must be > 0, not {width_ratio}")));
+                    return Err(e(
+                        "dynamics.flywheel.width_ratio",
+                        format!("b/D must be > 0, not {}", show(width_ratio)),
+                    ));
                 }
                 if !(thickness_ratio.is_finite() && thickness_ratio > 0.0 && thickness_ratio < 0.5) {
                     return Err(e(
                         "dynamics.flywheel.thickness_ratio",
-                        format!("the rim's h/D must be in (0, 0.5) (0.5 is a disc), not {thickness_ratio}"),
+                        format!("the rim's h/D must be in (0, 0.5) (0.5 is a disc), not {}", show(thickness_ratio)),
                     ));
                 }
             }

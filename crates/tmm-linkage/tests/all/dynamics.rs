@@ -427,8 +427,8 @@ fn kinetostatics_with_the_true_crank_motion() {
 }
 
 /// A motor run-up from rest against an independent fixed-step RK4
-/// integration of the same equation of motion, and the steady cycle it
-/// reaches.
+/// integration of the same equation of motion (converged: 4000 and 16 000
+/// steps per cycle agree), and the steady cycle it reaches.
 #[test]
 fn motor_runup_against_fixed_step_rk4() {
     let m = seed001();
@@ -437,15 +437,15 @@ fn motor_runup_against_fixed_step_rk4() {
         synchronous_speed: 157.08,
         nominal_speed: 146.6,
         nominal_torque: 60.0,
-        ratio: 1.6,
+        ratio: 1.55,
     };
     let mut spec = DynamicsSpec::new(0.02);
     spec.driving = DrivingMoment::Motor(motor);
     spec.inertia_motor_shaft = 0.05;
     spec.flywheel.place = FlywheelPlace::Motor;
     let d = Dynamics::compute(&m, &loads, &spec).unwrap();
-    assert!((d.inertia_given.motor_shaft - 0.05 * 1.6 * 1.6).abs() < 1e-15);
-    assert!((d.flywheel_inertia * 1.6 * 1.6 - d.flywheel_inertia_crank).abs() < 1e-12);
+    assert!((d.inertia_given.motor_shaft - 0.05 * 1.55 * 1.55).abs() < 1e-15);
+    assert!((d.flywheel_inertia * 1.55 * 1.55 - d.flywheel_inertia_crank).abs() < 1e-12);
     let ru = d.runup.as_ref().unwrap();
     let ii = d.motion.inertia_constant;
     // RK4 with 4000 steps per nominal cycle up to a trace time near 0.5 s
@@ -459,19 +459,28 @@ fn motor_runup_against_fixed_step_rk4() {
             (motor.crank_moment(y[1]) + r.moment - 0.5 * r.inertia_derivative * y[1] * y[1]) / (ii + r.inertia),
         ]
     };
-    let n = (tk / (d.motion.cycle_time / 4000.0)).ceil() as usize;
-    let h = tk / n as f64;
-    let mut y = [0.0, 0.0];
-    for _ in 0..n {
-        let k1 = f(y);
-        let k2 = f([y[0] + 0.5 * h * k1[0], y[1] + 0.5 * h * k1[1]]);
-        let k3 = f([y[0] + 0.5 * h * k2[0], y[1] + 0.5 * h * k2[1]]);
-        let k4 = f([y[0] + h * k3[0], y[1] + h * k3[1]]);
-        for c in 0..2 {
-            y[c] += h / 6.0 * (k1[c] + 2.0 * k2[c] + 2.0 * k3[c] + k4[c]);
+    let mut rk4 = |per_cycle: f64| {
+        let n = (tk / (d.motion.cycle_time / per_cycle)).ceil() as usize;
+        let h = tk / n as f64;
+        let mut y = [0.0, 0.0];
+        for _ in 0..n {
+            let k1 = f(y);
+            let k2 = f([y[0] + 0.5 * h * k1[0], y[1] + 0.5 * h * k1[1]]);
+            let k3 = f([y[0] + 0.5 * h * k2[0], y[1] + 0.5 * h * k2[1]]);
+            let k4 = f([y[0] + h * k3[0], y[1] + h * k3[1]]);
+            for c in 0..2 {
+                y[c] += h / 6.0 * (k1[c] + 2.0 * k2[c] + 2.0 * k3[c] + k4[c]);
+            }
         }
-    }
-    assert!((y[1] - wk).abs() < 1e-7 * wk, "{} vs {wk}", y[1]);
+        y
+    };
+    // the reference converged: 4000 and 16 000 steps per cycle agree to 1e-8
+    let y = rk4(16000.0);
+    let y4 = rk4(4000.0);
+    assert!((y4[1] - y[1]).abs() < 1e-8 * y[1], "{} vs {}", y4[1], y[1]);
+    // the run-up is integrated at a relative tolerance of 1e-9 per step; over
+    // the hundreds of steps from rest its error stays below 1e-6 (2e-7 here)
+    assert!((y[1] - wk).abs() < 1e-6 * wk, "{} vs {wk}", y[1]);
     // the steady cycle repeats itself; the motor's mean speed is below synchronous
     let s = ru.steady;
     assert!((s.omega_end / s.omega_start - 1.0).abs() < 1e-8);
@@ -482,6 +491,45 @@ fn motor_runup_against_fixed_step_rk4() {
         - d.cycle.driving_moment / motor.ratio / motor.nominal_torque * (motor.synchronous_speed - motor.nominal_speed))
         / motor.ratio;
     assert!((s.omega_mean / w_bal - 1.0).abs() < s.delta, "{} vs {w_bal}", s.omega_mean);
+}
+
+/// A motor that turns the crank slower than it needs: 1500 rpm synchronous,
+/// 1400 rpm nominal, 60 N·m through u = 1.6 carries the mean moment but
+/// settles the crank below ω_min = ω_m·(1 − δ/2) — refused at the ratio,
+/// with the largest ratio that would do. That ratio checked by the time
+/// integration: the run-up's steady cycle then runs at ω_min on average
+/// (to O(δ²)), a slightly larger one is refused.
+#[test]
+fn motor_slower_than_the_crank_needs() {
+    let m = seed001();
+    let loads = seed001_loads(&m);
+    let spec = |ratio: f64| {
+        let mut s = DynamicsSpec::new(0.02);
+        s.driving = DrivingMoment::Motor(Motor {
+            synchronous_speed: 1500.0 * PI / 30.0,
+            nominal_speed: 1400.0 * PI / 30.0,
+            nominal_torque: 60.0,
+            ratio,
+        });
+        s
+    };
+    let msg = match Dynamics::compute(&m, &loads, &spec(1.6)) {
+        Err(DynamicsError::Spec { field, message }) => {
+            assert_eq!(field, "dynamics.motor.ratio");
+            assert!(message.contains("slower than the crank needs"), "{message}");
+            message
+        }
+        other => panic!("{:?}", other.map(|_| ())),
+    };
+    let at = msg.find("a ratio of at most ").unwrap() + "a ratio of at most ".len();
+    let end = at + msg[at..].find(|c: char| !(c.is_ascii_digit() || c == '.')).unwrap();
+    let u_max: f64 = msg[at..end].parse().unwrap();
+    assert!(u_max < 1.6 && u_max > 1.4, "{u_max}");
+    let w_min = 30.0 * PI * (1.0 - 0.01);
+    let d = Dynamics::compute(&m, &loads, &spec(u_max * (1.0 - 1e-4))).unwrap();
+    let s = d.runup.unwrap().steady;
+    assert!((s.omega_mean / w_min - 1.0).abs() < 0.2 * 0.02, "{} vs {w_min}", s.omega_mean);
+    assert!(Dynamics::compute(&m, &loads, &spec(u_max * 1.001)).is_err());
 }
 
 /// Bad input gives a typed error naming the field.
@@ -517,6 +565,28 @@ fn bad_input_is_reported() {
     let mut spec = DynamicsSpec::new(0.02);
     spec.points = 100;
     assert_eq!(field(Dynamics::compute(&m, &loads, &spec)), "dynamics.points");
+    // beyond any machine: the inertias, the motor's speed and its ratio
+    for (big, name) in [(1e13, "dynamics.inertia.crank_shaft"), (-1.0, "dynamics.inertia.crank_shaft")] {
+        let mut spec = DynamicsSpec::new(0.02);
+        spec.inertia_crank_shaft = big;
+        assert_eq!(field(Dynamics::compute(&m, &loads, &spec)), name);
+    }
+    for (sync, ratio, name) in [
+        (1e300, 1e290, "dynamics.motor.synchronous_speed"),
+        (157.08, 1e7, "dynamics.motor.ratio"),
+        (157.08, 1e-7, "dynamics.motor.ratio"),
+    ] {
+        let mut spec = DynamicsSpec::new(0.02);
+        spec.driving = DrivingMoment::Motor(Motor {
+            synchronous_speed: sync,
+            nominal_speed: 146.6,
+            nominal_torque: 60.0,
+            ratio,
+        });
+        let e = Dynamics::compute(&m, &loads, &spec).unwrap_err();
+        assert!(!e.to_string().contains("00000000000"), "{e}");
+        assert_eq!(field(Err(e)), name);
+    }
     // no loads at all: nothing to drive
     let none = Loads::new(&m);
     assert!(matches!(

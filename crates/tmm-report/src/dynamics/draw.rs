@@ -494,7 +494,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
             XKind::Other("t".into(), wd("unit_s")),
             (xr.0.min(0.0), xr.1),
         );
-        ch.curve(&pts, GREEN, "ω_1(t)", None);
+        ch.curve(&pts, GREEN, "ω_{1}(t)", None);
         ch.level(r.steady.omega_mean, GREY, "ω_m", &format!("{} {u_w}", n3(r.steady.omega_mean)));
         let (a, b) = (ch.map(r.time, ch.y.lo), ch.map(r.time, ch.y.lo + ch.y.len * ch.y.mu));
         ch.c.line_paper(a, b, Style::DASHED.colored(RED));

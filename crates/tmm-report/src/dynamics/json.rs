@@ -37,10 +37,20 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
     let c = &d.cycle;
     let s = stride(c.len());
     let sp = &d.spec;
+    // `runup.delta` is δ measured on the simulated steady cycle either way:
+    // the run-up's last cycle with a motor; with a constant driving moment,
+    // which has no run-up from rest (every speed is a steady one, see
+    // docs/dynamics.md), the steady cycle re-integrated from the exact start,
+    // and `time` is null.
     let runup = match &d.runup {
-        Some(r) => json!({"time": num(r.time), "delta": num(r.steady.delta), "cycles": r.cycles,
+        Some(r) => json!({"from_rest": true, "time": num(r.time), "delta": num(r.steady.delta), "cycles": r.cycles,
             "omega_mean": num(r.steady.omega_mean), "omega_max": num(r.steady.omega_max), "omega_min": num(r.steady.omega_min)}),
-        None => Value::Null,
+        None => {
+            let s = &d.simulated;
+            json!({"from_rest": false, "time": Value::Null, "delta": num(s.delta), "cycles": 0,
+                "omega_mean": num(s.omega_mean), "omega_max": num(s.omega_max), "omega_min": num(s.omega_min),
+                "why": "a constant driving moment has no run-up from rest: the drive and the loads do zero work over every cycle whatever the speed, so every speed is a steady one; delta is measured on the steady cycle integrated in time from the exact start; give [dynamics.motor] for the run-up"})
+        }
     };
     let flywheel = d.flywheel.map(|f| {
         json!({

@@ -121,10 +121,10 @@ pub fn help_for(field: &str) -> &'static str {
         | "dynamics.motor.nominal_speed"
         | "dynamics.motor.nominal_torque"
         | "dynamics.motor.ratio" => {
-            "[dynamics.motor] synchronous_speed = \"1500 rpm\", nominal_speed = \"1420 rpm\" (below the synchronous), nominal_torque = \"40 N m\", ratio = 1.6 (ω_motor/ω_crank, so that synchronous_speed/ratio exceeds the crank speed)"
+            "[dynamics.motor] synchronous_speed = \"1500 rpm\", nominal_speed = \"1420 rpm\" (below the synchronous), nominal_torque = \"40 N m\", ratio = 1.6 (ω_motor/ω_crank: about nominal_speed / the crank's speed, so that the motor under the machine's mean moment turns the crank at its [linkage] speed)"
         }
         "dynamics.inertia" | "dynamics.inertia.crank_shaft" | "dynamics.inertia.motor_shaft" => {
-            "[dynamics.inertia] crank_shaft = \"0.05 kg m^2\", motor_shaft = \"0.01 kg m^2\" (≥ 0; the motor shaft's needs a motor)"
+            "[dynamics.inertia] crank_shaft = \"0.05 kg m^2\", motor_shaft = \"0.01 kg m^2\" (0 to 1e12 kg·m²; the motor shaft's needs a motor)"
         }
         "dynamics.flywheel.place" => "place = \"crank\" (the default) or \"motor\" (needs a motor)",
         "dynamics.flywheel.density" => {

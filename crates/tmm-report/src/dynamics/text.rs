@@ -161,8 +161,14 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
         None => {
             let _ = writeln!(
                 o,
-                "  no flywheel: the inertia already on the shaft ({:.6} kg·m²) is at least the required {:.6} kg·m², so δ is smaller than asked",
-                g.total, ex
+                "  no flywheel: the inertia already on the shaft ({:.6} kg·m²) is at least the required {:.6} kg·m², so δ is smaller than asked{}",
+                g.total,
+                ex,
+                if ex < 0.0 {
+                    " (a negative requirement: the links of variable inertia alone hold the speed within δ)"
+                } else {
+                    ""
+                }
             );
         }
     }

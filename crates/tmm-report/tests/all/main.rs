@@ -5,6 +5,7 @@
 mod cam_diagrams;
 mod drawings_gear_cam;
 mod drawings_linkage;
+mod dynamics_drawings;
 mod force_polygons;
 mod hardening_examples;
 mod linkage_examples;
