@@ -10,6 +10,7 @@
 
 use std::fmt::Write as _;
 
+use crate::line_grid::LineGrid;
 use crate::project::Language;
 use crate::svg::{Style, escape};
 
@@ -135,6 +136,26 @@ impl Rect {
     pub fn inside(&self, o: &Rect) -> bool {
         self.x0 >= o.x0 && self.y0 >= o.y0 && self.x1 <= o.x1 && self.y1 <= o.y1
     }
+    /// Does the segment `a`–`b` pass through the box's inside (Liang–Barsky)?
+    pub fn cuts(&self, a: (f64, f64), b: (f64, f64)) -> bool {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        for (p, q) in [(-dx, a.0 - self.x0), (dx, self.x1 - a.0), (-dy, a.1 - self.y0), (dy, self.y1 - a.1)] {
+            if p == 0.0 {
+                if q <= 0.0 {
+                    return false;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+            }
+        }
+        t0 < t1
+    }
 }
 
 /// The box of a label of `chars` visible characters, `h` mm lettering,
@@ -158,7 +179,27 @@ pub struct Placer {
     paper: Rect,
     taken: Vec<Rect>,
     svg: String,
+    /// The drawn lines to keep off, once [`Placer::avoid_lines`] is called.
+    lines: Option<LineGrid>,
 }
+
+/// A label placed by [`Placer::place_near`]: its centre and, when it stands
+/// off its point, the leader line from the label to the point (the caller
+/// draws it, GOST 2.316: a leader ending on a line ends with an arrow).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Near {
+    /// The label's centre, paper mm.
+    pub centre: (f64, f64),
+    /// The leader: (from the label's edge, to the point), if any.
+    pub leader: Option<((f64, f64), (f64, f64))>,
+}
+
+/// The distances from a point to the nearest edge of its label tried by
+/// [`Placer::place_near`], mm: next to the point first, then farther out on
+/// a leader.
+const NEAR_MM: [f64; 13] = [0.8, 1.5, 2.5, 4.0, 6.0, 8.0, 11.0, 14.0, 18.0, 23.0, 29.0, 36.0, 45.0];
+/// Up to this distance the label is read as the point's without a leader.
+const NO_LEADER_MM: f64 = 2.5;
 
 impl Placer {
     /// A placer for a paper `width × height` mm.
@@ -172,7 +213,63 @@ impl Placer {
             },
             taken: Vec::new(),
             svg: String::new(),
+            lines: None,
         }
+    }
+
+    /// From now on keep the labels off the segments `segs` (paper mm): a
+    /// label whose box comes within a grid cell of one of them does not fit.
+    pub fn avoid_lines(&mut self, segs: &[crate::line_grid::Segment]) {
+        let mut g = LineGrid::new(self.paper.x1 + 0.5, self.paper.y1 + 0.5);
+        for &(a, b) in segs {
+            g.add(a, b);
+        }
+        self.lines = Some(g);
+    }
+
+    /// Place `text` near the first of `anchors` (paper mm, in the order of
+    /// preference) where its box fits — inside the paper, off the other
+    /// labels and, after [`Placer::avoid_lines`], off the lines — trying
+    /// every anchor next to it first and then farther out; a label farther
+    /// than 2.5 mm from its anchor gets a leader, which must not cross
+    /// another label and which the later labels keep off. `None` when no
+    /// place within 45 mm fits (nothing is written).
+    pub fn place_near(&mut self, anchors: &[(f64, f64)], text: &str, h: f64, color: &str) -> Option<Near> {
+        let n = plain(text).chars().count();
+        let (w, hh) = (CHAR_WIDTH * h * n as f64, 1.2 * h);
+        for d in NEAR_MM {
+            for &p in anchors.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
+                for k in 0..16 {
+                    let th = std::f64::consts::TAU * k as f64 / 16.0;
+                    let (c, s) = (th.cos(), -th.sin());
+                    // the centre so that the box's nearest edge is `d` from the point
+                    let t = (0.5 * w / c.abs().max(1e-9)).min(0.5 * hh / s.abs().max(1e-9));
+                    let centre = (p.0 + c * (d + t), p.1 + s * (d + t));
+                    if !self.fits(centre, text, h) {
+                        continue;
+                    }
+                    let leader = if d > NO_LEADER_MM {
+                        // from 0.3 mm off the box's edge to the point
+                        let from = (p.0 + c * (d - 0.3), p.1 + s * (d - 0.3));
+                        // (the box kept free around the point itself does not count)
+                        let at_p = |b: &Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
+                        let cut = self.taken.iter().any(|b| b.cuts(from, p) && !at_p(b));
+                        if cut {
+                            continue;
+                        }
+                        Some((from, p))
+                    } else {
+                        None
+                    };
+                    if let (Some((a, b)), Some(g)) = (leader, self.lines.as_mut()) {
+                        g.add(a, b);
+                    }
+                    self.put(centre, text, h, color);
+                    return Some(Near { centre, leader });
+                }
+            }
+        }
+        None
     }
 
     /// Keep labels out of `r` (a table, a legend, a title).
@@ -183,7 +280,7 @@ impl Placer {
     /// Would a label of `text` at `h` fit centred at `c`?
     pub fn fits(&self, c: (f64, f64), text: &str, h: f64) -> bool {
         let b = label_box(c, plain(text).chars().count(), h);
-        b.inside(&self.paper) && !self.taken.iter().any(|t| t.hits(&b, 0.4))
+        b.inside(&self.paper) && !self.taken.iter().any(|t| t.hits(&b, 0.4)) && !self.lines.as_ref().is_some_and(|g| g.hits(&b))
     }
 
     /// Place `text` (with `_`/`^` marks) at the first candidate centre that

@@ -27,6 +27,7 @@ pub mod error;
 pub mod forces;
 pub mod gear;
 pub mod labels;
+pub mod line_grid;
 pub mod linkage;
 pub mod output;
 pub mod paper;

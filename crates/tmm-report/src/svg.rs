@@ -267,8 +267,12 @@ impl Canvas {
             x + h,
             y + 1.6 * h
         );
+        // labels keep off the ground symbol too
+        let (l, r, b) = ((x - h, y + 1.6 * h), (x + h, y + 1.6 * h), (x, y));
+        self.segs.extend([(b, l), (l, r), (r, b)]);
         for i in 0..5 {
             let hx = x - 1.3 * h + i as f64 * 0.65 * h;
+            self.segs.push(((hx + 0.6 * h, y + 1.6 * h), (hx, y + 2.3 * h)));
             let _ = writeln!(
                 self.body,
                 "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" stroke=\"#000\" stroke-width=\"0.25\"/>",
@@ -407,6 +411,11 @@ impl Canvas {
         (self.width, self.height)
     }
 
+    /// Every straight piece drawn so far, on paper (mm, y down).
+    pub fn segments(&self) -> &[crate::line_grid::Segment] {
+        &self.segs
+    }
+
     /// Keep a paper box free of labels placed later.
     pub fn reserve(&mut self, r: Rect) {
         self.boxes.push(r);
@@ -458,11 +467,48 @@ impl Canvas {
     /// [`Canvas::label`] at a paper point.
     pub fn label_paper(&mut self, p: (f64, f64), text: &str, size_mm: f64, color: &str) -> Rect {
         let n = shown_len(text);
+        let at = self
+            .best_spot(p, n, size_mm, &[0.8, 2.0, 3.5, 5.5, 8.0, 12.0, 17.0], false)
+            .map_or(p, |b| b.at);
+        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
+        text_box(at, size_mm, Anchor::Middle, n)
+    }
+
+    /// [`Canvas::label`], but when no place within 17 mm of the point is
+    /// clear of the lines and the other texts, the label goes farther out
+    /// (up to 47 mm) where it is clear, on a thin leader line to the point
+    /// that crosses no other text; only when that fails too is the least
+    /// crowded near place taken.
+    pub fn label_led(&mut self, at: (f64, f64), text: &str, size_mm: f64, color: &str) -> Rect {
+        let p = self.to_paper(at.0, at.1);
+        let n = shown_len(text);
+        let near = self.best_spot(p, n, size_mm, &[0.8, 2.0, 3.5, 5.5, 8.0, 12.0, 17.0], false);
+        if near.is_some_and(|b| b.hits > 0) {
+            let far = self.best_spot(p, n, size_mm, &[23.0, 30.0, 38.0, 47.0], true);
+            if let Some(f) = far.filter(|f| f.hits == 0) {
+                let (c, s) = f.dir;
+                let from = (p.0 + c * (f.d - 0.3), p.1 - s * (f.d - 0.3));
+                self.line_paper(from, p, Style::THIN);
+                self.rich_paper(f.at, text, size_mm, Anchor::Middle, color);
+                return text_box(f.at, size_mm, Anchor::Middle, n);
+            }
+        }
+        let at = near.map_or(p, |b| b.at);
+        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
+        text_box(at, size_mm, Anchor::Middle, n)
+    }
+
+    /// The best place for a label of `n` characters around the paper point
+    /// `p`, its nearest edge at one of the distances `dists`: the fewest
+    /// lines and boxes hit (the paper's edge counting 1000), then the
+    /// nearest. With `lead`, the leader from the box to the point counts a
+    /// hit for every text box it crosses.
+    fn best_spot(&self, p: (f64, f64), n: usize, size_mm: f64, dists: &[f64], lead: bool) -> Option<Spot> {
         let w = text_width(size_mm, n);
         let (up, down) = (TEXT_ASCENT * size_mm, TEXT_DESCENT * size_mm);
         let h = up + down;
-        let mut best: Option<(usize, f64, (f64, f64))> = None;
-        'search: for d in [0.8, 2.0, 3.5, 5.5, 8.0, 12.0, 17.0] {
+        let mut best: Option<Spot> = None;
+        for &d in dists {
             for k in 0..16 {
                 let th = std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4;
                 let (c, s) = (th.cos(), th.sin());
@@ -477,21 +523,30 @@ impl Canvas {
                     y1: cy + 0.5 * h,
                 };
                 let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
-                let hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
+                let mut hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
                     + self.segs.iter().filter(|s| r.cuts(s.0, s.1)).count()
                     + if inside { 0 } else { 1000 };
+                if lead {
+                    let from = (p.0 + c * (d - 0.3), p.1 - s * (d - 0.3));
+                    let at_p = |b: &&Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
+                    hits += self.boxes.iter().filter(|b| !at_p(b) && b.cuts(from, p)).count();
+                }
                 let cost = d + 0.01 * k as f64;
-                if best.is_none_or(|b| (hits, cost) < (b.0, b.1)) {
-                    best = Some((hits, cost, at));
+                if best.is_none_or(|b| (hits, cost) < (b.hits, b.cost)) {
+                    best = Some(Spot {
+                        hits,
+                        cost,
+                        at,
+                        d,
+                        dir: (c, s),
+                    });
                 }
                 if hits == 0 {
-                    break 'search;
+                    return best;
                 }
             }
         }
-        let at = best.map_or(p, |b| b.2);
-        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
-        text_box(at, size_mm, Anchor::Middle, n)
+        best
     }
 
     /// The SVG document.
@@ -504,6 +559,21 @@ impl Canvas {
             r = self.root
         )
     }
+}
+
+/// A place for a label found by `Canvas::best_spot`.
+#[derive(Debug, Clone, Copy)]
+struct Spot {
+    /// Lines and boxes the label (and its leader) would hit.
+    hits: usize,
+    /// The distance with a tie-break by direction.
+    cost: f64,
+    /// The text's baseline point.
+    at: (f64, f64),
+    /// The distance from the point to the box's nearest edge, mm.
+    d: f64,
+    /// The direction from the point (cos, sin; y up).
+    dir: (f64, f64),
 }
 
 /// The lettering's font (GOST 2.304 type A, ISO 3098): the faces that

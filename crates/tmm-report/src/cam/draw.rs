@@ -55,17 +55,21 @@ pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
         arrows: Vec::new(),
         levels: Vec::new(),
     };
-    diagrams::draw(
-        task,
-        &[
-            panel("cam.diagram_s", "s", "s", &su, pts(&|m| m.s * k)),
-            panel("cam.diagram_ds", "ds/dφ", "{ds/dφ}", &au, pts(&|m| m.v * k)),
-            panel("cam.diagram_dds", "d²s/dφ²", "{d²s/dφ²}", &au, pts(&|m| m.a * k)),
-        ],
-        lang,
-        sheet,
-        None,
-    )
+    // a rocker turns by ψ: its own symbols and titles (коромысло)
+    let panels = if osc {
+        [
+            panel("cam.analog_psi", "ψ", "ψ", &su, pts(&|m| m.s * k)),
+            panel("cam.analog_dpsi", "dψ/dφ", "{dψ/dφ}", &au, pts(&|m| m.v * k)),
+            panel("cam.analog_ddpsi", "d²ψ/dφ²", "{d²ψ/dφ²}", &au, pts(&|m| m.a * k)),
+        ]
+    } else {
+        [
+            panel("cam.analog_s", "s", "s", &su, pts(&|m| m.s * k)),
+            panel("cam.analog_ds", "ds/dφ", "{ds/dφ}", &au, pts(&|m| m.v * k)),
+            panel("cam.analog_dds", "d²s/dφ²", "{d²s/dφ²}", &au, pts(&|m| m.a * k)),
+        ]
+    };
+    diagrams::draw(task, &panels, lang, sheet, None)
 }
 
 /// s, v, a and the jerk j for the cam's ω over the cam angle 0 … 360° (the
@@ -83,25 +87,41 @@ pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
     let a = pts(&|m| m.a * w * w);
     let j = pts(&|m| m.j * w * w * w);
     let jumps = task.program.jumps();
+    // (title key, symbol, the symbol as μ's subscript) of s, v, a, j: a
+    // rocker turns by ψ at ω with ε, a translating follower moves by s at v
+    // with a (толкатель, коромысло)
+    let names: [(&str, &str, &str); 4] = if osc {
+        [
+            ("cam.motion_psi", "ψ", "ψ"),
+            ("cam.motion_omega", "ω", "ω"),
+            ("cam.motion_eps", "ε", "ε"),
+            ("cam.motion_jerk_osc", "j", "j"),
+        ]
+    } else {
+        [
+            ("cam.motion_s", "s", "s"),
+            ("cam.motion_v", "v", "v"),
+            ("cam.motion_a", "a", "a"),
+            ("cam.motion_j", "j", "j"),
+        ]
+    };
     let arrows = |kind: JumpKind, scale: f64, unit: &str| -> Vec<Arrow> {
+        // a jump of v (ω) is drawn on a (ε), a jump of a (ε) on j
+        let of = if kind == JumpKind::Velocity { names[1].1 } else { names[2].1 };
         jumps
             .iter()
             .filter(|x| x.kind == kind)
             .map(|x| Arrow {
                 phi_deg: x.phi.to_degrees(),
                 sign: x.size(),
-                label: format!(
-                    "{} = {} {unit}",
-                    if kind == JumpKind::Velocity { "Δv" } else { "Δa" },
-                    signed3(lang, x.size() * scale)
-                ),
+                label: format!("Δ{of} = {} {unit}", signed3(lang, x.size() * scale)),
             })
             .collect()
     };
-    let panel = |key: &str, sym: &str, unit: &str, pts: Vec<(f64, f64)>, arrows: Vec<Arrow>| Panel {
+    let panel = |(key, sym, mu_sym): (&str, &str, &str), unit: &str, pts: Vec<(f64, f64)>, arrows: Vec<Arrow>| Panel {
         title: word(lang, key).to_string(),
         sym: sym.to_string(),
-        mu_sym: sym.to_string(),
+        mu_sym: mu_sym.to_string(),
         unit: unit.to_string(),
         pts,
         arrows,
@@ -110,10 +130,10 @@ pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
     diagrams::draw(
         task,
         &[
-            panel("cam.diagram_s", "s", &su, s, Vec::new()),
-            panel("cam.diagram_v", "v", &vu, v, Vec::new()),
-            panel("cam.diagram_a", "a", &au, a, arrows(JumpKind::Velocity, w, &vu)),
-            panel("cam.diagram_j", "j", &ju, j, arrows(JumpKind::Acceleration, w * w, &au)),
+            panel(names[0], &su, s, Vec::new()),
+            panel(names[1], &vu, v, Vec::new()),
+            panel(names[2], &au, a, arrows(JumpKind::Velocity, w, &vu)),
+            panel(names[3], &ju, j, arrows(JumpKind::Acceleration, w * w, &au)),
         ],
         lang,
         sheet,

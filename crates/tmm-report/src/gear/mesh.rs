@@ -320,14 +320,14 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     c.begin_group("centres");
     let cross = 6.0 / s;
     c.line((0.0, wy0), (0.0, wy1), DASH_DOT);
-    for (o, name) in [(sc.o1, "O_1"), (sc.o2, "O_2")] {
+    for o in [sc.o1, sc.o2] {
         c.line((o.0 - 2.0 * cross, o.1), (o.0 + 2.0 * cross, o.1), DASH_DOT);
+    }
+    for (o, name) in [(sc.o1, "O_1"), (sc.o2, "O_2")] {
         c.begin_group(&format!("centre-{}", plain(name)));
         c.dot(o, 0.8, "#000");
         c.end_group();
-        let q = paper(o);
-        lab.reserve(label_box(q, 1, 1.6));
-        lab.place(&Placer::around(q, name, H_LABEL, 1.0), name, H_LABEL, "#000");
+        lab.reserve(label_box(paper(o), 1, 1.6));
     }
     c.end_group();
     // the line of action, the perpendiculars O1N1, O2N2, the active part
@@ -344,9 +344,6 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     for q in [sc.p, sc.n1, sc.n2, sc.a, sc.b] {
         c.dot(q, 0.7, "#000");
         lab.reserve(label_box(paper(q), 1, 1.4));
-    }
-    for (q, name) in [(sc.p, "P"), (sc.n1, "N_1"), (sc.n2, "N_2"), (sc.a, "A"), (sc.b, "B")] {
-        lab.place(&Placer::around(paper(q), name, H_LABEL, 1.2), name, H_LABEL, "#000");
     }
     c.end_group();
     // the working pressure angle: between the pole tangent and N1N2
@@ -367,39 +364,21 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let e1 = arc_pts[n_arc];
     c.arrow_paper((e0.0, e0.1 - head), e0, Style::THIN, head);
     c.arrow_paper((e1.0 + head * aw_ang.sin(), e1.1 + head * aw_ang.cos()), e1, Style::THIN, head);
-    let ang_txt = format!("α_w = {}°", num(lang, aw_ang.to_degrees(), 2));
-    let ang_c: Vec<Pt> = (0..12)
-        .flat_map(|i| {
-            let r = r_ang + 4.0 + 2.0 * i as f64;
-            let w = CHAR_WIDTH * H_LABEL * plain(&ang_txt).chars().count() as f64;
-            [
-                (pp.0 + r * (0.5 * aw_ang).cos() + 0.5 * w, pp.1 - r * (0.5 * aw_ang).sin()),
-                (pp.0 - r * (0.5 * aw_ang).cos() - 0.5 * w, pp.1 + r * (0.5 * aw_ang).sin()),
-            ]
-        })
-        .collect();
-    lab.place(&ang_c, &ang_txt, H_LABEL, "#000");
-    // the centre distance: a dimension line left of the wheels
+    // the centre distance: a dimension line beside the wheels, where no
+    // tooth is (left of the wheels for an external pair; between the
+    // pinion and the ring's teeth for an internal one)
     let o1p = paper(sc.o1);
     let o2p = paper(sc.o2);
-    let xd = 10.0;
+    let xd = aw_dimension_x(pair, &lay, o1p, o2p);
     c.line_paper((o1p.0 - 2.0, o1p.1), (xd - 2.0, o1p.1), Style::THIN);
     c.line_paper((o2p.0 - 2.0, o2p.1), (xd - 2.0, o2p.1), Style::THIN);
     let mid = (xd, 0.5 * (o1p.1 + o2p.1));
     c.arrow_paper(mid, (xd, o1p.1), Style::THIN, 3.0);
     c.arrow_paper(mid, (xd, o2p.1), Style::THIN, 3.0);
-    let aw_txt = format!("a_w = {}", num(lang, pair.aw * 1e3, 2));
-    let naw = plain(&aw_txt).chars().count() as f64 * CHAR_WIDTH * H_LABEL;
-    let aw_c: Vec<Pt> = (0..16)
-        .flat_map(|i| {
-            let dy = 5.0 * i as f64;
-            [(xd + 1.5 + 0.5 * naw, mid.1 - dy), (xd + 1.5 + 0.5 * naw, mid.1 + dy)]
-        })
-        .collect();
-    lab.place(&aw_c, &aw_txt, H_LABEL, "#000");
     c.end_group();
-    // the circles, clipped to the window, each labelled where there is room
+    // the circles, clipped to the window; their labels' anchors on them
     c.begin_group("circles");
+    let mut circle_labels: Vec<(String, &'static str, Vec<Pt>)> = Vec::new();
     for (wheel, (cen, w)) in [(sc.o1, &pair.w1), (sc.o2, &pair.w2)].into_iter().enumerate() {
         let i = wheel + 1;
         let circles = [
@@ -418,32 +397,27 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
                     (cen.0 + r * a.cos(), cen.1 + r * a.sin())
                 })
                 .collect();
-            let mut cand: Vec<(f64, Pt)> = Vec::new();
+            // anchors about 3 mm apart on paper, far from the pole first
+            let step = ((3.0 / (2.0 * PI * r * s / n as f64)).round() as usize).clamp(1, 120);
+            let mut anchors: Vec<(f64, Pt)> = Vec::new();
             c.begin_group(&format!("circle-{}", plain(&name)));
             for run in pts.split(|q| !in_win(q)) {
                 if run.len() >= 2 {
                     c.polyline(run, st);
                 }
-                for q in run.iter().step_by(4) {
-                    let (dx, dy) = (q.0 - cen.0, q.1 - cen.1);
-                    let u = (dx / r, dy / r);
-                    let qp = paper(*q);
-                    let wl = CHAR_WIDTH * H_LABEL * plain(&name).chars().count() as f64;
-                    // outside and inside the circle, the box clear of the point
-                    for sg in [1.0, -1.0] {
-                        let cpt = (qp.0 + sg * u.0 * (0.8 + 0.5 * wl), qp.1 - sg * u.1 * (0.8 + 0.6 * H_LABEL));
-                        cand.push(((q.0 - sc.p.0).abs(), cpt));
-                    }
+                for q in run.iter().skip(step / 2).step_by(step) {
+                    anchors.push(((q.0 - sc.p.0).hypot(q.1 - sc.p.1), paper(*q)));
                 }
             }
             c.end_group();
-            cand.sort_by(|a, b| b.0.total_cmp(&a.0));
-            let cs: Vec<Pt> = cand.into_iter().map(|x| x.1).collect();
-            lab.place(&cs, &name, H_LABEL, st.color);
+            anchors.sort_by(|a, b| b.0.total_cmp(&a.0));
+            circle_labels.push((name, st.color, anchors.into_iter().map(|x| x.1).collect()));
         }
     }
     c.end_group();
-    // the table and the legend on the right
+    // the labels, after every line: clear of the lines, of each other, of
+    // the table on the right; a label that cannot sit next to its point or
+    // circle stands off on a leader
     let tx = lay.table_x;
     lab.reserve(Rect {
         x0: tx - 2.0,
@@ -451,6 +425,71 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
         x1: pw,
         y1: ph,
     });
+    lab.avoid_lines(c.segments());
+    let mut leaders: Vec<(Pt, Pt, bool)> = Vec::new();
+    let mut near =
+        |lab: &mut Placer, anchors: &[Pt], text: &str, color: &str, arrow: bool| match lab.place_near(anchors, text, H_LABEL, color) {
+            Some(n) => {
+                if let Some((a, b)) = n.leader {
+                    leaders.push((a, b, arrow));
+                }
+            }
+            // nowhere clear within reach: next to the point, as before
+            None => {
+                if let Some(&p) = anchors.first() {
+                    lab.put((p.0 + 4.0, p.1 - 3.0), text, H_LABEL, color);
+                }
+            }
+        };
+    for (q, name) in [
+        (sc.o1, "O_1"),
+        (sc.o2, "O_2"),
+        (sc.p, "P"),
+        (sc.n1, "N_1"),
+        (sc.n2, "N_2"),
+        (sc.a, "A"),
+        (sc.b, "B"),
+    ] {
+        near(&mut lab, &[paper(q)], name, "#000", false);
+    }
+    // α_w beside its arc, on the bisector outside it, else on a leader
+    let ang_txt = format!("α_w = {}°", num(lang, aw_ang.to_degrees(), 2));
+    let ang_c: Vec<Pt> = (0..12)
+        .flat_map(|i| {
+            let r = r_ang + 4.0 + 2.0 * i as f64;
+            let w = CHAR_WIDTH * H_LABEL * plain(&ang_txt).chars().count() as f64;
+            [
+                (pp.0 + r * (0.5 * aw_ang).cos() + 0.5 * w, pp.1 - r * (0.5 * aw_ang).sin()),
+                (pp.0 - r * (0.5 * aw_ang).cos() - 0.5 * w, pp.1 + r * (0.5 * aw_ang).sin()),
+            ]
+        })
+        .collect();
+    if lab.place(&ang_c, &ang_txt, H_LABEL, "#000").is_none() {
+        near(&mut lab, &[arc_pt(0.5 * aw_ang, r_ang)], &ang_txt, "#000", true);
+    }
+    // a_w beside its dimension line, on either side
+    let aw_txt = format!("a_w = {}", num(lang, pair.aw * 1e3, 2));
+    let naw = plain(&aw_txt).chars().count() as f64 * CHAR_WIDTH * H_LABEL;
+    let aw_c: Vec<Pt> = (0..16)
+        .flat_map(|i| {
+            let dy = 5.0 * i as f64;
+            let (r, l) = (xd + 1.5 + 0.5 * naw, xd - 1.5 - 0.5 * naw);
+            [(r, mid.1 - dy), (r, mid.1 + dy), (l, mid.1 - dy), (l, mid.1 + dy)]
+        })
+        .collect();
+    if lab.place(&aw_c, &aw_txt, H_LABEL, "#000").is_none() {
+        near(&mut lab, &[mid], &aw_txt, "#000", true);
+    }
+    for (name, color, anchors) in &circle_labels {
+        near(&mut lab, anchors, name, color, true);
+    }
+    for (a, b, arrow) in leaders {
+        if arrow {
+            c.arrow_paper(a, b, Style::THIN, 2.0);
+        } else {
+            c.line_paper(a, b, Style::THIN);
+        }
+    }
     let mut side = Placer::new(pw, ph);
     let left = |p: &mut Placer, y: f64, text: &str, h: f64| p.put_left((tx, y), text, h, "#000");
     let mut y = 8.0;
@@ -487,6 +526,27 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
         svg.insert_str(i, side.svg());
     }
     svg
+}
+
+/// The paper x of the centre distance's dimension line: 10 mm from the
+/// paper's left edge for an external pair (left of both wheels); for an
+/// internal pair the ring's teeth reach there, so the middle of the free
+/// band between the ring's tip circle and the pinion's tip circle over the
+/// height O1 … O2 (derived here: at the height of O1, the farthest from O2,
+/// the ring's tip circle lies at x = x_O2 − √(r_a2² − a_w²) on paper, the
+/// pinion's at x_O1 − r_a1), when that band is at least 30 mm wide.
+fn aw_dimension_x(pair: &Pair, lay: &MeshLayout, o1p: Pt, o2p: Pt) -> f64 {
+    if pair.spec.kind != Kind::Internal {
+        return 10.0;
+    }
+    let s = lay.scale.factor * 1e3; // paper mm per m
+    let (ra1, ra2, aw) = (pair.w1.da / 2.0 * s, pair.w2.da / 2.0 * s, pair.aw * s);
+    if ra2 <= aw {
+        return 10.0;
+    }
+    let left = o2p.0 - (ra2 * ra2 - aw * aw).sqrt();
+    let right = o1p.0 - ra1;
+    if right - left >= 30.0 { 0.5 * (left + right) } else { 10.0 }
 }
 
 fn c_to_paper(lay: &MeshLayout, q: Pt, ph: f64) -> Pt {

@@ -75,6 +75,9 @@ pub enum Mark {
         text: String,
         /// The width the text must fit in, if the estimate says it does not.
         squeeze: Option<f64>,
+        /// Turned by 180° about the middle of its box (GOST 2.104, graph 26:
+        /// the designation upside down in the top-left corner).
+        turned: bool,
     },
 }
 
@@ -99,6 +102,7 @@ pub fn fitted(at: (f64, f64), max: f64, align: Align, text: &str, width: f64) ->
         align,
         text: text.to_string(),
         squeeze,
+        turned: false,
     }
 }
 
@@ -120,6 +124,68 @@ pub fn frame_marks(format: SheetFormat) -> Vec<Mark> {
     };
     rect(Rect { x: 0.0, y: 0.0, w, h }, false);
     rect(f, true);
+    out
+}
+
+/// The width of graph 26, mm (GOST 2.104-2006, 4.1 and form 1: the
+/// additional graph in the top-left corner of the frame, 70 × 14 mm).
+pub const GRAPH_26_W_MM: f64 = 70.0;
+/// The height of graph 26, mm.
+pub const GRAPH_26_H_MM: f64 = 14.0;
+
+/// Where graph 26 goes: against the top-left corner of the inner frame
+/// `frame`, its long side along the top edge (the title block lies along the
+/// long side of a landscape sheet, so the designation in it is turned by
+/// 180°, GOST 2.104-2006, 4.1).
+///
+/// ```
+/// use tmm_report::{project::SheetFormat, sheets::frame::{graph_26_place, inner_frame}};
+/// let g = graph_26_place(inner_frame(SheetFormat::A1));
+/// assert_eq!((g.x, g.y, g.w, g.h), (20.0, 5.0, 70.0, 14.0));
+/// ```
+pub fn graph_26_place(frame: Rect) -> Rect {
+    Rect {
+        x: frame.x,
+        y: frame.y,
+        w: GRAPH_26_W_MM,
+        h: GRAPH_26_H_MM,
+    }
+}
+
+/// Graph 26's marks: its right and bottom sides in the main line (the other
+/// two are the frame's) and the document's `designation` turned by 180°,
+/// centred in the box, at the largest GOST 2.304 size up to 7 mm (the
+/// title block's designation size) that fits the box less 2 mm at each end.
+/// An empty designation leaves the box empty.
+///
+/// ```
+/// use tmm_report::sheets::{frame::{graph_26_marks, Mark}, layout::Rect};
+/// let m = graph_26_marks(Rect { x: 20.0, y: 5.0, w: 70.0, h: 14.0 }, "ТММ.КП.017.00.000");
+/// assert!(m.iter().any(|m| matches!(m, Mark::Text { turned: true, .. })));
+/// ```
+pub fn graph_26_marks(at: Rect, designation: &str) -> Vec<Mark> {
+    let mut out = vec![
+        Mark::Line {
+            a: (at.right(), at.y),
+            b: (at.right(), at.bottom()),
+            thick: true,
+        },
+        Mark::Line {
+            a: (at.x, at.bottom()),
+            b: (at.right(), at.bottom()),
+            thick: true,
+        },
+    ];
+    if !designation.trim().is_empty() {
+        let (cx, cy) = (at.x + 0.5 * at.w, at.y + 0.5 * at.h);
+        if let Mark::Text { size, .. } = fitted((0.0, 0.0), 7.0, Align::Middle, designation, at.w - 4.0) {
+            let mut m = fitted((cx, cy + 0.35 * size), 7.0, Align::Middle, designation, at.w - 4.0);
+            if let Mark::Text { turned, .. } = &mut m {
+                *turned = true;
+            }
+            out.push(m);
+        }
+    }
     out
 }
 
@@ -145,6 +211,7 @@ pub fn marks_svg(marks: &[Mark]) -> String {
                 align,
                 text,
                 squeeze,
+                turned,
             } => {
                 let anchor = match align {
                     Align::Start => "start",
@@ -153,12 +220,26 @@ pub fn marks_svg(marks: &[Mark]) -> String {
                 // a text too long for its place is narrowed by a scale (not every
                 // viewer honours textLength)
                 let k = squeeze.map_or(1.0, |w| (w / text_width(text, *size)).min(1.0));
+                // graph 26 is upside down: the text turned about the middle of
+                // its box (the baseline lies 0.35 of the size below it)
+                let turn = if *turned {
+                    format!("rotate(180 {:.2} {:.2})", at.0, at.1 - 0.35 * size)
+                } else {
+                    String::new()
+                };
                 let (x, y, tr) = if k < 1.0 {
                     (
                         0.0,
                         0.0,
-                        format!(" transform=\"translate({:.2} {:.2}) scale({k:.4} 1)\"", at.0, at.1),
+                        format!(
+                            " transform=\"{turn}{}translate({:.2} {:.2}) scale({k:.4} 1)\"",
+                            if turn.is_empty() { "" } else { " " },
+                            at.0,
+                            at.1
+                        ),
                     )
+                } else if *turned {
+                    (at.0, at.1, format!(" transform=\"{turn}\""))
                 } else {
                     (at.0, at.1, String::new())
                 };

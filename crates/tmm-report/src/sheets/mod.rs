@@ -355,6 +355,14 @@ fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, no
         h: f.h + GAP_MM,
         ..f
     });
+    // graph 26 in the top-left corner, with the gap below and right of it
+    let g26 = frame::graph_26_place(inner_frame(format));
+    p.occupy(Rect {
+        x: f.x,
+        y: f.y,
+        w: g26.right() + GAP_MM - f.x,
+        h: g26.bottom() + GAP_MM - f.y,
+    });
     p.occupy(Rect {
         x: tb.x - GAP_MM + GAP_MM,
         y: tb.y - GAP_MM + GAP_MM,
@@ -635,6 +643,7 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
                 align: Align::Start,
                 text: l.clone(),
                 squeeze: (text_width(l, NOTE_MM) > r.w).then_some(r.w),
+                turned: false,
             })
             .collect();
         s.push_str(&marks_svg(&marks));
@@ -642,6 +651,9 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
     }
     s.push_str("<g id=\"frame\">\n");
     s.push_str(&marks_svg(&frame::frame_marks(project.sheet)));
+    s.push_str("</g>\n<g id=\"graph-26\">\n");
+    let g26 = frame::graph_26_place(inner_frame(project.sheet));
+    s.push_str(&marks_svg(&frame::graph_26_marks(g26, &project.designation)));
     s.push_str("</g>\n<g id=\"title-block\">\n");
     let fields = title_block::Fields {
         designation: project.designation.clone(),

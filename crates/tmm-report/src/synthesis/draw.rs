@@ -70,7 +70,20 @@ fn clipped_arc(c: &mut Canvas, center: Vec2, r: f64, a0: f64, sweep: f64, b: Box
 fn drawn_positions(s: &Solved) -> Vec<Vec<(String, Vec2)>> {
     let y = &s.syn;
     if y.kind != Kind::FunctionGeneration {
-        return y.check.dead_positions.clone();
+        // the first drawn (blue, ′) is the one whose driven point is the
+        // construction's first extreme, so the colours, the primes and the
+        // legend agree
+        let mut dead = y.check.dead_positions.clone();
+        let k = &y.construction;
+        let miss = |pos: &Vec<(String, Vec2)>| {
+            pos.iter()
+                .find(|(n, _)| *n == k.point)
+                .map_or(f64::INFINITY, |(_, p)| (*p - k.extremes[0]).hypot())
+        };
+        if dead.len() == 2 && miss(&dead[1]) < miss(&dead[0]) {
+            dead.swap(0, 1);
+        }
+        return dead;
     }
     let Ok(m) = Mechanism::new(&y.def) else {
         return y.check.dead_positions.clone();
@@ -310,10 +323,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
         let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
         labels.push((xy(*p), n.clone(), if chosen { RED } else { "#000" }));
     }
-    for (at, text, col) in &labels {
-        c.label(*at, text, H_LABEL, col);
-    }
-    // the legend under the drawing
+    // the legend under the drawing (before the labels, which keep off it)
     let mut leg = vec![
         (BLUE, if function { wd("first_position") } else { wd("extreme_first") }),
         (RED, if function { wd("last_position") } else { wd("extreme_second") }),
@@ -328,6 +338,9 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
         let yy = h - bottom + 5.0 + 4.5 * i as f64;
         c.line_paper((side, yy - 0.9), (side + 8.0, yy - 0.9), Style::THICK.colored(col).widened(0.5));
         c.rich_paper((side + 10.0, yy), t, H_SMALL, Anchor::Start, "#000");
+    }
+    for (at, text, col) in &labels {
+        c.label_led(*at, text, H_LABEL, col);
     }
     c.finish()
 }

@@ -1,6 +1,7 @@
 //! The cam's time diagrams mark the jumps of acceleration as impulses of
 //! jerk (the course's "soft impacts"), with the sizes of the constant-
-//! acceleration law derived here.
+//! acceleration law derived here; each panel of the diagrams has its own
+//! title, and a rocker's panels its own symbols (ψ, ω, ε).
 
 use std::path::Path;
 
@@ -39,5 +40,77 @@ fn constant_acceleration_jumps_are_marked_as_jerk_impulses() {
     assert_eq!(got.len(), 6, "{labels:?}");
     for (g, w) in got.iter().zip(&want) {
         assert!((g - w).abs() < 1e-3 * a1, "{got:?} vs {want:?}");
+    }
+}
+
+/// The shown text of every `<text>` of `svg` whose font size is `size`, in
+/// the file's order (the tspans' markup dropped).
+fn texts_of_size(svg: &str, size: &str) -> Vec<String> {
+    svg.lines()
+        .filter(|l| l.starts_with("<text") && l.contains(&format!("font-size=\"{size}\"")))
+        .map(|l| {
+            let mut shown = String::new();
+            let mut tag = false;
+            for ch in l[l.find('>').unwrap() + 1..].chars() {
+                match ch {
+                    '<' => tag = true,
+                    '>' => tag = false,
+                    c if !tag => shown.push(c),
+                    _ => {}
+                }
+            }
+            shown
+        })
+        .collect()
+}
+
+#[test]
+fn each_motion_panel_has_its_own_title_and_the_follower_its_own_symbols() {
+    use tmm_report::project::Language;
+    use tmm_report::words::word;
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    // a translating follower moves by s at v with a; a rocker turns by ψ at ω with ε
+    let cases = [
+        (
+            "cam-seed-001-roller.toml",
+            ["cam.analog_s", "cam.analog_ds", "cam.analog_dds"],
+            ["cam.motion_s", "cam.motion_v", "cam.motion_a", "cam.motion_j"],
+            ["s", "v", "a", "j"],
+        ),
+        (
+            "cam-oscillating-roller.toml",
+            ["cam.analog_psi", "cam.analog_dpsi", "cam.analog_ddpsi"],
+            ["cam.motion_psi", "cam.motion_omega", "cam.motion_eps", "cam.motion_jerk_osc"],
+            ["ψ", "ω", "ε", "j"],
+        ),
+    ];
+    for (file, analog, motion, syms) in cases {
+        let text = std::fs::read_to_string(dir.join(file)).unwrap();
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let run = tmm_report::run::run_task_in(&TaskSource::new(file, text.clone()), Some(lang)).unwrap();
+            for (path, keys) in [("cam/cam-analogs.svg", &analog[..]), ("cam/cam-motion.svg", &motion[..])] {
+                let svg = run.docs.get(path).unwrap().as_text().unwrap();
+                // the panel titles: 5 mm lettering, one per panel, in order
+                let titles = texts_of_size(svg, "5.00");
+                let want: Vec<&str> = keys.iter().map(|k| word(lang, k)).collect();
+                assert_eq!(titles, want, "{file} {path} {lang:?}");
+                for (i, t) in want.iter().enumerate() {
+                    assert!(!t.starts_with("cam."), "{lang:?}: no word for {}", keys[i]);
+                    assert!(!want[..i].contains(t), "{file} {path} {lang:?}: «{t}» twice");
+                }
+            }
+            // the time diagrams' axes carry the follower's own symbols
+            let svg = run.docs.get("cam/cam-motion.svg").unwrap().as_text().unwrap();
+            let axes: Vec<String> = texts_of_size(svg, "3.00");
+            for s in syms {
+                assert!(
+                    axes.iter().any(|a| a.starts_with(&format!("{s}, "))),
+                    "{file} {lang:?}: no axis «{s}, …» among {axes:?}"
+                );
+            }
+            if file.contains("oscillating") {
+                assert!(!axes.iter().any(|a| a.starts_with("v, ")), "{lang:?}: v over an ω axis");
+            }
+        }
     }
 }

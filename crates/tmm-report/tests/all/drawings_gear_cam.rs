@@ -145,6 +145,66 @@ fn labels_apart_and_inside(s: &str, what: &str) {
     }
 }
 
+/// Every straight piece drawn: `<line>`s and the edges of `<polyline>`s
+/// and `<polygon>`s (circles, teeth, arrowheads, arcs), paper mm.
+fn drawn_segments(s: &str) -> Vec<[f64; 4]> {
+    let mut out = Vec::new();
+    for l in s.lines() {
+        if l.starts_with("<line") {
+            out.push([
+                attr(l, "x1").unwrap(),
+                attr(l, "y1").unwrap(),
+                attr(l, "x2").unwrap(),
+                attr(l, "y2").unwrap(),
+            ]);
+        } else if l.starts_with("<polyline") || l.starts_with("<polygon") {
+            let p = points(l);
+            for w in p.windows(2) {
+                out.push([w[0].0, w[0].1, w[1].0, w[1].1]);
+            }
+            if l.starts_with("<polygon") && p.len() > 2 {
+                let (a, b) = (p[p.len() - 1], p[0]);
+                out.push([a.0, a.1, b.0, b.1]);
+            }
+        }
+    }
+    out
+}
+
+/// Whether the segment passes through the inside of the box (clipped
+/// against the four sides, Liang–Barsky).
+fn cuts(s: &[f64; 4], b: &Boxed) -> bool {
+    let (dx, dy) = (s[2] - s[0], s[3] - s[1]);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [(-dx, s[0] - b.x0), (dx, b.x1 - s[0]), (-dy, s[1] - b.y0), (dy, b.y1 - s[1])] {
+        if p == 0.0 {
+            if q <= 0.0 {
+                return false;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    t0 < t1
+}
+
+/// No label's box is crossed by a drawn line (a teacher marks a label that
+/// touches a line).
+fn labels_off_the_lines(s: &str, what: &str) {
+    let segs = drawn_segments(s);
+    assert!(segs.len() > 100, "{what}: {} segments", segs.len());
+    for (b, t) in label_boxes(s) {
+        for g in &segs {
+            assert!(!cuts(g, &b), "{what}: «{t}» {b:?} touches the line {g:?}");
+        }
+    }
+}
+
 /// Every coordinate of every element lies inside the viewBox.
 fn everything_inside(s: &str, what: &str) {
     let (w, h) = paper(s);
@@ -233,6 +293,7 @@ fn meshing_drawing_at_a_standard_scale_with_both_centres_and_true_circles() {
         let al_t = format!("αw = {}°", format!("{al:.2}").replace('.', ","));
         assert!(labels.iter().any(|(_, x)| *x == al_t), "{what}: no «{al_t}»");
         labels_apart_and_inside(s, &what);
+        labels_off_the_lines(s, &what);
         everything_inside(s, &what);
     }
 }

@@ -1,8 +1,9 @@
 //! The lever mechanism's drawings read back as a teacher checks them: the
 //! scheme at a GOST 2.302 scale whose links measure length × scale, plan
 //! arrows of |v|/μ at a round μ, labels clear of each other and of the lines
-//! of the plans, everything inside the paper, the paper within its slot on
-//! A1 and A2, no English word on a Russian drawing.
+//! of the plans and of the synthesis constructions, everything inside the
+//! paper, the paper within its slot on A1 and A2, no English word on a
+//! Russian drawing.
 
 use std::path::Path;
 
@@ -411,4 +412,77 @@ fn balancing_torque_circles_sit_on_the_curve() {
         shown.iter().any(|t| t.0.starts_with("μM = ") && t.0.contains("μφ = ")),
         "no scale factors"
     );
+
+/// The edges of the `<polygon>`s (ground symbols, arrowheads), closed.
+fn polygon_segments(svg: &str) -> Vec<[f64; 4]> {
+    let mut out = Vec::new();
+    for l in svg.lines().filter(|l| l.starts_with("<polygon")) {
+        let pts: Vec<(f64, f64)> = attr(l, "points")
+            .unwrap()
+            .split_whitespace()
+            .map(|p| {
+                let (a, b) = p.split_once(',').unwrap();
+                (a.parse().unwrap(), b.parse().unwrap())
+            })
+            .collect();
+        for i in 0..pts.len() {
+            let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
+            out.push([a.0, a.1, b.0, b.1]);
+        }
+    }
+    out
+}
+
+#[test]
+fn synthesis_constructions_keep_their_labels_off_the_lines() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.file_name().unwrap().to_string_lossy().starts_with("synth-"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 5, "{files:?}");
+    let mut tasks: Vec<(String, String)> = files
+        .iter()
+        .map(|p| {
+            (
+                p.file_name().unwrap().to_string_lossy().into_owned(),
+                std::fs::read_to_string(p).unwrap(),
+            )
+        })
+        .collect();
+    tasks.push(("default".to_string(), tmm_report::run::DEFAULT_TASK.to_string()));
+    for (name, text) in tasks {
+        for (sheet, lang) in [("A1", Language::Ru), ("A2", Language::Uk), ("A1", Language::En)] {
+            let text = if text.contains("[project]") {
+                text.replace("sheet = \"A1\"", &format!("sheet = \"{sheet}\""))
+            } else {
+                format!("{text}\n[project]\nsheet = \"{sheet}\"\n")
+            };
+            let run = tmm_report::run::run_task_in(&TaskSource::new(&name, text), Some(lang)).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let Some(doc) = run.docs.get("synthesis/construction.svg") else {
+                panic!("{name}: no construction drawing");
+            };
+            let svg = doc.as_text().unwrap();
+            let (w, h, _) = paper(svg);
+            let mut segs = segments(svg);
+            segs.extend(polygon_segments(svg));
+            assert!(segs.len() > 10, "{name}: {} segments", segs.len());
+            let t = texts(svg);
+            assert!(t.len() >= 5, "{name}: {} texts", t.len());
+            for (i, (txt, b)) in t.iter().enumerate() {
+                assert!(
+                    b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= w && b[3] <= h,
+                    "{name} {sheet} {lang:?}: «{txt}» {b:?} leaves the paper"
+                );
+                for (txt2, b2) in &t[..i] {
+                    assert!(!overlap(b, b2), "{name} {sheet} {lang:?}: «{txt}» on «{txt2}»");
+                }
+                for s in &segs {
+                    assert!(!crosses(s, b), "{name} {sheet} {lang:?}: «{txt}» {b:?} on the line {s:?}");
+                }
+            }
+        }
+    }
 }

@@ -207,6 +207,140 @@ fn the_title_block_is_185_by_55_in_the_corner_and_filled() {
     }
 }
 
+/// The texts inside `<g id="{group}">` with their position and transform:
+/// (x, y, font size, transform, text).
+fn group_texts(svg: &str, id: &str) -> Vec<(f64, f64, f64, String, String)> {
+    let toks = tokens(svg).unwrap();
+    let mut out = Vec::new();
+    let mut inside = 0usize;
+    let mut open: Option<(f64, f64, f64, String)> = None;
+    for t in &toks {
+        match t {
+            Token::Start { name, empty, .. } => {
+                if inside > 0 && !empty {
+                    inside += 1;
+                } else if *name == "g" && t.attr("id") == Some(id) {
+                    inside = 1;
+                }
+                if inside > 0 && *name == "text" {
+                    open = Some((
+                        num(t, "x"),
+                        num(t, "y"),
+                        num(t, "font-size"),
+                        t.attr("transform").unwrap_or("").to_string(),
+                    ));
+                }
+            }
+            Token::End { .. } => inside = inside.saturating_sub(1),
+            Token::Text(s) => {
+                if let Some((x, y, h, tr)) = open.take() {
+                    out.push((x, y, h, tr, s.clone()));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The numbers of `name(…)` in a transform list.
+fn transform_args(tr: &str, name: &str) -> Option<Vec<f64>> {
+    let i = tr.find(&format!("{name}("))? + name.len() + 1;
+    let j = i + tr[i..].find(')')?;
+    Some(
+        tr[i..j]
+            .split([' ', ','])
+            .filter(|s| !s.is_empty())
+            .map(|s| s.parse().unwrap())
+            .collect(),
+    )
+}
+
+#[test]
+fn graph_26_holds_the_designation_upside_down_in_the_top_left_corner() {
+    // GOST 2.104-2006, 4.1: graph 26, 70 × 14 mm, in the top-left corner of
+    // the frame, the designation turned by 180° (the title block runs along
+    // the long side of the sheet)
+    for (format, h_sheet) in [("A1", 594.0), ("A2", 420.0)] {
+        let run = run_task(&TaskSource::new("default", with_sheet(DEFAULT_TASK, format))).unwrap();
+        let sh = sheets(&run.docs);
+        assert!(sh.len() >= 4);
+        for (path, svg) in &sh {
+            let (lines, _) = group(svg, "graph-26");
+            // its right side at x = 20 + 70 from the frame's top (y = 5) to
+            // 5 + 14, its bottom at y = 19 from the frame's left (x = 20) to 90
+            let has = |l: Segment| {
+                lines.iter().any(|m| {
+                    let same = |a: Segment, b: Segment| {
+                        (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9 && (a.2 - b.2).abs() < 1e-9 && (a.3 - b.3).abs() < 1e-9
+                    };
+                    same(*m, l) || same(*m, (l.2, l.3, l.0, l.1))
+                })
+            };
+            assert!(
+                has((90.0, 5.0, 90.0, 19.0)),
+                "{format} {path}: no right side of graph 26 in {lines:?}"
+            );
+            assert!(has((20.0, 19.0, 90.0, 19.0)), "{format} {path}: no bottom of graph 26 in {lines:?}");
+            let texts = group_texts(svg, "graph-26");
+            assert_eq!(texts.len(), 1, "{format} {path}: {texts:?}");
+            let (x, y, size, tr, text) = &texts[0];
+            assert_eq!(text, "ТММ.КП.017.00.000", "{format} {path}");
+            // turned by 180° about a point inside the box
+            let r = transform_args(tr, "rotate").unwrap_or_else(|| panic!("{format} {path}: not turned: {tr:?}"));
+            assert_eq!(r.len(), 3, "{tr}");
+            assert!((r[0] - 180.0).abs() < 1e-9, "{tr}");
+            // the text's box (0.6 of the size per character, the capitals'
+            // height above the baseline) turned about that point stays in
+            // the box, with 1 mm to spare
+            let w = 0.6 * size * text.chars().count() as f64;
+            let (cx, cy) = (r[1], r[2]);
+            let corners = [
+                (x - w / 2.0, *y),
+                (x + w / 2.0, *y),
+                (x - w / 2.0, y - size),
+                (x + w / 2.0, y - size),
+            ];
+            for (px, py) in corners {
+                let (qx, qy) = (2.0 * cx - px, 2.0 * cy - py);
+                assert!(
+                    (21.0..=89.0).contains(&qx) && (6.0..=18.0).contains(&qy),
+                    "{format} {path}: the designation leaves graph 26 at ({qx}, {qy})"
+                );
+            }
+            // GOST 2.304 sizes only
+            assert!([3.5, 5.0, 7.0].contains(size), "{format} {path}: {size} mm");
+            // no drawing on it
+            let g26 = Rect {
+                x: 20.0,
+                y: 5.0,
+                w: 70.0,
+                h: 14.0,
+            };
+            for (src, d) in drawings(svg) {
+                assert!(!d.intersects(&g26), "{format} {path}: {src} {d:?} covers graph 26");
+            }
+        }
+        // the DXF: one text turned by 180° inside the box (y up: 589 … 575 mm on A1)
+        let d = run.docs.get("sheets/sheet-1.dxf").unwrap();
+        let drawing = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
+        let turned: Vec<_> = drawing
+            .entities()
+            .filter_map(|e| match &e.specific {
+                dxf::entities::EntityType::Text(t) if t.value == "ТММ.КП.017.00.000" => Some(t.clone()),
+                _ => None,
+            })
+            .filter(|t| (t.rotation.rem_euclid(360.0) - 180.0).abs() < 1e-6)
+            .collect();
+        assert_eq!(turned.len(), 1, "{format}: the turned designation in the DXF");
+        let t = &turned[0];
+        let p = &t.location;
+        assert!(
+            (20.0..=90.0).contains(&p.x) && (h_sheet - 19.0..=h_sheet - 5.0).contains(&p.y),
+            "{format}: the DXF's designation at {p:?}"
+        );
+    }
+}
+
 #[test]
 fn the_dxf_reads_back_with_its_layers_and_inside_the_sheet() {
     for format in ["A1", "A2"] {
