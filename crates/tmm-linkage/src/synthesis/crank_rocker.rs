@@ -14,7 +14,7 @@ use tmm_geom::Vec2;
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef};
 
 use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
-use super::error::{SynthesisError, finite, positive};
+use super::error::{SynthesisError, finite, positive, show};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
 use super::pivot::{PivotCondition, choose, polar};
@@ -79,7 +79,41 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
     let d = Vec2::ZERO;
     let c1 = polar(FRAC_PI_2 + 0.5 * psi) * l3;
     let c2 = polar(FRAC_PI_2 - 0.5 * psi) * l3;
-    let locus = Locus::new(c1, c2, theta)?;
+    // when no pivot at all works, K is too large for this swing: the error
+    // names K and the largest K for which the locus has a valid pivot
+    // (bisection on t = θ/π, so that any K ≥ 1 can be asked)
+    let any = |t: f64| {
+        Locus::new(c1, c2, std::f64::consts::PI * t)
+            .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), "k", None))
+            .is_ok()
+    };
+    let k_too_large = || {
+        let (mut lo, mut hi) = (0.0, theta / std::f64::consts::PI);
+        if !any(lo) {
+            return None;
+        }
+        for _ in 0..48 {
+            let mid = 0.5 * (lo + hi);
+            if any(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(SynthesisError::infeasible(
+            "k",
+            format!(
+                "no crank-rocker swings a rocker by {:.4}° with K = {}: the crank pivots on the locus all fail Grashof's condition or put the extreme positions on two assembly branches",
+                psi.to_degrees(),
+                show(r.k)
+            ),
+            Some((1.0 + lo) / (1.0 - lo)),
+        ))
+    };
+    let locus = match Locus::new(c1, c2, theta) {
+        Ok(l) => l,
+        Err(e) => return Err(k_too_large().unwrap_or(e)),
+    };
     let (cond, field, what) = match r.condition {
         RockerCondition::Crank(l1) => (PivotCondition::CrankLength(positive("crank", l1)?), "crank", "crank length given"),
         RockerCondition::Frame(f) => (
@@ -100,32 +134,10 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
     let choice = match choose(locus, d, sg, cond, &r.limits, field, None) {
         Ok(c) => c,
         Err(e) => {
-            // when no pivot at all works, K is too large for this swing
-            let any = |k: f64| {
-                theta_from_k(k)
-                    .and_then(|t| Locus::new(c1, c2, t))
-                    .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), field, None))
-                    .is_ok()
-            };
-            if !any(r.k) && any(1.0) {
-                let (mut lo, mut hi) = (1.0, r.k);
-                for _ in 0..40 {
-                    let mid = 0.5 * (lo + hi);
-                    if any(mid) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                return Err(SynthesisError::infeasible(
-                    "k",
-                    format!(
-                        "no crank-rocker swings a rocker by {:.4}° with K = {}: the crank pivots on the locus all fail Grashof's condition or put the extreme positions on two assembly branches",
-                        psi.to_degrees(),
-                        r.k
-                    ),
-                    Some(lo),
-                ));
+            if !any(theta / std::f64::consts::PI)
+                && let Some(k) = k_too_large()
+            {
+                return Err(k);
             }
             return Err(e);
         }

@@ -100,8 +100,8 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
         return Err(SynthesisError::infeasible(
             "stroke",
             format!(
-                "the knee lifts the slide by less than {:.6} m from δ = {:.4}° while the rocker stays within 90° of the line CF",
-                h_max.max(0.0),
+                "the knee lifts the slide by less than {} m from δ = {:.4}° while the rocker stays within 90° of the line CF",
+                super::error::show(h_max.max(0.0)),
                 delta.to_degrees()
             ),
             Some(h_max.max(0.0) * (1.0 - 1e-6)),

@@ -93,8 +93,8 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
         return Err(SynthesisError::infeasible(
             "coupler",
             format!(
-                "the coupler ED must be longer than half the distance |E′E″ᵢ| = {:.6} m between the slider's start and its inverted end",
-                0.5 * dd
+                "the coupler ED must be longer than half the distance |E′E″ᵢ| = {} m between the slider's start and its inverted end",
+                super::error::show(0.5 * dd)
             ),
             Some(0.5 * dd * (1.0 + 1e-6)),
         ));

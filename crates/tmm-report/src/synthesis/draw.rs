@@ -303,8 +303,22 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
     }
     c.dot(xy(k.pivot), 1.0, RED);
     // ---- then the labels, each placed clear of the lines and the others ----
-    for (i, p) in k.extremes.iter().enumerate() {
-        labels.push((xy(*p), format!("{}{}", k.point, if i == 0 { "′" } else { "″" }), colors[i]));
+    // ′ (blue) marks the extreme position drawn in blue, the one that starts
+    // the working stroke (the first dead position the core found)
+    let first = shown
+        .first()
+        .and_then(|pos| pos.iter().find(|(n, _)| *n == k.point))
+        .map(|(_, p)| *p);
+    let order = match first {
+        Some(p) if (p - k.extremes[1]).hypot() < (p - k.extremes[0]).hypot() => [1, 0],
+        _ => [0, 1],
+    };
+    for (i, &j) in order.iter().enumerate() {
+        labels.push((
+            xy(k.extremes[j]),
+            format!("{}{}", k.point, if i == 0 { "′" } else { "″" }),
+            colors[i],
+        ));
     }
     for (n, p) in &y.frame {
         let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
@@ -353,8 +367,22 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
             }
         }
     }
-    let top = curves.iter().flat_map(|c| c.1.iter().map(|p| p.1)).fold(0.0_f64, f64::max);
     let w = cy.working_angle.to_degrees();
+    // the allowed angles on each stroke, when the request gives them
+    let q = &s.spec.request;
+    let limits = tmm_linkage::synthesis::Limits {
+        pressure_working: q.value("pressure_working"),
+        pressure_return: q.value("pressure_return"),
+        transmission_min: q.value("transmission_min"),
+    };
+    let (lw, lr) = limits.pressure();
+    let lim_w: Vec<(f64, f64)> = lw.map(|l| vec![(0.0, l.to_degrees()), (w, l.to_degrees())]).unwrap_or_default();
+    let lim_r: Vec<(f64, f64)> = lr.map(|l| vec![(w, l.to_degrees()), (360.0, l.to_degrees())]).unwrap_or_default();
+    let top = curves
+        .iter()
+        .flat_map(|c| c.1.iter().map(|p| p.1))
+        .chain(lim_w.iter().chain(&lim_r).map(|p| p.1))
+        .fold(0.0_f64, f64::max);
     let marker = [(w, 0.0), (w, top)];
     let names: Vec<String> = curves.iter().map(|c| format!("ϑ {}", m.points[c.0].name)).collect();
     let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
@@ -373,6 +401,16 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
         points: &marker,
         color: GREY,
     });
+    let (name_w, name_r) = (wd("limit_working"), wd("limit_return"));
+    for (name, pts) in [(&name_w, &lim_w), (&name_r, &lim_r)] {
+        if !pts.is_empty() {
+            series.push(Series {
+                name,
+                points: pts,
+                color: "#000",
+            });
+        }
+    }
     let (w, h) = slot_mm(Slot::Diagram, sheet);
     Ok(plot_in(
         lang,
