@@ -625,7 +625,7 @@ fn an_infeasible_k_names_a_nearest_value_that_works() {
         assert_eq!(code, 0, "K = {ns}: {err}");
     }
     // a crank-rocker whose K is too large for its swing
-    for (k, swing) in [("3", "20"), ("10", "30")] {
+    for (k, swing) in [("5", "20"), ("10", "30"), ("1e300", "30")] {
         let a = [
             "synth",
             "crank-rocker",
@@ -777,7 +777,7 @@ fn extreme_values_give_exit_2_or_finite_results() {
         assert!(code == 0 || code == 2, "K {k} ψ {swing}: {err}");
         assert!(!err.contains("panicked") && !err.contains("NaN"), "{err}");
     }
-    assert!(runs > 300, "{runs}");
+    assert!(runs > 250, "{runs}");
 }
 
 #[test]
@@ -903,9 +903,10 @@ fn every_kind_written_with_task_runs_through_linkage_forces_and_run() {
         let d = tmp(n);
         let t = d.join("t.toml");
         let ts = t.to_str().unwrap();
+        let svg = d.join("svg");
         let mut args = vec!["synth"];
         args.extend_from_slice(a);
-        args.extend_from_slice(&["--task", ts, "--svg", d.join("svg").to_str().unwrap()]);
+        args.extend_from_slice(&["--task", ts, "--svg", svg.to_str().unwrap()]);
         let (code, _, err) = run(&args);
         assert_eq!(code, 0, "{n}: {err}");
         for p in ["synthesis/construction.svg", "synthesis/pressure.svg"] {

@@ -7,7 +7,7 @@
 //! smallest transmission angle (seed 002, example 1; Artobolevsky, ТММ, 1988,
 //! § 26). Names: crank OA (1), coupler AB (2), rocker CB (3), frame OC.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use tmm_geom::Vec2;
 
@@ -17,7 +17,8 @@ use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_l
 use super::error::{SynthesisError, finite, positive, show};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
-use super::pivot::{PivotCondition, choose, polar};
+use super::pivot::{PivotCondition, choose, evaluate, polar};
+use super::search::maximize;
 use super::placement::Placement;
 use super::result::{Construction, FreeParameter, Kind, Stroke, Synthesis};
 use super::time_ratio::theta_from_k;
@@ -52,6 +53,31 @@ pub struct CrankRockerRequest {
     pub drive: Drive,
     /// Pressure / transmission angle limits.
     pub limits: Limits,
+}
+
+/// The frame angle δ (from the frame line to the swing's bisector, +y) of
+/// the valid pivot nearest in δ to `want`; δ is taken modulo 180°, since
+/// δ and δ + 180° give the same frame line through the rocker's pivot `d`.
+fn nearest_frame_angle(locus: &Locus, d: Vec2, sg: f64, want: f64) -> Option<f64> {
+    let off = |o: Vec2| {
+        let r = (FRAC_PI_2 - (o - d).atan2() - want).rem_euclid(PI);
+        if r > FRAC_PI_2 { r - PI } else { r }
+    };
+    let (lo, hi) = locus.domain();
+    let mut best: Option<f64> = None;
+    for side in [1.0, -1.0] {
+        let score = |w: f64| {
+            let o = locus.point(side, w);
+            evaluate(locus, d, o, sg).map_or(f64::NAN, |_| -off(o).abs())
+        };
+        if let Some((w, _)) = maximize(score, lo, hi, 720) {
+            let x = off(locus.point(side, w));
+            if best.is_none_or(|b| x.abs() < b.abs()) {
+                best = Some(x);
+            }
+        }
+    }
+    best.map(|x| want + x)
 }
 
 /// Synthesise a crank-rocker four-bar and check it over the cycle.
@@ -138,6 +164,15 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
                 && let Some(k) = k_too_large()
             {
                 return Err(k);
+            }
+            // the pivot condition's own nearest value is an offset of the
+            // line; for a frame direction the nearest direction is wanted
+            if let (RockerCondition::FrameAngle(want), SynthesisError::Infeasible { field, condition, .. }) = (r.condition, &e) {
+                return Err(SynthesisError::infeasible(
+                    field.clone(),
+                    condition.clone(),
+                    nearest_frame_angle(&locus, d, sg, want),
+                ));
             }
             return Err(e);
         }

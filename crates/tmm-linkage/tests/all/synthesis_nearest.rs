@@ -32,7 +32,7 @@ fn nearest_works(r: &Request, field: &str, digits: usize) -> f64 {
     assert_ne!(Some(n), r.value(name), "{r:?}: the nearest value is the request");
     let s = synthesize(&r.with_param(name, n).unwrap());
     assert!(s.is_ok(), "{r:?}: nearest {n} fails: {s:?}");
-    let user = if ["swing", "max_pressure", "pressure_working", "pressure_return", "transmission_min"].contains(&name) {
+    let user = if ["swing", "frame_angle", "max_pressure", "pressure_working", "pressure_return", "transmission_min"].contains(&name) {
         n.to_degrees()
     } else {
         n
@@ -239,4 +239,31 @@ fn random_infeasible_requests_name_a_nearest_value_that_works() {
         }
     }
     assert!(checked > 30, "{checked}");
+}
+
+/// A frame direction no valid pivot has: the nearest direction works, and
+/// the directions between it and the one asked for all fail (so it is the
+/// nearest, up to the rounding).
+#[test]
+fn crank_rocker_frame_angle_nearest_is_the_nearest_direction() {
+    for want in [0.0f64, 10.0, 90.0, -90.0, 170.0] {
+        let r = rocker(3.0, 0.245, 60.0, RockerCondition::FrameAngle(want.to_radians()));
+        if synthesize(&r).is_ok() {
+            continue;
+        }
+        let n = nearest_works(&r, "frame_angle", 4).to_degrees();
+        // δ and δ + 180° are one frame line
+        let d = (n - want + 90.0).rem_euclid(180.0) - 90.0;
+        assert!(d.abs() <= 90.0, "{want}: {n}");
+        for j in 1..20 {
+            let between = want + d * j as f64 / 20.0;
+            if (between - n).abs() < 0.02 {
+                continue;
+            }
+            assert!(
+                synthesize(&r.with_param("frame_angle", between.to_radians()).unwrap()).is_err(),
+                "{want}: {between}° works but the nearest given is {n}°"
+            );
+        }
+    }
 }

@@ -351,7 +351,13 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
 pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String, Error> {
     let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let m = Mechanism::new(&s.syn.def).map_err(|e| Error::input("synthesis", e))?;
-    let cy = Cycle::new(&m, Working::Slower).map_err(|e| Error::input("synthesis", e))?;
+    // K = 1 (an axial crank-slider): neither stroke is the slower one; the
+    // working stroke is then the one on which the output coordinate grows,
+    // as in the check (tmm_linkage::synthesis::check)
+    let cy = match Cycle::new(&m, Working::Slower) {
+        Ok(c) => c,
+        Err(e) => Cycle::new(&m, Working::Increasing).map_err(|_| Error::input("synthesis", e))?,
+    };
     let mut sol = m.solution();
     let mut out = Vec::new();
     let mut curves: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();

@@ -160,7 +160,15 @@ pub fn solve(f: &Fields) -> Result<Solved, Error> {
     for (i, g) in spec.extra_given.iter().enumerate() {
         syn.given.insert(i, g.clone());
     }
-    let linkage = linkage_toml(&syn.def)?;
+    let mut linkage = linkage_toml(&syn.def)?;
+    // K = 1 (an axial crank-slider): both strokes take 180°, so the
+    // [linkage] must say which one works, as the check took it
+    if let Ok(m) = tmm_linkage::Mechanism::new(&syn.def)
+        && Cycle::new(&m, Working::Slower).is_err()
+        && Cycle::new(&m, Working::Increasing).is_ok()
+    {
+        linkage = linkage.replacen("[linkage]\n", "[linkage]\nworking = \"increasing\"\n", 1);
+    }
     Ok(Solved { spec, syn, linkage })
 }
 
