@@ -18,9 +18,9 @@ use super::error::{SynthesisError, finite, positive, show};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
 use super::pivot::{PivotCondition, choose, evaluate, polar};
-use super::search::maximize;
 use super::placement::Placement;
 use super::result::{Construction, FreeParameter, Kind, Stroke, Synthesis};
+use super::search::maximize;
 use super::time_ratio::theta_from_k;
 
 /// The extra condition of a crank-rocker request.

@@ -80,7 +80,11 @@ pub fn show(x: f64) -> String {
     if !(-4.0..6.0).contains(&e) {
         let t = format!("{x:.5e}");
         let (m, ex) = t.split_once('e').unwrap_or((&t, "0"));
-        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
         return format!("{m}e{ex}");
     }
     let d = (5.0 - e).max(0.0) as usize;
@@ -97,7 +101,10 @@ pub fn positive(field: &str, x: f64) -> Result<f64, SynthesisError> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(SynthesisError::input(field, format!("must be a finite positive number, got {}", show(x))))
+        Err(SynthesisError::input(
+            field,
+            format!("must be a finite positive number, got {}", show(x)),
+        ))
     }
 }
 

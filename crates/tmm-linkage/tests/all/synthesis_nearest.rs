@@ -32,7 +32,16 @@ fn nearest_works(r: &Request, field: &str, digits: usize) -> f64 {
     assert_ne!(Some(n), r.value(name), "{r:?}: the nearest value is the request");
     let s = synthesize(&r.with_param(name, n).unwrap());
     assert!(s.is_ok(), "{r:?}: nearest {n} fails: {s:?}");
-    let user = if ["swing", "frame_angle", "max_pressure", "pressure_working", "pressure_return", "transmission_min"].contains(&name) {
+    let user = if [
+        "swing",
+        "frame_angle",
+        "max_pressure",
+        "pressure_working",
+        "pressure_return",
+        "transmission_min",
+    ]
+    .contains(&name)
+    {
         n.to_degrees()
     } else {
         n

@@ -139,14 +139,24 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
     let view: Box4 = (b.0 - margin, b.1 + margin, b.2 - margin, b.3 + margin);
     let mut world = (b.0 - 0.05 * size, b.1 + 0.05 * size, b.2 - 0.05 * size, b.3 + 0.05 * size);
     if let Some(l) = &k.locus {
+        // the course draws the centre O* that sees the chord at 2θ: when it
+        // lies within one size of the mechanism and the circle is no larger
+        // than the mechanism, the view takes the whole circle in
+        let wide: Box4 = (b.0 - size, b.1 + size, b.2 - size, b.3 + size);
+        let everything: Box4 = (f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY);
+        let circle_view = if inside(wide, l.center) && l.radius <= size {
+            everything
+        } else {
+            view
+        };
         for i in 0..720 {
             let a = i as f64 * std::f64::consts::TAU / 720.0;
             let p = l.center + Vec2::new(a.cos(), a.sin()) * l.radius;
-            if inside(view, p) {
+            if inside(circle_view, p) {
                 world = grow(world, p);
             }
         }
-        if inside(view, l.center) {
+        if inside(circle_view, l.center) {
             world = grow(world, l.center);
         }
     }
@@ -382,13 +392,27 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
         transmission_min: q.value("transmission_min"),
     };
     let (lw, lr) = limits.pressure();
-    let lim_w: Vec<(f64, f64)> = lw.map(|l| vec![(0.0, l.to_degrees()), (w, l.to_degrees())]).unwrap_or_default();
-    let lim_r: Vec<(f64, f64)> = lr.map(|l| vec![(w, l.to_degrees()), (360.0, l.to_degrees())]).unwrap_or_default();
-    let top = curves
+    // one step line: [ϑ]w over the working stroke, [ϑ]r over the return
+    let mut lim: Vec<(f64, f64)> = Vec::new();
+    if let Some(l) = lw {
+        lim.extend([(0.0, l.to_degrees()), (w, l.to_degrees())]);
+    }
+    match lr {
+        Some(l) => lim.extend([(w, l.to_degrees()), (360.0, l.to_degrees())]),
+        None if !lim.is_empty() => lim.push((f64::NAN, f64::NAN)),
+        None => {}
+    }
+    let data_top = curves
         .iter()
         .flat_map(|c| c.1.iter().map(|p| p.1))
-        .chain(lim_w.iter().chain(&lim_r).map(|p| p.1))
+        .chain(lim.iter().map(|p| p.1).filter(|y| y.is_finite()))
         .fold(0.0_f64, f64::max);
+    // the legend sits over the top of the plot, one 4.5 mm row per series:
+    // the end-of-stroke line reaches high enough to keep the curves below it
+    let (_, ph_mm) = slot_mm(Slot::Diagram, sheet);
+    let rows = curves.len() + 1 + usize::from(!lim.is_empty());
+    let free = 1.0 - (4.5 * rows as f64 + 2.0) / (ph_mm - 30.0);
+    let top = if free > 0.3 { data_top / free } else { data_top };
     let marker = [(w, 0.0), (w, top)];
     let names: Vec<String> = curves.iter().map(|c| format!("ϑ {}", m.points[c.0].name)).collect();
     let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
@@ -407,15 +431,13 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
         points: &marker,
         color: GREY,
     });
-    let (name_w, name_r) = (wd("limit_working"), wd("limit_return"));
-    for (name, pts) in [(&name_w, &lim_w), (&name_r, &lim_r)] {
-        if !pts.is_empty() {
-            series.push(Series {
-                name,
-                points: pts,
-                color: "#000",
-            });
-        }
+    let lim_name = wd("limit");
+    if !lim.is_empty() {
+        series.push(Series {
+            name: &lim_name,
+            points: &lim,
+            color: "#000",
+        });
     }
     let (w, h) = slot_mm(Slot::Diagram, sheet);
     Ok(plot_in(
