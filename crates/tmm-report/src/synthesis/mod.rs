@@ -148,7 +148,7 @@ pub fn locate(spec: &Spec, f: &Fields, e: &SynthesisError) -> Error {
             }
         }
         other => f.error("kind", other).with_help(
-            "the data lie at the edge of what this mechanism can do: the mechanism the synthesis gives fails its check over the cycle by the linkage core (a group at its dead centre: a pressure angle of 90°); move the data away from that edge",
+            "the linkage core refuses the mechanism the synthesis gives, for the reason above: the data lie beyond what it analyses (a length out of range) or at the edge of what this mechanism can do (a group at its dead centre: a pressure angle of 90°); move the data away from that edge",
         ),
     }
 }
