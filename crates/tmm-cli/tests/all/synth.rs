@@ -395,7 +395,7 @@ fn bad_input_names_the_option_and_exits_2() {
         // seed example: H = 0.3 m, K = 1.2 cannot have ϑmax = 40°; the smallest is 42.80°
         (
             &["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--max-pressure", "40"],
-            &["--max-pressure", "42.799"],
+            &["--max-pressure", "42.7989", "(the rest unchanged): 42.8°"],
         ),
         (
             &["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2"],
@@ -454,7 +454,7 @@ fn a_task_file_error_is_located_at_the_field() {
     let (code, _, err) = run(&["run", f.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("t.toml:6:16: synthesis.max_pressure"), "{err}");
-    assert!(err.contains("42.799"), "{err}");
+    assert!(err.contains("42.7989") && err.contains("42.8°"), "{err}");
 }
 
 #[test]
@@ -510,4 +510,415 @@ fn the_written_task_runs_with_forces_and_compares_the_given_linkage() {
     let (code, out, err) = run(&["run", t.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("The task's own [linkage] is analysed"), "{out}");
+}
+
+/// The number after `label` in a message (`… (the rest unchanged): 1.909`).
+fn number_after(text: &str, label: &str) -> f64 {
+    let at = text.find(label).unwrap_or_else(|| panic!("`{label}` not in\n{text}")) + label.len();
+    let t: String = text[at..]
+        .trim_start()
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == '-')
+        .collect();
+    t.parse().unwrap_or_else(|_| panic!("no number after `{label}` in\n{text}"))
+}
+
+#[test]
+fn a_sweep_needs_not_the_option_it_sweeps() {
+    // λ2 swept with no --lambda (nor --offset, --max-pressure, --optimum)
+    let v = json(&[
+        "synth",
+        "crank-slider",
+        "--stroke",
+        "300 mm",
+        "--k",
+        "1.2",
+        "--sweep",
+        "lambda=2..6:5",
+        "--json",
+    ]);
+    let arr = v.as_array().unwrap();
+    assert_eq!(arr.len(), 5);
+    for (i, r) in arr.iter().enumerate() {
+        assert_eq!(r["feasible"], true, "{r}");
+        let l = &r["lengths"];
+        close("λ2", l["AB"].as_f64().unwrap() / l["OA"].as_f64().unwrap(), 2.0 + i as f64, 1e-12);
+        close("K", r["k"].as_f64().unwrap(), 1.2, 1e-9);
+    }
+    // the offset and the largest pressure angle likewise
+    for sweep in ["offset=20 mm..60 mm:3", "max_pressure=45..60:4"] {
+        let (code, out, err) = run(&["synth", "crank-slider", "--stroke", "300 mm", "--k", "1.2", "--sweep", sweep]);
+        assert_eq!(code, 0, "{sweep}: {err}");
+        assert!(out.contains("Variants:"), "{out}");
+    }
+    // a crank-rocker's crank, frame or frame angle, a knee press's pivot line
+    for (kind, sweep) in [
+        ("crank-rocker", "crank=80 mm..120 mm:3"),
+        ("crank-rocker", "frame=300 mm..400 mm:3"),
+        ("crank-rocker", "frame_angle=80..100:3"),
+    ] {
+        let v = json(&[
+            "synth", kind, "--k", "1.28", "--swing", "60", "--rocker", "245 mm", "--sweep", sweep, "--json",
+        ]);
+        let arr = v.as_array().unwrap();
+        assert!(arr.iter().all(|r| r["feasible"] == true), "{sweep}: {v}");
+        if sweep.starts_with("crank") {
+            for (r, want) in arr.iter().zip([0.08, 0.1, 0.12]) {
+                close("l_OA", r["lengths"]["OA"].as_f64().unwrap(), want, 1e-12);
+            }
+        }
+    }
+    let v = json(&[
+        "synth",
+        "knee-press",
+        "--stroke",
+        "90 mm",
+        "--k",
+        "1.12",
+        "--rocker",
+        "220 mm",
+        "--link",
+        "220 mm",
+        "--delta",
+        "5",
+        "--sweep",
+        "horizontal=260 mm..300 mm:3",
+        "--json",
+    ]);
+    assert!(v.as_array().unwrap().iter().any(|r| r["feasible"] == true), "{v}");
+    // in a task file: without the swept field `tmm run` analyses the first variant
+    let d = tmp("sweep-task");
+    let f = d.join("t.toml");
+    std::fs::write(
+        &f,
+        "[synthesis]\nkind = \"crank-slider\"\nstroke = \"300 mm\"\nk = 1.2\nsweep = \"lambda=3..5:3\"\n",
+    )
+    .unwrap();
+    let (code, out, err) = run(&["run", f.to_str().unwrap(), "-o", d.join("out").to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let l = &v["synthesis"]["lengths"];
+    close(
+        "λ2 of the first variant",
+        l["AB"].as_f64().unwrap() / l["OA"].as_f64().unwrap(),
+        3.0,
+        1e-12,
+    );
+    assert_eq!(v["synthesis"]["variants"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn an_infeasible_k_names_a_nearest_value_that_works() {
+    // K ≥ 3: beyond any crank-slider; with λ2 = 3.5 the largest K is that of
+    // θ = 2·arctan(1/√3.5) (docs/synthesis.md § 3)
+    let th = 2.0 * (1.0 / 3.5f64.sqrt()).atan();
+    let kmax = (std::f64::consts::PI + th) / (std::f64::consts::PI - th);
+    for k in ["3", "3.5", "1e300"] {
+        let a = ["synth", "crank-slider", "--stroke", "300 mm", "--k", k, "--lambda", "3.5"];
+        let (code, _, err) = run(&a);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains("--k") && err.contains("K < 3"), "{err}");
+        let n = number_after(&err, "nearest feasible value of --k (the rest unchanged):");
+        assert!(n < kmax && n > kmax - 2e-3, "{n} vs {kmax}");
+        let ns = n.to_string();
+        let (code, _, err) = run(&["synth", "crank-slider", "--stroke", "300 mm", "--k", &ns, "--lambda", "3.5"]);
+        assert_eq!(code, 0, "K = {ns}: {err}");
+    }
+    // a crank-rocker whose K is too large for its swing
+    for (k, swing) in [("5", "20"), ("10", "30"), ("1e300", "30")] {
+        let a = [
+            "synth",
+            "crank-rocker",
+            "--k",
+            k,
+            "--swing",
+            swing,
+            "--rocker",
+            "245 mm",
+            "--optimum",
+        ];
+        let (code, _, err) = run(&a);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains("--k"), "{err}");
+        let n = number_after(&err, "nearest feasible value of --k (the rest unchanged):");
+        assert!(n > 1.0 && n < k.parse::<f64>().unwrap(), "{n}");
+        assert!(n.to_string().len() <= 6, "not rounded: {n}");
+        let ns = n.to_string();
+        let (code, _, err) = run(&[
+            "synth",
+            "crank-rocker",
+            "--k",
+            &ns,
+            "--swing",
+            swing,
+            "--rocker",
+            "245 mm",
+            "--optimum",
+        ]);
+        assert_eq!(code, 0, "K = {ns}: {err}");
+    }
+}
+
+/// Extreme values of every option of every kind: exit 0 or 2, never a
+/// panic, never a number that is not finite in the output.
+#[test]
+fn extreme_values_give_exit_2_or_finite_results() {
+    let bases: [&[&str]; 6] = [
+        &["crank-slider", "--stroke", "300 mm", "--k", "1.2", "--lambda", "3.5"],
+        &[
+            "crank-rocker",
+            "--k",
+            "1.28",
+            "--swing",
+            "60",
+            "--rocker",
+            "245 mm",
+            "--crank",
+            "100 mm",
+        ],
+        &[
+            "slotted-lever",
+            "--stroke",
+            "400 mm",
+            "--k",
+            "1.5",
+            "--pivots",
+            "50 mm",
+            "--coupler-ratio",
+            "3",
+        ],
+        &[
+            "knee-press",
+            "--stroke",
+            "90 mm",
+            "--k",
+            "1.12",
+            "--rocker",
+            "220 mm",
+            "--link",
+            "220 mm",
+            "--delta",
+            "5",
+            "--horizontal",
+            "280 mm",
+        ],
+        &[
+            "six-bar-pressure",
+            "--k",
+            "1.07",
+            "--swing",
+            "55",
+            "--arm-b",
+            "0.6 m",
+            "--arm-c",
+            "0.6 m",
+            "--guide",
+            "-0.2 m",
+            "--max-pressure",
+            "38",
+            "--extreme-pressure",
+            "38",
+        ],
+        &[
+            "crank-slider-positions",
+            "--lambda",
+            "4",
+            "--lambda-e",
+            "0.2",
+            "--phi-start",
+            "10",
+            "--phi-end",
+            "150",
+            "--travel",
+            "200 mm",
+        ],
+    ];
+    let values = ["0", "-1", "1e300", "1e-300", "1", "3", "180", "360", "NaN", "inf"];
+    let mut runs = 0;
+    for base in bases {
+        // each value option of the base in turn
+        for i in (1..base.len()).step_by(2) {
+            for v in values {
+                let mut a: Vec<&str> = vec!["synth"];
+                a.extend_from_slice(base);
+                a[i + 2] = v;
+                a.push("--json");
+                let (code, out, err) = run(&a);
+                runs += 1;
+                assert!(code == 0 || code == 2, "{a:?}: exit {code}\n{err}");
+                assert!(!err.contains("panicked"), "{a:?}: {err}");
+                if code == 0 {
+                    let j: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{a:?}: {e}"));
+                    for k in ["k", "theta", "transmission_angle_min"] {
+                        assert!(j[k].as_f64().is_some_and(f64::is_finite), "{a:?}: {k} = {}", j[k]);
+                    }
+                    for (n, l) in j["lengths"].as_object().unwrap() {
+                        assert!(l.as_f64().is_some_and(f64::is_finite), "{a:?}: {n} = {l}");
+                    }
+                } else {
+                    assert!(!err.contains("NaN") || v == "NaN", "{a:?}: {err}");
+                }
+            }
+        }
+    }
+    // a swing of 180° and more, K = 1 and K ≥ 3 of a crank-rocker
+    for (k, swing) in [("1", "60"), ("3", "60"), ("1.28", "180"), ("1.28", "179.9"), ("1", "180")] {
+        let (code, _, err) = run(&[
+            "synth",
+            "crank-rocker",
+            "--k",
+            k,
+            "--swing",
+            swing,
+            "--rocker",
+            "245 mm",
+            "--optimum",
+        ]);
+        assert!(code == 0 || code == 2, "K {k} ψ {swing}: {err}");
+        assert!(!err.contains("panicked") && !err.contains("NaN"), "{err}");
+    }
+    assert!(runs > 250, "{runs}");
+}
+
+#[test]
+fn every_kind_written_with_task_runs_through_linkage_forces_and_run() {
+    let cases: [(&str, &[&str]); 8] = [
+        ("t-cs", &["crank-slider", "--stroke", "300 mm", "--k", "1.2", "--offset", "40 mm"]),
+        (
+            "t-csp",
+            &[
+                "crank-slider-positions",
+                "--lambda",
+                "4",
+                "--phi-start",
+                "10",
+                "--phi-end",
+                "150",
+                "--travel",
+                "200 mm",
+            ],
+        ),
+        (
+            "t-cr",
+            &[
+                "crank-rocker",
+                "--k",
+                "1.28",
+                "--swing",
+                "60",
+                "--rocker",
+                "245 mm",
+                "--frame",
+                "350 mm",
+            ],
+        ),
+        (
+            "t-fg",
+            &[
+                "function-generation",
+                "--frame",
+                "300 mm",
+                "--position",
+                "30, 60",
+                "--position",
+                "60, 75",
+                "--position",
+                "90, 95",
+            ],
+        ),
+        (
+            "t-sl",
+            &[
+                "slotted-lever",
+                "--stroke",
+                "400 mm",
+                "--k",
+                "1.5",
+                "--pivots",
+                "50 mm",
+                "--coupler-ratio",
+                "3",
+                "--lever",
+                "oscillating",
+            ],
+        ),
+        (
+            "t-kp",
+            &[
+                "knee-press",
+                "--stroke",
+                "90 mm",
+                "--k",
+                "1.12",
+                "--rocker",
+                "220 mm",
+                "--link",
+                "220 mm",
+                "--delta",
+                "5",
+                "--optimum",
+            ],
+        ),
+        (
+            "t-inv",
+            &[
+                "six-bar-inversion",
+                "--k",
+                "1.15",
+                "--travel",
+                "360 mm",
+                "--guide",
+                "-320 mm",
+                "--start",
+                "180 mm",
+                "--coupler",
+                "320 mm",
+                "--swing",
+                "70",
+                "--lever",
+                "360 mm",
+            ],
+        ),
+        (
+            "t-pr",
+            &[
+                "six-bar-pressure",
+                "--k",
+                "1.07",
+                "--swing",
+                "55",
+                "--arm-b",
+                "0.6 m",
+                "--arm-c",
+                "0.6 m",
+                "--guide",
+                "-0.2 m",
+                "--max-pressure",
+                "38",
+                "--optimum",
+            ],
+        ),
+    ];
+    for (n, a) in cases {
+        let d = tmp(n);
+        let t = d.join("t.toml");
+        let ts = t.to_str().unwrap();
+        let svg = d.join("svg");
+        let mut args = vec!["synth"];
+        args.extend_from_slice(a);
+        args.extend_from_slice(&["--task", ts, "--svg", svg.to_str().unwrap()]);
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 0, "{n}: {err}");
+        for p in ["synthesis/construction.svg", "synthesis/pressure.svg"] {
+            assert!(d.join("svg").join(p).is_file(), "{n}: {p}");
+        }
+        for cmd in [
+            vec!["linkage", ts],
+            vec!["forces", ts],
+            vec!["run", ts, "-o", d.join("out").to_str().unwrap()],
+        ] {
+            let (code, _, err) = run(&cmd);
+            assert_eq!(code, 0, "{n}: tmm {}: {err}", cmd[0]);
+        }
+    }
 }

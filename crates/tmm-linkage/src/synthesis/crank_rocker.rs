@@ -7,19 +7,20 @@
 //! smallest transmission angle (seed 002, example 1; Artobolevsky, ТММ, 1988,
 //! § 26). Names: crank OA (1), coupler AB (2), rocker CB (3), frame OC.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use tmm_geom::Vec2;
 
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef};
 
 use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
-use super::error::{SynthesisError, finite, positive};
+use super::error::{SynthesisError, finite, positive, show};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
-use super::pivot::{PivotCondition, choose, polar};
+use super::pivot::{PivotCondition, choose, evaluate, polar};
 use super::placement::Placement;
 use super::result::{Construction, FreeParameter, Kind, Stroke, Synthesis};
+use super::search::maximize;
 use super::time_ratio::theta_from_k;
 
 /// The extra condition of a crank-rocker request.
@@ -54,6 +55,31 @@ pub struct CrankRockerRequest {
     pub limits: Limits,
 }
 
+/// The frame angle δ (from the frame line to the swing's bisector, +y) of
+/// the valid pivot nearest in δ to `want`; δ is taken modulo 180°, since
+/// δ and δ + 180° give the same frame line through the rocker's pivot `d`.
+fn nearest_frame_angle(locus: &Locus, d: Vec2, sg: f64, want: f64) -> Option<f64> {
+    let off = |o: Vec2| {
+        let r = (FRAC_PI_2 - (o - d).atan2() - want).rem_euclid(PI);
+        if r > FRAC_PI_2 { r - PI } else { r }
+    };
+    let (lo, hi) = locus.domain();
+    let mut best: Option<f64> = None;
+    for side in [1.0, -1.0] {
+        let score = |w: f64| {
+            let o = locus.point(side, w);
+            evaluate(locus, d, o, sg).map_or(f64::NAN, |_| -off(o).abs())
+        };
+        if let Some((w, _)) = maximize(score, lo, hi, 720) {
+            let x = off(locus.point(side, w));
+            if best.is_none_or(|b| x.abs() < b.abs()) {
+                best = Some(x);
+            }
+        }
+    }
+    best.map(|x| want + x)
+}
+
 /// Synthesise a crank-rocker four-bar and check it over the cycle.
 ///
 /// ```
@@ -79,7 +105,41 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
     let d = Vec2::ZERO;
     let c1 = polar(FRAC_PI_2 + 0.5 * psi) * l3;
     let c2 = polar(FRAC_PI_2 - 0.5 * psi) * l3;
-    let locus = Locus::new(c1, c2, theta)?;
+    // when no pivot at all works, K is too large for this swing: the error
+    // names K and the largest K for which the locus has a valid pivot
+    // (bisection on t = θ/π, so that any K ≥ 1 can be asked)
+    let any = |t: f64| {
+        Locus::new(c1, c2, std::f64::consts::PI * t)
+            .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), "k", None))
+            .is_ok()
+    };
+    let k_too_large = || {
+        let (mut lo, mut hi) = (0.0, theta / std::f64::consts::PI);
+        if !any(lo) {
+            return None;
+        }
+        for _ in 0..48 {
+            let mid = 0.5 * (lo + hi);
+            if any(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(SynthesisError::infeasible(
+            "k",
+            format!(
+                "no crank-rocker swings a rocker by {:.4}° with K = {}: the crank pivots on the locus all fail Grashof's condition or put the extreme positions on two assembly branches",
+                psi.to_degrees(),
+                show(r.k)
+            ),
+            Some((1.0 + lo) / (1.0 - lo)),
+        ))
+    };
+    let locus = match Locus::new(c1, c2, theta) {
+        Ok(l) => l,
+        Err(e) => return Err(k_too_large().unwrap_or(e)),
+    };
     let (cond, field, what) = match r.condition {
         RockerCondition::Crank(l1) => (PivotCondition::CrankLength(positive("crank", l1)?), "crank", "crank length given"),
         RockerCondition::Frame(f) => (
@@ -100,31 +160,18 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
     let choice = match choose(locus, d, sg, cond, &r.limits, field, None) {
         Ok(c) => c,
         Err(e) => {
-            // when no pivot at all works, K is too large for this swing
-            let any = |k: f64| {
-                theta_from_k(k)
-                    .and_then(|t| Locus::new(c1, c2, t))
-                    .and_then(|l| choose(l, d, sg, PivotCondition::Optimum, &Limits::default(), field, None))
-                    .is_ok()
-            };
-            if !any(r.k) && any(1.0) {
-                let (mut lo, mut hi) = (1.0, r.k);
-                for _ in 0..40 {
-                    let mid = 0.5 * (lo + hi);
-                    if any(mid) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
+            if !any(theta / std::f64::consts::PI)
+                && let Some(k) = k_too_large()
+            {
+                return Err(k);
+            }
+            // the pivot condition's own nearest value is an offset of the
+            // line; for a frame direction the nearest direction is wanted
+            if let (RockerCondition::FrameAngle(want), SynthesisError::Infeasible { field, condition, .. }) = (r.condition, &e) {
                 return Err(SynthesisError::infeasible(
-                    "k",
-                    format!(
-                        "no crank-rocker swings a rocker by {:.4}° with K = {}: the crank pivots on the locus all fail Grashof's condition or put the extreme positions on two assembly branches",
-                        psi.to_degrees(),
-                        r.k
-                    ),
-                    Some(lo),
+                    field.clone(),
+                    condition.clone(),
+                    nearest_frame_angle(&locus, d, sg, want),
                 ));
             }
             return Err(e);

@@ -27,7 +27,7 @@ use tmm_geom::root::brent;
 use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
 use super::check::{ASSEMBLY_OFFSET, Expect, check_cycle, check_extremes, check_limits};
-use super::error::{SynthesisError, finite, positive};
+use super::error::{SynthesisError, finite, positive, show};
 use super::limits::{Drive, Limits};
 use super::locus::Locus;
 use super::result::{Construction, FreeParameter, Kind, Stroke, Synthesis};
@@ -113,7 +113,7 @@ pub fn synthesize(r: &CrankSliderRequest) -> Result<Synthesis, SynthesisError> {
             "k",
             format!(
                 "a crank-slider sees its stroke at θ < 90° from the crank pivot, so K < 3; K = {} gives θ = {:.4}°",
-                r.k,
+                show(r.k),
                 theta.to_degrees()
             ),
             Some(3.0 - 1e-9),
@@ -129,7 +129,7 @@ pub fn synthesize(r: &CrankSliderRequest) -> Result<Synthesis, SynthesisError> {
                     "lambda",
                     format!(
                         "λ2 = l2/l1 must lie in (1, cot²(θ/2) = {top:.6}) for K = {}: beyond it the folded dead position passes the foot of the perpendicular from O to the guide and the crank cannot turn (l2 > l1 + e fails)",
-                        r.k
+                        show(r.k)
                     ),
                     Some(if lambda <= 1.0 { 1.0 + 1e-9 } else { top * (1.0 - 1e-9) }),
                 ));
@@ -159,8 +159,11 @@ pub fn synthesize(r: &CrankSliderRequest) -> Result<Synthesis, SynthesisError> {
                 return Err(SynthesisError::infeasible(
                     "offset",
                     format!(
-                        "the offset must lie in (0, H·cot θ = {e_max:.6} m) for H = {h} m and K = {}; {e} m was given",
-                        r.k
+                        "the offset must lie in (0, H·cot θ = {} m) for H = {} m and K = {}; {} m was given",
+                        show(e_max),
+                        show(h),
+                        show(r.k),
+                        show(e)
                     ),
                     Some(e.clamp(1e-9 * e_max, e_max * (1.0 - 1e-9))),
                 ));
@@ -207,9 +210,11 @@ pub fn synthesize(r: &CrankSliderRequest) -> Result<Synthesis, SynthesisError> {
                     return Err(SynthesisError::infeasible(
                         "max_pressure",
                         format!(
-                            "the largest pressure angle of a crank-slider with H = {h} m and K = {} is at least {:.4}° (at e = {em:.6} m); {:.4}° was given",
-                            r.k,
+                            "the largest pressure angle of a crank-slider with H = {} m and K = {} is at least {:.4}° (at e = {} m); {:.4}° was given",
+                            show(h),
+                            show(r.k),
                             gmin.asin().to_degrees(),
+                            show(em),
                             p.to_degrees()
                         ),
                         Some(gmin.asin()),
@@ -449,7 +454,7 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
     if lam <= 1.0 + le.abs() {
         return Err(SynthesisError::infeasible(
             "lambda",
-            format!("the crank turns fully only when λ2 > 1 + |λe| = {:.6}", 1.0 + le.abs()),
+            format!("the crank turns fully only when λ2 > 1 + |λe| = {}", show(1.0 + le.abs())),
             Some(1.0 + le.abs() + 1e-9),
         ));
     }
@@ -461,8 +466,9 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
         return Err(SynthesisError::infeasible(
             "travel",
             format!(
-                "the slider moves by {:.6}·l1 from φ1н to φ1к, so the travel must have that sign and not be zero; {hc} m was given",
-                den
+                "the slider moves by {:.6}·l1 from φ1н to φ1к, so the travel must have that sign and not be zero; {} m was given",
+                den,
+                show(hc)
             ),
             None,
         ));

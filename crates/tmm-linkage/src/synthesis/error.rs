@@ -38,7 +38,7 @@ pub enum SynthesisError {
 
 fn nearest_text(n: Option<f64>) -> String {
     match n {
-        Some(v) => format!(" (nearest feasible value: {v:.6})"),
+        Some(v) => format!(" (nearest feasible value: {})", show(v)),
         None => String::new(),
     }
 }
@@ -62,12 +62,49 @@ impl SynthesisError {
     }
 }
 
+/// A number for a message: six significant digits, in exponent form when it
+/// is very large or very small (a request may hold 1e300).
+///
+/// ```
+/// use tmm_linkage::synthesis::error::show;
+/// assert_eq!(show(1.2), "1.2");
+/// assert_eq!(show(0.30000000000000004), "0.3");
+/// assert_eq!(show(1e300), "1e300");
+/// assert_eq!(show(-2.5e-9), "-2.5e-9");
+/// ```
+pub fn show(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{}", if x == 0.0 { 0.0 } else { x });
+    }
+    let e = x.abs().log10().floor();
+    if !(-4.0..6.0).contains(&e) {
+        let t = format!("{x:.5e}");
+        let (m, ex) = t.split_once('e').unwrap_or((&t, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        return format!("{m}e{ex}");
+    }
+    let d = (5.0 - e).max(0.0) as usize;
+    let t = format!("{x:.d$}");
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    }
+}
+
 /// `Ok(x)` when `x` is finite and > 0, else an input error naming `field`.
 pub fn positive(field: &str, x: f64) -> Result<f64, SynthesisError> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(SynthesisError::input(field, format!("must be a finite positive number, got {x}")))
+        Err(SynthesisError::input(
+            field,
+            format!("must be a finite positive number, got {}", show(x)),
+        ))
     }
 }
 
@@ -76,6 +113,6 @@ pub fn finite(field: &str, x: f64) -> Result<f64, SynthesisError> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(SynthesisError::input(field, format!("must be a finite number, got {x}")))
+        Err(SynthesisError::input(field, format!("must be a finite number, got {}", show(x))))
     }
 }

@@ -118,7 +118,13 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
     if !(a.is_finite() && c.is_finite() && b2 > 0.0 && b2.is_finite()) {
         return Err(SynthesisError::infeasible(
             "positions",
-            format!("Freudenstein's coefficients K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6} give no real four-bar (b² = {b2:.6} m²)"),
+            format!(
+                "Freudenstein's coefficients K1 = {}, K2 = {}, K3 = {} give no real four-bar (b² = {} m²)",
+                super::error::show(k1),
+                super::error::show(k2),
+                super::error::show(k3),
+                super::error::show(b2)
+            ),
             None,
         ));
     }

@@ -100,8 +100,8 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
         return Err(SynthesisError::infeasible(
             "stroke",
             format!(
-                "the knee lifts the slide by less than {:.6} m from δ = {:.4}° while the rocker stays within 90° of the line CF",
-                h_max.max(0.0),
+                "the knee lifts the slide by less than {} m from δ = {:.4}° while the rocker stays within 90° of the line CF",
+                super::error::show(h_max.max(0.0)),
                 delta.to_degrees()
             ),
             Some(h_max.max(0.0) * (1.0 - 1e-6)),
@@ -210,7 +210,16 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
             extremes: [b1, b2],
             locus: locus.circle(b.side),
             pivot: b.o,
-            lines: vec![("guide".into(), c, fpos(b1))],
+            lines: {
+                let mut v = vec![("guide".into(), c, fpos(b1))];
+                // the seed's condition: the pivot on the vertical at l^x_CO from C
+                if let KneePivot::Horizontal(x) = r.pivot {
+                    let ys = [b1.y, b2.y, b.o.y, c.y];
+                    let (lo, hi) = ys.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, &y| (a.0.min(y), a.1.max(y)));
+                    v.push(("pivot line x = l_CO".into(), Vec2::new(x, lo), Vec2::new(x, hi)));
+                }
+                v
+            },
         },
         def,
         check,

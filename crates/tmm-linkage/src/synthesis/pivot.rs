@@ -240,15 +240,16 @@ pub fn choose(
     let what;
     match cond {
         PivotCondition::CrankLength(l1) => {
-            what = format!("the crank length l1 = {l1:.6} m");
+            what = format!("the crank length l1 = {} m", super::error::show(l1));
             if locus.theta == 0.0 {
                 // K = 1: every pivot has l1 = h; the crank length must be h
                 if (l1 - locus.h).abs() > 1e-9 * locus.h {
                     return Err(SynthesisError::infeasible(
                         field,
                         format!(
-                            "with K = 1 the crank pivot lies on the line of the extreme positions and the crank is half their distance, {:.6} m; {l1:.6} m was given",
-                            locus.h
+                            "with K = 1 the crank pivot lies on the line of the extreme positions and the crank is half their distance, {} m; {} m was given",
+                            super::error::show(locus.h),
+                            super::error::show(l1)
                         ),
                         Some(locus.h),
                     ));
@@ -268,7 +269,7 @@ pub fn choose(
             }
         }
         PivotCondition::FrameDistance(f) => {
-            what = format!("the frame distance |OD| = {f:.6} m");
+            what = format!("the frame distance |OD| = {} m", super::error::show(f));
             for side in [1.0, -1.0] {
                 for o in locus.meet_circle(side, d, f) {
                     if let Some(b) = ev(o) {

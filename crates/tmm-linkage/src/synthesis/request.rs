@@ -34,8 +34,40 @@ pub enum Request {
     SixBarPressure(PressureRequest),
 }
 
-/// Solve a request (each kind checks its result over the cycle).
+/// Solve a request (each kind checks its result over the cycle). When no
+/// mechanism meets it, the error's nearest feasible value is one that has
+/// been solved and checked with everything else unchanged, differs from the
+/// value asked for, and is rounded to few significant digits (in degrees for
+/// an angle) towards the feasible side ([`nearest_feasible`]).
+///
+/// ```
+/// use tmm_linkage::synthesis::{Request, SynthesisError, Drive, synthesize};
+/// use tmm_linkage::synthesis::crank_slider::{CrankSliderRequest, SliderCondition};
+/// // K = 3 is beyond every crank-slider; with λ2 = 3.5 the largest K is
+/// // that of θ = 2·arctan(1/√3.5) (docs/synthesis.md § 3)
+/// let r = Request::CrankSlider(CrankSliderRequest { stroke: 0.3, k: 3.0,
+///     condition: SliderCondition::Lambda(3.5), drive: Drive::default(), limits: Default::default() });
+/// let Err(SynthesisError::Infeasible { field, nearest: Some(k), .. }) = synthesize(&r) else { panic!() };
+/// let th = 2.0 * (1.0 / 3.5f64.sqrt()).atan();
+/// let k_max = (std::f64::consts::PI + th) / (std::f64::consts::PI - th);
+/// assert_eq!(field, "k");
+/// // (just below the bound the pressure angle reaches 90° and the check refuses)
+/// assert!(k < k_max && k > k_max - 2e-3);
+/// assert!(synthesize(&r.with_param("k", k).unwrap()).is_ok());
+/// ```
 pub fn synthesize(r: &Request) -> Result<Synthesis, SynthesisError> {
+    match solve(r) {
+        Err(SynthesisError::Infeasible { field, condition, nearest }) => {
+            let nearest = nearest_feasible(r, &field, nearest);
+            Err(SynthesisError::Infeasible { field, condition, nearest })
+        }
+        other => other,
+    }
+}
+
+/// Solve a request as its kind does, the nearest value of an infeasible
+/// request as the kind's own search gives it (not verified).
+pub fn solve(r: &Request) -> Result<Synthesis, SynthesisError> {
     match r {
         Request::CrankSlider(q) => crank_slider::synthesize(q),
         Request::TwoPositions(q) => crank_slider::by_two_positions(q),
@@ -48,6 +80,132 @@ pub fn synthesize(r: &Request) -> Result<Synthesis, SynthesisError> {
     }
 }
 
+/// `x` rounded to `digits` significant digits, up (towards +∞) or down.
+fn round_sig(x: f64, digits: i32, up: bool) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let e = x.abs().log10().floor() as i32;
+    let scale = 10f64.powi(digits - 1 - e);
+    let y = x * scale;
+    // a value that is already round stays (y may carry a rounding error of
+    // its own in the last bit)
+    let near = y.round();
+    let r = if (y - near).abs() <= 1e-9 * near.abs().max(1.0) {
+        near
+    } else if up {
+        y.ceil()
+    } else {
+        y.floor()
+    };
+    r / scale
+}
+
+/// Whether the number `name` of a request is an angle (rounded in degrees).
+fn is_angle(r: &Request, name: &str) -> bool {
+    match name {
+        "swing" | "frame_angle" | "max_pressure" | "delta" | "phi_start" | "phi_end" | "arm_angle" | "extreme_pressure"
+        | "pivot_max_pressure" | "pressure_working" | "pressure_return" | "transmission_min" => true,
+        "pivot" => matches!(
+            r,
+            Request::SixBarInversion(InversionRequest {
+                pivot: PivotCondition::MaxPressure(_) | PivotCondition::ExtremePressure(_),
+                ..
+            }) | Request::SixBarPressure(PressureRequest {
+                pivot: PivotCondition::MaxPressure(_) | PivotCondition::ExtremePressure(_),
+                ..
+            })
+        ),
+        _ => false,
+    }
+}
+
+/// The nearest feasible value of the number an infeasibility error names:
+/// starting from the kind's own estimate `raw`, rounded away from the value
+/// asked for to 4, 3, 2, then 5…12 significant digits, the first that
+/// differs from the request and for which the request, solved again with
+/// that value and everything else unchanged, passes its whole check. When no
+/// rounding of the estimate works: for K, a bisection between the request
+/// and a feasible K found below it; for any other number, a walk on from
+/// the estimate away from the request in doubling steps (1e-4 of its size
+/// first) to a value that works, a bisection back to the edge, then the same
+/// rounding. `None` when no such value is found.
+pub fn nearest_feasible(r: &Request, field: &str, raw: Option<f64>) -> Option<f64> {
+    let name = r.param_name(field)?;
+    let asked = r.value(name)?;
+    let works = |v: f64| v != asked && r.with_param(name, v).is_ok_and(|q| solve(&q).is_ok());
+    let angle = is_angle(r, name);
+    let (to_user, from_user) = if angle {
+        (f64::to_degrees as fn(f64) -> f64, f64::to_radians as fn(f64) -> f64)
+    } else {
+        ((|x| x) as fn(f64) -> f64, (|x| x) as fn(f64) -> f64)
+    };
+    let polish = |raw: f64| -> Option<f64> {
+        if !raw.is_finite() || raw == asked {
+            return None;
+        }
+        let up = raw > asked;
+        for digits in [4, 3, 2, 5, 6, 7, 8, 9, 10, 11, 12] {
+            let v = from_user(round_sig(to_user(raw), digits, up));
+            if works(v) {
+                return Some(v);
+            }
+        }
+        works(raw).then_some(raw)
+    };
+    if let Some(v) = raw.and_then(polish) {
+        return Some(v);
+    }
+    if name == "k" {
+        if !(asked.is_finite() && asked > 1.0) {
+            return None;
+        }
+        // K: a feasible value below the request, then bisection towards it
+        // on t = (K − 1)/(K + 1) = θ/π, which stays in [0, 1) for any K
+        let k_of = |t: f64| (1.0 + t) / (1.0 - t);
+        let t_asked = (asked - 1.0) / (asked + 1.0);
+        let lo = [0.5, 0.25, 0.125, 0.0625, 0.03125, 0.0]
+            .into_iter()
+            .map(|f| f * t_asked)
+            .find(|&t| works(k_of(t)))?;
+        let t = bisect(lo, t_asked, |t| works(k_of(t)));
+        return polish(k_of(t)).or(Some(k_of(t)));
+    }
+    // the estimate is not a bound that works (the kind's estimate ignores a
+    // condition checked later): walk on from it, away from the request, in
+    // doubling steps to the first value that works, then bisect back
+    let raw = raw.filter(|x| x.is_finite() && *x != asked)?;
+    let dir = (raw - asked).signum();
+    let scale = raw.abs().max(asked.abs()).max(f64::MIN_POSITIVE);
+    let mut fail = raw;
+    for j in 0..24 {
+        let v = raw + dir * scale * 1e-4 * 2f64.powi(j);
+        if works(v) {
+            let v = bisect(v, fail, works);
+            return polish(v).or(Some(v));
+        }
+        fail = v;
+    }
+    None
+}
+
+/// Bisection between `good` (where `ok` holds) and `bad` (where it does
+/// not): the last value where it holds.
+fn bisect(mut good: f64, mut bad: f64, ok: impl Fn(f64) -> bool) -> f64 {
+    for _ in 0..52 {
+        let mid = 0.5 * (good + bad);
+        if mid == good || mid == bad {
+            break;
+        }
+        if ok(mid) {
+            good = mid;
+        } else {
+            bad = mid;
+        }
+    }
+    good
+}
+
 fn pivot_value(p: &mut PivotCondition) -> Option<&mut f64> {
     match p {
         PivotCondition::CrankLength(x)
@@ -58,8 +216,152 @@ fn pivot_value(p: &mut PivotCondition) -> Option<&mut f64> {
     }
 }
 
+/// The number a six-bar's pivot condition of this name holds, or the
+/// condition with that number.
+fn pivot_named<'a>(p: &'a mut PivotCondition, name: &str, set: Option<f64>) -> Option<Option<&'a mut f64>> {
+    let make: fn(f64) -> PivotCondition = match name {
+        "crank" => PivotCondition::CrankLength,
+        "frame" => PivotCondition::FrameDistance,
+        "pivot_max_pressure" => PivotCondition::MaxPressure,
+        "extreme_pressure" => PivotCondition::ExtremePressure,
+        _ => return None,
+    };
+    if let Some(v) = set {
+        *p = make(v);
+        return Some(None);
+    }
+    let active = matches!(
+        (name, &*p),
+        ("crank", PivotCondition::CrankLength(_))
+            | ("frame", PivotCondition::FrameDistance(_))
+            | ("pivot_max_pressure", PivotCondition::MaxPressure(_))
+            | ("extreme_pressure", PivotCondition::ExtremePressure(_))
+    );
+    Some(if active { pivot_value(p) } else { None })
+}
+
+/// The slot of a number of a request, or `None` when the request has no
+/// such number or its condition is another one. With `set`, a name that
+/// selects an extra condition switches to it with that value (and gives no
+/// slot). `Err(())`: not a name of this kind.
+fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&'a mut f64>, ()> {
+    if matches!(name, "pressure_working" | "pressure_return" | "transmission_min") {
+        let limits = match r {
+            Request::CrankSlider(q) => &mut q.limits,
+            Request::TwoPositions(q) => &mut q.limits,
+            Request::CrankRocker(q) => &mut q.limits,
+            Request::Function(q) => &mut q.limits,
+            Request::Slotted(q) => &mut q.limits,
+            Request::Knee(q) => &mut q.limits,
+            Request::SixBarInversion(q) => &mut q.limits,
+            Request::SixBarPressure(q) => &mut q.limits,
+        };
+        let l = match name {
+            "pressure_working" => &mut limits.pressure_working,
+            "pressure_return" => &mut limits.pressure_return,
+            _ => &mut limits.transmission_min,
+        };
+        if let Some(v) = set {
+            *l = Some(v);
+        }
+        return Ok(l.as_mut());
+    }
+    // a condition's number: switch to it, or its value when it is the one
+    macro_rules! cond {
+        ($c:expr, $variant:path) => {{
+            if let Some(v) = set {
+                $c = $variant(v);
+                return Ok(None);
+            }
+            match &mut $c {
+                $variant(x) => Some(x),
+                _ => None,
+            }
+        }};
+    }
+    Ok(match r {
+        Request::CrankSlider(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "lambda" => cond!(q.condition, SliderCondition::Lambda),
+            "offset" => cond!(q.condition, SliderCondition::Offset),
+            "max_pressure" => cond!(q.condition, SliderCondition::MaxPressure),
+            _ => return Err(()),
+        },
+        Request::TwoPositions(q) => match name {
+            "lambda" => Some(&mut q.lambda),
+            "lambda_e" => Some(&mut q.lambda_e),
+            "phi_start" => Some(&mut q.phi_start),
+            "phi_end" => Some(&mut q.phi_end),
+            "travel" => Some(&mut q.travel),
+            _ => return Err(()),
+        },
+        Request::CrankRocker(q) => match name {
+            "k" => Some(&mut q.k),
+            "rocker" => Some(&mut q.rocker),
+            "swing" => Some(&mut q.swing),
+            "crank" => cond!(q.condition, RockerCondition::Crank),
+            "frame" => cond!(q.condition, RockerCondition::Frame),
+            "frame_angle" => cond!(q.condition, RockerCondition::FrameAngle),
+            _ => return Err(()),
+        },
+        Request::Function(q) => match name {
+            "frame" => Some(&mut q.frame),
+            _ => return Err(()),
+        },
+        Request::Slotted(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "pivots" => Some(&mut q.pivots),
+            "coupler" => match &mut q.coupler {
+                Coupler::Ratio(x) | Coupler::Length(x) => Some(x),
+            },
+            _ => return Err(()),
+        },
+        Request::Knee(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "rocker" => Some(&mut q.rocker),
+            "link" => Some(&mut q.link),
+            "delta" => Some(&mut q.delta),
+            "horizontal" => cond!(q.pivot, KneePivot::Horizontal),
+            "crank" => cond!(q.pivot, KneePivot::Crank),
+            "frame" => cond!(q.pivot, KneePivot::Frame),
+            "pivot" => match &mut q.pivot {
+                KneePivot::Horizontal(x) | KneePivot::Crank(x) | KneePivot::Frame(x) => Some(x),
+                KneePivot::Optimum => None,
+            },
+            _ => return Err(()),
+        },
+        Request::SixBarInversion(q) => match name {
+            "k" => Some(&mut q.k),
+            "travel" => Some(&mut q.travel),
+            "guide" => Some(&mut q.guide),
+            "start" => Some(&mut q.start),
+            "coupler" => Some(&mut q.coupler),
+            "swing" => Some(&mut q.swing),
+            "lever" => Some(&mut q.lever),
+            "pivot" => pivot_value(&mut q.pivot),
+            n => pivot_named(&mut q.pivot, n, set).ok_or(())?,
+        },
+        Request::SixBarPressure(q) => match name {
+            "k" => Some(&mut q.k),
+            "swing" => Some(&mut q.swing),
+            "arm_b" => Some(&mut q.arm_b),
+            "arm_c" => Some(&mut q.arm_c),
+            "guide" => Some(&mut q.guide),
+            "max_pressure" => Some(&mut q.max_pressure),
+            "pivot" => pivot_value(&mut q.pivot),
+            n => pivot_named(&mut q.pivot, n, set).ok_or(())?,
+        },
+    })
+}
+
 impl Request {
     /// The names a sweep may vary for this kind (SI values, angles in rad).
+    /// A name of an extra condition (`lambda` of a crank-slider, `crank` of a
+    /// crank-rocker, …) switches the request to that condition, so it needs
+    /// not be the one given.
     pub fn params(&self) -> &'static [&'static str] {
         match self {
             Request::CrankSlider(_) => &["stroke", "k", "lambda", "offset", "max_pressure"],
@@ -67,111 +369,86 @@ impl Request {
             Request::CrankRocker(_) => &["k", "rocker", "swing", "crank", "frame", "frame_angle"],
             Request::Function(_) => &["frame"],
             Request::Slotted(_) => &["stroke", "k", "pivots", "coupler"],
-            Request::Knee(_) => &["stroke", "k", "rocker", "link", "delta", "pivot"],
-            Request::SixBarInversion(_) => &["k", "travel", "guide", "start", "coupler", "swing", "lever", "pivot"],
-            Request::SixBarPressure(_) => &["k", "swing", "arm_b", "arm_c", "guide", "max_pressure", "pivot"],
+            Request::Knee(_) => &["stroke", "k", "rocker", "link", "delta", "horizontal", "crank", "frame", "pivot"],
+            Request::SixBarInversion(_) => &[
+                "k",
+                "travel",
+                "guide",
+                "start",
+                "coupler",
+                "swing",
+                "lever",
+                "crank",
+                "frame",
+                "pivot_max_pressure",
+                "extreme_pressure",
+                "pivot",
+            ],
+            Request::SixBarPressure(_) => &[
+                "k",
+                "swing",
+                "arm_b",
+                "arm_c",
+                "guide",
+                "max_pressure",
+                "crank",
+                "frame",
+                "pivot_max_pressure",
+                "extreme_pressure",
+                "pivot",
+            ],
         }
     }
 
-    /// The same request with the number `name` set to `value`. Setting the
-    /// value of an extra condition switches to that condition.
+    /// Whether `name` selects an extra condition (setting it switches the
+    /// request to that condition).
+    pub fn is_condition(&self, name: &str) -> bool {
+        matches!(
+            (self, name),
+            (Request::CrankSlider(_), "lambda" | "offset" | "max_pressure")
+                | (Request::CrankRocker(_), "crank" | "frame" | "frame_angle")
+                | (Request::Knee(_), "horizontal" | "crank" | "frame")
+                | (
+                    Request::SixBarInversion(_) | Request::SixBarPressure(_),
+                    "crank" | "frame" | "pivot_max_pressure" | "extreme_pressure"
+                )
+        )
+    }
+
+    /// The value of the number `name` (a name of [`Request::params`] or a
+    /// limit: `pressure_working`, `pressure_return`, `transmission_min`), SI;
+    /// `None` when the request does not hold it (another condition, no limit).
+    pub fn value(&self, name: &str) -> Option<f64> {
+        let mut r = self.clone();
+        slot(&mut r, name, None).ok().flatten().map(|x| *x)
+    }
+
+    /// The name of [`Request::value`] for a field an error of this request
+    /// names (`limits.pressure_working` → `pressure_working`, a knee press's
+    /// `pivot.horizontal` → `horizontal`).
+    pub fn param_name<'a>(&self, field: &'a str) -> Option<&'a str> {
+        let f = field.strip_prefix("limits.").unwrap_or(field);
+        let f = match (self, f) {
+            (Request::Knee(_), p) => p.strip_prefix("pivot.").unwrap_or(p),
+            (_, p) => p,
+        };
+        self.value(f).is_some().then_some(f)
+    }
+
+    /// The same request with the number `name` set to `value` (a name of
+    /// [`Request::params`] or a limit). Setting the value of an extra
+    /// condition switches to that condition.
     pub fn with_param(&self, name: &str, value: f64) -> Result<Request, SynthesisError> {
         let mut r = self.clone();
-        let slot: Option<&mut f64> = match &mut r {
-            Request::CrankSlider(q) => match name {
-                "stroke" => Some(&mut q.stroke),
-                "k" => Some(&mut q.k),
-                "lambda" => {
-                    q.condition = SliderCondition::Lambda(value);
-                    None
-                }
-                "offset" => {
-                    q.condition = SliderCondition::Offset(value);
-                    None
-                }
-                "max_pressure" => {
-                    q.condition = SliderCondition::MaxPressure(value);
-                    None
-                }
-                _ => return Err(unknown(name, self)),
-            },
-            Request::TwoPositions(q) => match name {
-                "lambda" => Some(&mut q.lambda),
-                "lambda_e" => Some(&mut q.lambda_e),
-                "phi_start" => Some(&mut q.phi_start),
-                "phi_end" => Some(&mut q.phi_end),
-                "travel" => Some(&mut q.travel),
-                _ => return Err(unknown(name, self)),
-            },
-            Request::CrankRocker(q) => match name {
-                "k" => Some(&mut q.k),
-                "rocker" => Some(&mut q.rocker),
-                "swing" => Some(&mut q.swing),
-                "crank" => {
-                    q.condition = RockerCondition::Crank(value);
-                    None
-                }
-                "frame" => {
-                    q.condition = RockerCondition::Frame(value);
-                    None
-                }
-                "frame_angle" => {
-                    q.condition = RockerCondition::FrameAngle(value);
-                    None
-                }
-                _ => return Err(unknown(name, self)),
-            },
-            Request::Function(q) => match name {
-                "frame" => Some(&mut q.frame),
-                _ => return Err(unknown(name, self)),
-            },
-            Request::Slotted(q) => match name {
-                "stroke" => Some(&mut q.stroke),
-                "k" => Some(&mut q.k),
-                "pivots" => Some(&mut q.pivots),
-                "coupler" => match &mut q.coupler {
-                    Coupler::Ratio(x) | Coupler::Length(x) => Some(x),
-                },
-                _ => return Err(unknown(name, self)),
-            },
-            Request::Knee(q) => match name {
-                "stroke" => Some(&mut q.stroke),
-                "k" => Some(&mut q.k),
-                "rocker" => Some(&mut q.rocker),
-                "link" => Some(&mut q.link),
-                "delta" => Some(&mut q.delta),
-                "pivot" => match &mut q.pivot {
-                    KneePivot::Horizontal(x) | KneePivot::Crank(x) | KneePivot::Frame(x) => Some(x),
-                    KneePivot::Optimum => return Err(no_value(name)),
-                },
-                _ => return Err(unknown(name, self)),
-            },
-            Request::SixBarInversion(q) => match name {
-                "k" => Some(&mut q.k),
-                "travel" => Some(&mut q.travel),
-                "guide" => Some(&mut q.guide),
-                "start" => Some(&mut q.start),
-                "coupler" => Some(&mut q.coupler),
-                "swing" => Some(&mut q.swing),
-                "lever" => Some(&mut q.lever),
-                "pivot" => Some(pivot_value(&mut q.pivot).ok_or_else(|| no_value(name))?),
-                _ => return Err(unknown(name, self)),
-            },
-            Request::SixBarPressure(q) => match name {
-                "k" => Some(&mut q.k),
-                "swing" => Some(&mut q.swing),
-                "arm_b" => Some(&mut q.arm_b),
-                "arm_c" => Some(&mut q.arm_c),
-                "guide" => Some(&mut q.guide),
-                "max_pressure" => Some(&mut q.max_pressure),
-                "pivot" => Some(pivot_value(&mut q.pivot).ok_or_else(|| no_value(name))?),
-                _ => return Err(unknown(name, self)),
-            },
-        };
-        if let Some(s) = slot {
-            *s = value;
+        match slot(&mut r, name, Some(value)) {
+            Err(()) => Err(unknown(name, self)),
+            Ok(Some(s)) => {
+                *s = value;
+                Ok(r)
+            }
+            Ok(None) if self.is_condition(name) || name.starts_with("pressure_") || name == "transmission_min" => Ok(r),
+            Ok(None) => Err(no_value(name)),
         }
-        Ok(r)
     }
 }
 

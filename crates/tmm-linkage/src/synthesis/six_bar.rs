@@ -93,8 +93,8 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
         return Err(SynthesisError::infeasible(
             "coupler",
             format!(
-                "the coupler ED must be longer than half the distance |E′E″ᵢ| = {:.6} m between the slider's start and its inverted end",
-                0.5 * dd
+                "the coupler ED must be longer than half the distance |E′E″ᵢ| = {} m between the slider's start and its inverted end",
+                super::error::show(0.5 * dd)
             ),
             Some(0.5 * dd * (1.0 + 1e-6)),
         ));
@@ -221,7 +221,23 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
             extremes: [b1, b2],
             locus: locus.circle(b.side),
             pivot: b.o,
-            lines: vec![("E'-D'".into(), e1, d1), ("E''i-D'".into(), e2i, d1), ("E''-D''".into(), e2, d2)],
+            lines: {
+                let mut v = vec![
+                    ("E'-D'".into(), e1, d1),
+                    ("E''i-D'".into(), e2i, d1),
+                    ("E''-D''".into(), e2, d2),
+                    (
+                        "guide".into(),
+                        Vec2::new(0.0f64.min(e1.x).min(e2.x), yg),
+                        Vec2::new(0.0f64.max(e1.x).max(e2.x), yg),
+                    ),
+                ];
+                // the seed's condition: the crank pivot on a given line
+                if let PivotCondition::OnLine { point, .. } = r.pivot {
+                    v.push(("pivot line".into(), point, b.o));
+                }
+                v
+            },
         },
         def,
         check,

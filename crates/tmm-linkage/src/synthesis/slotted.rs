@@ -109,7 +109,10 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
     if lcd <= reach {
         return Err(SynthesisError::infeasible(
             "coupler",
-            format!("the coupler CD must be longer than {reach:.6} m to reach the ram's guide from every position of C"),
+            format!(
+                "the coupler CD must be longer than {} m to reach the ram's guide from every position of C",
+                super::error::show(reach)
+            ),
             Some(reach * (1.0 + 1e-6)),
         ));
     }

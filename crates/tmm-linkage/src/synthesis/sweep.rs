@@ -5,7 +5,7 @@
 //! the others fail.
 
 use super::error::SynthesisError;
-use super::request::{Request, synthesize};
+use super::request::{Request, solve};
 
 /// One row of the table of a feasible variant.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,7 +32,19 @@ pub struct Variant {
     pub outcome: Result<VariantRow, SynthesisError>,
 }
 
+fn without_nearest(e: SynthesisError) -> SynthesisError {
+    match e {
+        SynthesisError::Infeasible { field, condition, .. } => SynthesisError::Infeasible {
+            field,
+            condition,
+            nearest: None,
+        },
+        other => other,
+    }
+}
+
 /// Sweep `param` over `from..=to` in `n` values (n ≥ 1; n = 1 gives `from`).
+/// A name of an extra condition switches every variant to that condition.
 ///
 /// ```
 /// use tmm_linkage::synthesis::{request::Request, sweep::sweep, crank_slider::*, Drive};
@@ -57,13 +69,20 @@ pub fn sweep(base: &Request, param: &str, from: f64, to: f64, n: usize) -> Resul
             } else {
                 from + (to - from) * i as f64 / (n - 1) as f64
             };
-            let outcome = base.with_param(param, value).and_then(|r| synthesize(&r)).map(|s| VariantRow {
-                size: s.overall_size(),
-                lengths: s.lengths,
-                k: s.check.k,
-                pressure_angle_max: s.check.pressure_angle_max,
-                transmission_angle_min: s.check.transmission_angle_min,
-            });
+            // an infeasible variant names the condition that fails; the
+            // nearest feasible value of one variant is not searched for (the
+            // table itself shows where the feasible values are)
+            let outcome = base
+                .with_param(param, value)
+                .and_then(|r| solve(&r))
+                .map_err(without_nearest)
+                .map(|s| VariantRow {
+                    size: s.overall_size(),
+                    lengths: s.lengths,
+                    k: s.check.k,
+                    pressure_angle_max: s.check.pressure_angle_max,
+                    transmission_angle_min: s.check.transmission_angle_min,
+                });
             Variant { value, outcome }
         })
         .collect())

@@ -12,5 +12,6 @@ mod properties;
 mod synthesis_crank_rocker;
 mod synthesis_crank_slider;
 mod synthesis_kinds;
+mod synthesis_nearest;
 mod synthesis_proptest;
 mod synthesis_seeds;

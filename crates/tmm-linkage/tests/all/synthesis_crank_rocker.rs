@@ -63,13 +63,23 @@ fn random_crank_rockers_come_back() {
             rotation: if i % 2 == 0 { Rotation::Ccw } else { Rotation::Cw },
             omega: 1.0,
         };
+        // every other pair of requests adds a transmission-angle limit the
+        // original meets (a little below its own)
+        let limits = if i % 4 >= 2 {
+            Limits {
+                transmission_min: Some(gmin - 1e-4 - 0.05 * rng.uniform()),
+                ..Limits::default()
+            }
+        } else {
+            Limits::default()
+        };
         let s = synthesize(&CrankRockerRequest {
             k,
             rocker: c,
             swing,
             condition,
             drive,
-            limits: Limits::default(),
+            limits,
         })
         .unwrap_or_else(|e| panic!("{i}: a {a} b {b} c {c} d {d}: {e}"));
         assert!((s.check.k.unwrap() - k).abs() < 1e-9, "{i}");
@@ -78,6 +88,20 @@ fn random_crank_rockers_come_back() {
             RockerCondition::Crank(x) => assert!((s.length("OA").unwrap() - x).abs() < 1e-9 * x),
             RockerCondition::Frame(x) => assert!((s.length("OC").unwrap() - x).abs() < 1e-9 * x),
             _ => {}
+        }
+        // the result analysed afresh from its lengths by the closed forms:
+        // K and the swing to 1e-9, the transmission angle against the limit
+        let (a2, b2, d2) = (s.length("OA").unwrap(), s.length("AB").unwrap(), s.length("OC").unwrap());
+        let (k2, swing2, _, g2) = closed_form(a2, b2, c, d2);
+        assert!((k2 - k).abs() < 1e-9 * k, "{i}: K {k2} vs {k}");
+        assert!((swing2 - swing).abs() < 1e-9, "{i}: swing {swing2} vs {swing}");
+        assert!(
+            (g2 - s.check.transmission_angle_min).abs() < 1e-9,
+            "{i}: γmin {g2} vs {}",
+            s.check.transmission_angle_min
+        );
+        if let Some(l) = limits.transmission_min {
+            assert!(g2 >= l - 1e-9, "{i}: γmin {g2} below the limit {l}");
         }
         assert!(
             s.check.transmission_angle_min >= gmin - 1e-7,

@@ -152,14 +152,24 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
     let view: Box4 = (b.0 - margin, b.1 + margin, b.2 - margin, b.3 + margin);
     let mut world = (b.0 - 0.05 * size, b.1 + 0.05 * size, b.2 - 0.05 * size, b.3 + 0.05 * size);
     if let Some(l) = &k.locus {
+        // the course draws the centre O* that sees the chord at 2θ: when it
+        // lies within one size of the mechanism and the circle is no larger
+        // than the mechanism, the view takes the whole circle in
+        let wide: Box4 = (b.0 - size, b.1 + size, b.2 - size, b.3 + size);
+        let everything: Box4 = (f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY);
+        let circle_view = if inside(wide, l.center) && l.radius <= size {
+            everything
+        } else {
+            view
+        };
         for i in 0..720 {
             let a = i as f64 * std::f64::consts::TAU / 720.0;
             let p = l.center + Vec2::new(a.cos(), a.sin()) * l.radius;
-            if inside(view, p) {
+            if inside(circle_view, p) {
                 world = grow(world, p);
             }
         }
-        if inside(view, l.center) {
+        if inside(circle_view, l.center) {
             world = grow(world, l.center);
         }
     }
@@ -316,8 +326,22 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
     }
     c.dot(xy(k.pivot), 1.0, RED);
     // ---- then the labels, each placed clear of the lines and the others ----
-    for (i, p) in k.extremes.iter().enumerate() {
-        labels.push((xy(*p), format!("{}{}", k.point, if i == 0 { "′" } else { "″" }), colors[i]));
+    // ′ (blue) marks the extreme position drawn in blue, the one that starts
+    // the working stroke (the first dead position the core found)
+    let first = shown
+        .first()
+        .and_then(|pos| pos.iter().find(|(n, _)| *n == k.point))
+        .map(|(_, p)| *p);
+    let order = match first {
+        Some(p) if (p - k.extremes[1]).hypot() < (p - k.extremes[0]).hypot() => [1, 0],
+        _ => [0, 1],
+    };
+    for (i, &j) in order.iter().enumerate() {
+        labels.push((
+            xy(k.extremes[j]),
+            format!("{}{}", k.point, if i == 0 { "′" } else { "″" }),
+            colors[i],
+        ));
     }
     for (n, p) in &y.frame {
         let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
@@ -350,7 +374,13 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
 pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String, Error> {
     let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let m = Mechanism::new(&s.syn.def).map_err(|e| Error::input("synthesis", e))?;
-    let cy = Cycle::new(&m, Working::Slower).map_err(|e| Error::input("synthesis", e))?;
+    // K = 1 (an axial crank-slider): neither stroke is the slower one; the
+    // working stroke is then the one on which the output coordinate grows,
+    // as in the check (tmm_linkage::synthesis::check)
+    let cy = match Cycle::new(&m, Working::Slower) {
+        Ok(c) => c,
+        Err(e) => Cycle::new(&m, Working::Increasing).map_err(|_| Error::input("synthesis", e))?,
+    };
     let mut sol = m.solution();
     let mut out = Vec::new();
     let mut curves: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();
@@ -366,8 +396,36 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
             }
         }
     }
-    let top = curves.iter().flat_map(|c| c.1.iter().map(|p| p.1)).fold(0.0_f64, f64::max);
     let w = cy.working_angle.to_degrees();
+    // the allowed angles on each stroke, when the request gives them
+    let q = &s.spec.request;
+    let limits = tmm_linkage::synthesis::Limits {
+        pressure_working: q.value("pressure_working"),
+        pressure_return: q.value("pressure_return"),
+        transmission_min: q.value("transmission_min"),
+    };
+    let (lw, lr) = limits.pressure();
+    // one step line: [ϑ]w over the working stroke, [ϑ]r over the return
+    let mut lim: Vec<(f64, f64)> = Vec::new();
+    if let Some(l) = lw {
+        lim.extend([(0.0, l.to_degrees()), (w, l.to_degrees())]);
+    }
+    match lr {
+        Some(l) => lim.extend([(w, l.to_degrees()), (360.0, l.to_degrees())]),
+        None if !lim.is_empty() => lim.push((f64::NAN, f64::NAN)),
+        None => {}
+    }
+    let data_top = curves
+        .iter()
+        .flat_map(|c| c.1.iter().map(|p| p.1))
+        .chain(lim.iter().map(|p| p.1).filter(|y| y.is_finite()))
+        .fold(0.0_f64, f64::max);
+    // the legend sits over the top of the plot, one 4.5 mm row per series:
+    // the end-of-stroke line reaches high enough to keep the curves below it
+    let (_, ph_mm) = slot_mm(Slot::Diagram, sheet);
+    let rows = curves.len() + 1 + usize::from(!lim.is_empty());
+    let free = 1.0 - (4.5 * rows as f64 + 2.0) / (ph_mm - 30.0);
+    let top = if free > 0.3 { data_top / free } else { data_top };
     let marker = [(w, 0.0), (w, top)];
     let names: Vec<String> = curves.iter().map(|c| format!("ϑ {}", m.points[c.0].name)).collect();
     let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
@@ -386,6 +444,14 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
         points: &marker,
         color: GREY,
     });
+    let lim_name = wd("limit");
+    if !lim.is_empty() {
+        series.push(Series {
+            name: &lim_name,
+            points: &lim,
+            color: "#000",
+        });
+    }
     let (w, h) = slot_mm(Slot::Diagram, sheet);
     Ok(plot_in(
         lang,

@@ -62,6 +62,38 @@ pub fn show(dim: Dim, v: f64) -> String {
     }
 }
 
+/// A number with up to 10 significant digits and no trailing zeros (a
+/// nearest feasible value is already rounded to a few digits by the core).
+///
+/// ```
+/// assert_eq!(tmm_report::synthesis::tidy(122.39999999999999), "122.4");
+/// assert_eq!(tmm_report::synthesis::tidy(2.0), "2");
+/// assert_eq!(tmm_report::synthesis::tidy(-0.000125), "-0.000125");
+/// ```
+pub fn tidy(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{}", if x == 0.0 { 0.0 } else { x });
+    }
+    let d = (9 - x.abs().log10().floor() as i32).clamp(0, 17) as usize;
+    let s = format!("{x:.d$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// A value of dimension `dim` in the user's units (mm, degrees), tidied.
+pub fn show_tidy(dim: Dim, v: f64) -> String {
+    match dim {
+        Dim::Length => format!("{} mm", tidy(v * 1e3)),
+        Dim::Angle => format!("{}°", tidy(v.to_degrees())),
+        Dim::AngularVelocity => format!("{} rad/s", tidy(v)),
+        Dim::Velocity => format!("{} m/s", tidy(v)),
+        _ => tidy(v),
+    }
+}
+
 /// The dimension of a name of the core's `given` list.
 pub fn given_dim(spec: &Spec, name: &str) -> Dim {
     if name.starts_with("phi") || name.starts_with("psi") {
@@ -106,12 +138,18 @@ pub fn locate(spec: &Spec, f: &Fields, e: &SynthesisError) -> Error {
             match nearest {
                 Some(v) => {
                     let dim = given_dim(spec, if key == "kind" { field } else { &key });
-                    err.with_help(format!("nearest feasible value of {}: {}", f.label(&key), show(dim, *v)))
+                    err.with_help(format!(
+                        "nearest feasible value of {} (the rest unchanged): {}",
+                        f.label(&key),
+                        show_tidy(dim, *v)
+                    ))
                 }
                 None => err.with_help("change the given data (docs/synthesis.md states each kind's conditions)"),
             }
         }
-        other => f.error("kind", other),
+        other => f.error("kind", other).with_help(
+            "the linkage core refuses the mechanism the synthesis gives, for the reason above: the data lie beyond what it analyses (a length out of range) or at the edge of what this mechanism can do (a group at its dead centre: a pressure angle of 90°); move the data away from that edge",
+        ),
     }
 }
 
@@ -122,7 +160,15 @@ pub fn solve(f: &Fields) -> Result<Solved, Error> {
     for (i, g) in spec.extra_given.iter().enumerate() {
         syn.given.insert(i, g.clone());
     }
-    let linkage = linkage_toml(&syn.def)?;
+    let mut linkage = linkage_toml(&syn.def)?;
+    // K = 1 (an axial crank-slider): both strokes take 180°, so the
+    // [linkage] must say which one works, as the check took it
+    if let Ok(m) = tmm_linkage::Mechanism::new(&syn.def)
+        && Cycle::new(&m, Working::Slower).is_err()
+        && Cycle::new(&m, Working::Increasing).is_ok()
+    {
+        linkage = linkage.replacen("[linkage]\n", "[linkage]\nworking = \"increasing\"\n", 1);
+    }
     Ok(Solved { spec, syn, linkage })
 }
 

@@ -122,11 +122,13 @@ impl Fields {
         }))
     }
 
-    /// How the user names a key: `synthesis.max_pressure` or `--max-pressure`.
+    /// How the user names a key: `synthesis.max_pressure` or `--max-pressure`
+    /// (the kind, a subcommand on the command line: `tmm synth KIND`).
     pub fn label(&self, key: &str) -> String {
-        match self.src {
-            Some(_) => format!("synthesis.{key}"),
-            None => format!("--{}", key.replace('_', "-")),
+        match (&self.src, self.map.get("kind")) {
+            (Some(_), _) => format!("synthesis.{key}"),
+            (None, Some((RawField::Text(k), _))) if key == "kind" => format!("tmm synth {k}"),
+            (None, _) => format!("--{}", key.replace('_', "-")),
         }
     }
 
@@ -413,6 +415,9 @@ fn limits(f: &Fields) -> Result<Limits, Error> {
     })
 }
 
+/// The fields that fix a six-bar's crank pivot by a number.
+const SIX_BAR_PIVOTS: [&str; 4] = ["crank", "frame", "pivot_max_pressure", "extreme_pressure"];
+
 /// The crank pivot condition of a six-bar.
 fn pivot_condition(f: &Fields) -> Result<(PivotCondition, Option<&'static str>), Error> {
     let k = f.one_of(
@@ -469,6 +474,15 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
     let limits = limits(f)?;
     let mut extra_given = Vec::new();
     let mut condition_key = None;
+    // a swept extra condition needs not be given: the sweep sets it
+    let swept: Option<String> = match f.map.get("sweep") {
+        Some((RawField::Text(t), _)) => t.split_once('=').map(|(p, _)| p.trim().to_string()),
+        _ => None,
+    };
+    let swept_of = |keys: &[&'static str]| -> Option<&'static str> {
+        let p = swept.as_deref()?;
+        keys.iter().copied().find(|k| *k == p && *k != "optimum")
+    };
     let request = match kind {
         "crank-slider" => {
             let k = f.need("k", Dim::Ratio)?;
@@ -487,11 +501,17 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
                 }
                 _ => f.need("stroke", Dim::Length)?,
             };
-            condition_key = f.one_of(&["lambda", "offset", "max_pressure", "optimum"], false)?;
+            let keys = ["lambda", "offset", "max_pressure", "optimum"];
+            condition_key = f.one_of(&keys, swept_of(&keys).is_some())?;
             let condition = match condition_key {
                 Some("lambda") => SliderCondition::Lambda(f.need("lambda", Dim::Ratio)?),
                 Some("offset") => SliderCondition::Offset(f.need("offset", Dim::Length)?),
                 Some("max_pressure") => SliderCondition::MaxPressure(f.need("max_pressure", Dim::Angle)?),
+                None => {
+                    // set below to the sweep's first value
+                    condition_key = swept_of(&keys);
+                    SliderCondition::Optimum
+                }
                 _ => {
                     f.flag("optimum")?;
                     SliderCondition::Optimum
@@ -518,11 +538,16 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             let k = f.need("k", Dim::Ratio)?;
             let swing = f.need("swing", Dim::Angle)?;
             let rocker = f.need("rocker", Dim::Length)?;
-            condition_key = f.one_of(&["crank", "frame", "frame_angle", "optimum"], false)?;
+            let keys = ["crank", "frame", "frame_angle", "optimum"];
+            condition_key = f.one_of(&keys, swept_of(&keys).is_some())?;
             let condition = match condition_key {
                 Some("crank") => RockerCondition::Crank(f.need("crank", Dim::Length)?),
                 Some("frame") => RockerCondition::Frame(f.need("frame", Dim::Length)?),
                 Some("frame_angle") => RockerCondition::FrameAngle(f.need("frame_angle", Dim::Angle)?),
+                None => {
+                    condition_key = swept_of(&keys);
+                    RockerCondition::Optimum
+                }
                 _ => {
                     f.flag("optimum")?;
                     RockerCondition::Optimum
@@ -582,11 +607,16 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             let rocker = f.need("rocker", Dim::Length)?;
             let link = f.need("link", Dim::Length)?;
             let delta = f.need("delta", Dim::Angle)?;
-            condition_key = f.one_of(&["horizontal", "crank", "frame", "optimum"], false)?;
+            let keys = ["horizontal", "crank", "frame", "optimum"];
+            condition_key = f.one_of(&keys, swept_of(&keys).is_some())?;
             let pivot = match condition_key {
                 Some("horizontal") => KneePivot::Horizontal(f.need("horizontal", Dim::Length)?),
                 Some("crank") => KneePivot::Crank(f.need("crank", Dim::Length)?),
                 Some("frame") => KneePivot::Frame(f.need("frame", Dim::Length)?),
+                None => {
+                    condition_key = swept_of(&keys);
+                    KneePivot::Optimum
+                }
                 _ => {
                     f.flag("optimum")?;
                     KneePivot::Optimum
@@ -605,7 +635,7 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         }
         "six-bar-inversion" => {
             let (pivot, key) = pivot_condition(f)?;
-            condition_key = key;
+            condition_key = key.or_else(|| swept_of(&SIX_BAR_PIVOTS));
             Request::SixBarInversion(InversionRequest {
                 k: f.need("k", Dim::Ratio)?,
                 travel: f.need("travel", Dim::Length)?,
@@ -621,7 +651,7 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         }
         _ => {
             let (pivot, key) = pivot_condition(f)?;
-            condition_key = key;
+            condition_key = key.or_else(|| swept_of(&SIX_BAR_PIVOTS));
             Request::SixBarPressure(PressureRequest {
                 k: f.need("k", Dim::Ratio)?,
                 swing: f.need("swing", Dim::Angle)?,
@@ -641,6 +671,15 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         Some(RawField::Text(t)) => Some(parse_sweep(&request, t).map_err(|m| f.error("sweep", m))?),
         Some(_) => return Err(f.error("sweep", "expected a text PARAM=FROM..TO:N")),
     };
+    // a swept extra condition that was not given: the request (what `tmm
+    // run` analyses) takes the sweep's first value
+    let mut request = request;
+    if let Some(sw) = &sweep
+        && request.is_condition(&sw.param)
+        && !f.has(&sw.param)
+    {
+        request = request.with_param(&sw.param, sw.from).map_err(|e| f.error("sweep", e))?;
+    }
     f.finish(kind)?;
     Ok(Spec {
         kind,

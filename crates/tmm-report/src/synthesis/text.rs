@@ -18,7 +18,13 @@ pub fn report(s: &Solved, vars: Option<&[Variant]>, cmp: Option<&Comparison>) ->
     let _ = writeln!(t, "Metric synthesis: {} ({})", s.spec.kind, describe(s.spec.kind));
     t.push_str("Given:\n");
     for (n, v) in &y.given {
-        let _ = writeln!(t, "  {n:<14} {}", show(given_dim(&s.spec, n), *v));
+        // n1 (seed 000 § 1.2.3) is in revolutions per second
+        let value = if n == "n1" {
+            format!("{v:.4} rev/s")
+        } else {
+            show(given_dim(&s.spec, n), *v)
+        };
+        let _ = writeln!(t, "  {n:<14} {value}");
     }
     if !s.spec.speed_given {
         t.push_str("  (no input speed given: the [linkage] uses 1 rad/s)\n");
