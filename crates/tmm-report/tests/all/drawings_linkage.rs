@@ -412,6 +412,7 @@ fn balancing_torque_circles_sit_on_the_curve() {
         shown.iter().any(|t| t.0.starts_with("μM = ") && t.0.contains("μφ = ")),
         "no scale factors"
     );
+}
 
 /// The edges of the `<polygon>`s (ground symbols, arrowheads), closed.
 fn polygon_segments(svg: &str) -> Vec<[f64; 4]> {
