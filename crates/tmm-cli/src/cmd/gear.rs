@@ -180,7 +180,7 @@ fn pair(a: &PairArgs) -> Result<(), Error> {
         files.push((p.clone(), profile::profiles_csv(&t1, &t2).into_bytes()));
     }
     if let Some(p) = &a.profiles_svg {
-        files.push((p.clone(), profile::profiles_svg(&t1, &t2).into_bytes()));
+        files.push((p.clone(), profile::profiles_svg(&t1, &t2, Default::default()).into_bytes()));
     }
     if let Some(p) = &a.profiles_dxf {
         files.push((p.clone(), profile::profiles_dxf(&t1, &t2).to_bytes()?));

@@ -66,7 +66,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
     docs.add_text("gear/sliding.svg", sliding_svg(pair, task.lang, task.sheet))?;
     docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
-    docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2))?;
+    docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2, task.lang))?;
     docs.add_bytes("gear/profiles.dxf", profile::profiles_dxf(&t1, &t2).to_bytes()?)?;
     let c = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| gear_error(&origin, &e))?;
     let label = solved.criterion.map_or("given".to_string(), |c| c.name().to_string());

@@ -427,16 +427,25 @@ fn cam_profile_has_the_rotation_arrow_and_rays_at_the_phase_boundaries() {
 
 #[test]
 fn russian_drawings_have_no_english_words() {
-    let g = run("gear-internal.toml", "A1", "ru");
-    let p = run("planetary-sun-planet-ring.toml", "A1", "ru");
-    let c = run("cam-oscillating-roller.toml", "A1", "ru");
-    for (r, path) in [
-        (&g, "gear/mesh.svg"),
-        (&g, "gear/contour.svg"),
-        (&g, "gear/sliding.svg"),
-        (&p, "planetary/planetary.svg"),
-        (&c, "cam/cam.svg"),
-    ] {
+    let runs = [
+        run("gear-internal.toml", "A1", "ru"),
+        run("gear-seed003.toml", "A1", "ru"),
+        run("planetary-sun-planet-ring.toml", "A1", "ru"),
+        run("cam-oscillating-roller.toml", "A1", "ru"),
+    ];
+    // every drawing of the runs, the sheets' copies aside
+    let all: Vec<(&Run, String)> = runs
+        .iter()
+        .flat_map(|r| {
+            r.docs
+                .iter()
+                .filter(|d| d.path.ends_with(".svg") && !d.path.starts_with("sheets/"))
+                .map(move |d| (r, d.path.clone()))
+        })
+        .collect();
+    assert!(all.len() >= 10, "{} drawings", all.len());
+    for (r, path) in &all {
+        let path = path.as_str();
         let s = svg(r, path);
         for l in s.lines().filter(|l| l.starts_with("<text")) {
             let mut text = String::new();
