@@ -276,7 +276,7 @@ fn six_bars_by_inversion_put_the_slider_at_its_given_extremes() {
 fn six_bars_by_pressure_size_the_slider_coupler_by_the_closed_form() {
     let mut rng = Rng(0x5eed_0007);
     let mut ok = 0;
-    for i in 0..1000 {
+    for i in 0..4000 {
         let p = (30.0 + 20.0 * rng.uniform()).to_radians();
         let swing = (25.0 + 45.0 * rng.uniform()).to_radians();
         let (lb, lc) = (0.3 + 0.5 * rng.uniform(), 0.3 + 0.5 * rng.uniform());
@@ -306,11 +306,16 @@ fn six_bars_by_pressure_size_the_slider_coupler_by_the_closed_form() {
                 let want = (lc + guide) / p.sin();
                 assert!((s.length("CD").unwrap() - want).abs() < 1e-12, "{i}");
             }
-            Err(SynthesisError::Infeasible { .. }) | Err(SynthesisError::Check(_)) => {}
+            // a random request may be infeasible (the guide too far for the
+            // pressure angle): skipped; a failed cycle check is a defect
+            Err(SynthesisError::Infeasible { .. }) => {}
             Err(e) => panic!("{i}: {e}"),
         }
+        if ok == 1000 {
+            break;
+        }
     }
-    assert!(ok > 500, "{ok} of 1000");
+    assert_eq!(ok, 1000, "feasible requests among 4000");
 }
 
 #[test]

@@ -19,10 +19,11 @@ pub const EDGE_MM: f64 = 5.0;
 pub const MAIN_LINE_MM: f64 = 0.7;
 /// The thin line, mm (s/3 … s/2).
 pub const THIN_LINE_MM: f64 = 0.25;
-/// The fonts of the sheet's lettering, the GOST 2.304 faces first, then
-/// fallbacks every viewer has. The open `osifont` is not named: it lacks
-/// «ё» and «э», which the Russian titles need.
-pub const FONTS: &str = "'GOST type A', ISOCPEUR, 'DejaVu Sans', Arial, sans-serif";
+/// The fonts of the sheet's lettering, the GOST 2.304 faces first (the open
+/// `osifont`, Debian's `fonts-osifont`, has the whole Cyrillic of ru and uk),
+/// then fallbacks every viewer has. None is embedded in tmm: osifont's font
+/// exception covers documents, not a program that carries it.
+pub const FONTS: &str = "'GOST type A', ISOCPEUR, osifont, 'DejaVu Sans', Arial, sans-serif";
 
 /// The inner frame of a sheet of `format`, landscape.
 ///
