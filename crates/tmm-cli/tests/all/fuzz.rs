@@ -13,7 +13,11 @@
 //! sheets typeset on every 250th), and so do the command-line option cases.
 //! Every case draws from its own generator, seeded by the case number, and the
 //! cases are shared out over the machine's cores. `TMM_FUZZ_SEED` changes the
-//! seed; `TMM_FUZZ_FROM=K TMM_FUZZ_CASES=1` replays case K alone. The long run
+//! seed; `TMM_FUZZ_FROM=K TMM_FUZZ_CASES=1` replays case K alone, and a long
+//! run goes in chunks (`TMM_FUZZ_FROM=25000 TMM_FUZZ_CASES=25000`, …). A
+//! watchdog names a case that runs past the time limit and aborts: it
+//! measures wall time, so a run paused (SIGSTOP) for longer than the limit
+//! reports the case it was in. The long run
 //! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test all fuzz:: -- --nocapture`.
 
 use std::path::{Path, PathBuf};
