@@ -3,6 +3,8 @@
 //! a module here: run one with `cargo test --release -p tmm-report --test all <module>::`.
 
 mod cam_diagrams;
+mod drawings_cam_diagrams;
+mod drawings_dynamics_synthesis;
 mod drawings_gear_cam;
 mod drawings_linkage;
 mod dynamics_drawings;
