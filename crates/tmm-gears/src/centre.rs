@@ -17,6 +17,7 @@ use crate::{BasicRack, GearError, Kind};
 /// assert!(xs.abs() < 1e-12);
 /// ```
 pub fn shift_sum_for_aw(z1: u32, z2: u32, m: f64, aw: f64, rack: &BasicRack, kind: Kind) -> Result<f64, GearError> {
+    rack.validate()?;
     crate::spec::check_module(m)?;
     let zs = match kind {
         Kind::External => z1 as f64 + z2 as f64,
@@ -33,5 +34,10 @@ pub fn shift_sum_for_aw(z1: u32, z2: u32, m: f64, aw: f64, rack: &BasicRack, kin
         return Err(GearError::CentreDistance { aw, min });
     }
     let aw_angle = (min / aw).acos();
-    Ok((inv(aw_angle) - inv(rack.alpha)) * zs / (2.0 * rack.alpha.tan()))
+    let sum = (inv(aw_angle) - inv(rack.alpha)) * zs / (2.0 * rack.alpha.tan());
+    // an αw of 90° (aw far beyond a·cos α) has no finite involute
+    if !sum.is_finite() {
+        return Err(GearError::NonFinite("shift sum for this centre distance"));
+    }
+    Ok(sum)
 }

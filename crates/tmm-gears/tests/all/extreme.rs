@@ -127,3 +127,19 @@ proptest! {
         }
     }
 }
+
+/// The shift sum for a centre distance refuses a basic rack out of range:
+/// found by the property above (α = −1e38 gave NaN).
+#[test]
+fn shift_sum_for_aw_refuses_what_has_no_finite_sum() {
+    let bad = BasicRack {
+        alpha: -1e38,
+        ..BasicRack::default()
+    };
+    assert!(shift_sum_for_aw(1000, u32::MAX, 0.1, 0.0, &bad, Kind::External).is_err());
+    let r = BasicRack::default();
+    // an ordinary request still has its closed form: aw = a gives x1 + x2 = 0
+    let a = 0.5 * 50.0 * 0.005;
+    let xs = shift_sum_for_aw(20, 30, 0.005, a, &r, Kind::External).unwrap();
+    assert!(xs.abs() < 1e-12, "{xs}");
+}
