@@ -139,3 +139,23 @@ pub fn round_mu(raw: f64) -> f64 {
     }
     10.0 * p
 }
+
+/// The grid values k·step inside [lo, hi], with their index k (k = 0 is
+/// zero): the ticks of an axis at a round scale factor. The tolerance is
+/// relative to the step, as the values may be of any size (accelerations of
+/// 1e-17 m/s² at a crank speed of 1e-7 rpm once got half a million ticks
+/// from an absolute one).
+///
+/// ```
+/// use tmm_report::paper::grid_values;
+/// let v: Vec<(i64, f64)> = grid_values(-25.0, 31.0, 10.0).collect();
+/// assert_eq!(v.first(), Some(&(-2, -20.0)));
+/// assert_eq!(v.last(), Some(&(3, 30.0)));
+/// assert_eq!(grid_values(-2e-17, 3e-17, 1e-17).count(), 6);
+/// ```
+pub fn grid_values(lo: f64, hi: f64, step: f64) -> impl Iterator<Item = (i64, f64)> {
+    let first = (lo / step - 1e-9).ceil() as i64;
+    (first..)
+        .take_while(move |&k| (k as f64 - 1e-9) * step <= hi)
+        .map(move |k| (k, k as f64 * step))
+}

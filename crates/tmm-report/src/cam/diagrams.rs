@@ -160,10 +160,7 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
         lab.put_left((x0 + 2.5, ytop - 4.5), &format!("{}, {}", p.sym, p.unit), H_SMALL + 0.5, "#000");
         lab.put((x1 + 9.0, yz + 3.5), "φ", H_LABEL, "#000");
         // the y ticks every 10 mm at the round μ
-        // (the tolerance relative to the step: the values may be of any size)
-        let mut t = ((ymin / mu_y) / 10.0 - 1e-9).ceil() as i64;
-        while (t as f64 - 1e-9) * 10.0 * mu_y <= ymax {
-            let v = t as f64 * 10.0 * mu_y;
+        for (t, v) in crate::paper::grid_values(ymin, ymax, 10.0 * mu_y) {
             let (_, yp) = map(0.0, v);
             c.line_paper((x0 - 1.2, yp), (x0, yp), Style::THIN);
             if t != 0 {
@@ -176,7 +173,6 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
                     "#000",
                 );
             }
-            t += 1;
         }
         // the phase boundaries: thin lines across the panel, the phases named
         // under the plot

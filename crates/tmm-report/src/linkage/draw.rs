@@ -493,17 +493,12 @@ pub(crate) fn cycle_diagram(
     let (xe, _) = map(360.0, 0.0);
     c.line_paper((xe, yz - 1.2), (xe, yz + 1.2), Style::THIN);
     // the y ticks: every 10 mm at the round μ
-    // (the tolerance is relative to the step: the values may be of any size,
-    // such as accelerations of 1e-17 m/s² at a crank speed of 1e-7 rpm)
-    let mut k = ((ymin / mu_y) / 10.0 - 1e-9).ceil() as i64;
-    while (k as f64 - 1e-9) * 10.0 * mu_y <= ymax {
-        let v = k as f64 * 10.0 * mu_y;
+    for (k, v) in crate::paper::grid_values(ymin, ymax, 10.0 * mu_y) {
         let (_, yp) = map(0.0, v);
         c.line_paper((x0 - 1.2, yp), (x0, yp), Style::THIN);
         if k != 0 {
             c.rich_paper((x0 - 2.0, yp + 0.9), &signed(v, lang), H_SMALL, Anchor::End, "#000");
         }
-        k += 1;
     }
     // the curve, thick
     let curve: Vec<(f64, f64)> = pts.iter().map(|p| map(p.0, p.1)).collect();
@@ -523,21 +518,19 @@ pub(crate) fn cycle_diagram(
     ));
     let dot_paper: Vec<(f64, f64)> = dot_pts.iter().map(|p| map(p.0, p.1)).collect();
     if let Some(dots) = &dots {
+        let circle = |class: &str, (px, py): (f64, f64)| {
+            format!(
+                "<circle class=\"{class}\" cx=\"{px:.3}\" cy=\"{py:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>"
+            )
+        };
         for &(x, y) in dots.points.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
-            let (px, py) = map(x, y);
-            c.raw(&format!(
-                "<circle class=\"dot\" cx=\"{px:.3}\" cy=\"{py:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>"
-            ));
+            c.raw(&circle("dot", map(x, y)));
         }
         // the legend, top right inside the paper
         let (lx, ly) = (w - right - 52.0, top - 3.0);
         c.line_paper((lx, ly - 0.9), (lx + 6.0, ly - 0.9), Style::THIN.widened(0.7));
         c.rich_paper((lx + 7.5, ly), dots.curve_name, H_SMALL, Anchor::Start, "#000");
-        c.raw(&format!(
-            "<circle class=\"legend\" cx=\"{:.3}\" cy=\"{:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>",
-            lx + 3.0,
-            ly + 3.5 - 0.9
-        ));
+        c.raw(&circle("legend", (lx + 3.0, ly + 3.5 - 0.9)));
         c.rich_paper((lx + 7.5, ly + 3.5), dots.dots_name, H_SMALL, Anchor::Start, "#000");
     }
     // position numbers under the axis, clear of the curve
