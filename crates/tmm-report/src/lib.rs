@@ -34,6 +34,7 @@ pub mod paper;
 pub mod planetary;
 pub mod project;
 pub mod run;
+pub mod seg_index;
 pub mod sheets;
 pub mod svg;
 pub mod synthesis;

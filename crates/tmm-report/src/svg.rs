@@ -90,7 +90,7 @@ pub struct Canvas {
     /// Attributes of the root element (`data-scale="1:2"`).
     root: String,
     /// Every straight piece drawn, on paper (mm, y down): what labels avoid.
-    segs: Vec<((f64, f64), (f64, f64))>,
+    segs: crate::seg_index::SegIndex,
     /// The boxes of the texts written and of the places kept free.
     boxes: Vec<Rect>,
 }
@@ -107,7 +107,7 @@ impl Canvas {
             oy: 0.0,
             body: String::new(),
             root: String::new(),
-            segs: Vec::new(),
+            segs: crate::seg_index::SegIndex::new(width_mm, height_mm),
             boxes: Vec::new(),
         }
     }
@@ -269,7 +269,9 @@ impl Canvas {
         );
         // labels keep off the ground symbol too
         let (l, r, b) = ((x - h, y + 1.6 * h), (x + h, y + 1.6 * h), (x, y));
-        self.segs.extend([(b, l), (l, r), (r, b)]);
+        for s in [(b, l), (l, r), (r, b)] {
+            self.segs.push(s);
+        }
         for i in 0..5 {
             let hx = x - 1.3 * h + i as f64 * 0.65 * h;
             self.segs.push(((hx + 0.6 * h, y + 1.6 * h), (hx, y + 2.3 * h)));
@@ -413,7 +415,7 @@ impl Canvas {
 
     /// Every straight piece drawn so far, on paper (mm, y down).
     pub fn segments(&self) -> &[crate::line_grid::Segment] {
-        &self.segs
+        self.segs.segments()
     }
 
     /// Keep a paper box free of labels placed later.
@@ -524,7 +526,7 @@ impl Canvas {
                 };
                 let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
                 let mut hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
-                    + self.segs.iter().filter(|s| r.cuts(s.0, s.1)).count()
+                    + self.segs.count((r.x0, r.y0, r.x1, r.y1), |s| r.cuts(s.0, s.1))
                     + if inside { 0 } else { 1000 };
                 if lead {
                     let from = (p.0 + c * (d - 0.3), p.1 - s * (d - 0.3));

@@ -15,9 +15,9 @@
 //! cases are shared out over the machine's cores. `TMM_FUZZ_SEED` changes the
 //! seed; `TMM_FUZZ_FROM=K TMM_FUZZ_CASES=1` replays case K alone, and a long
 //! run goes in chunks (`TMM_FUZZ_FROM=25000 TMM_FUZZ_CASES=25000`, …). A
-//! watchdog names a case that runs past the time limit and aborts: it
-//! measures wall time, so a run paused (SIGSTOP) for longer than the limit
-//! reports the case it was in. The long run
+//! watchdog names a case that runs past the time limit (20 s,
+//! `TMM_FUZZ_TIME_LIMIT` seconds) and aborts: it measures wall time, so a run
+//! paused (SIGSTOP) for longer than the limit reports the case it was in. The long run
 //! is `TMM_FUZZ_CASES=1000000 cargo test --release -p tmm-cli --test all fuzz:: -- --nocapture`.
 
 use std::path::{Path, PathBuf};
@@ -180,11 +180,41 @@ fn mutate(rng: &mut Rng, t: &str) -> Vec<u8> {
 /// A word `NaN`, `inf` or `Infinity` standing alone: written independently of
 /// the check inside tmm, so that the two do not share a mistake.
 fn has_nonfinite(s: &str) -> bool {
-    s.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .any(|w| w == "NaN" || w == "inf" || w == "Infinity")
+    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let b = s.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        if !word(b[i]) {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < b.len() && word(b[i]) {
+            i += 1;
+        }
+        if matches!(&b[start..i], b"NaN" | b"inf" | b"Infinity") {
+            return true;
+        }
+    }
+    false
 }
 
-const TIME_LIMIT: Duration = Duration::from_secs(20);
+#[test]
+fn the_nonfinite_check_finds_whole_words_only() {
+    for bad in ["x=\"NaN\"", "NaN", "1, inf]", "-Infinity", "ω=inf рад/с", "(NaN)"] {
+        assert!(has_nonfinite(bad), "{bad}");
+    }
+    for good in ["info", "NaNo", "Infinityx", "_inf", "inflate", "", "значение"] {
+        assert!(!has_nonfinite(good), "{good}");
+    }
+}
+
+/// The time a case may take (20 s; `TMM_FUZZ_TIME_LIMIT` in seconds for a
+/// long run beside other work at low priority, where a case may wait).
+fn time_limit() -> Duration {
+    let secs = std::env::var("TMM_FUZZ_TIME_LIMIT").ok().and_then(|v| v.parse().ok()).unwrap_or(20);
+    Duration::from_secs(secs)
+}
 
 fn tmm() -> PathBuf {
     PathBuf::from(env!("CARGO_BIN_EXE_tmm"))
@@ -218,7 +248,7 @@ fn run_bin(args: &[&str], dir: &Path) -> (i32, String, String) {
         if let Some(st) = child.try_wait().unwrap() {
             break st;
         }
-        if start.elapsed() > TIME_LIMIT {
+        if start.elapsed() > time_limit() {
             let _ = child.kill();
             panic!("timeout: tmm {}", args.join(" "));
         }
@@ -283,7 +313,7 @@ fn fuzz_case(case: usize, corpus: &[(String, String)], work: &Path, tally: &mut 
         let Ok(r) = r else {
             panic!("{what}: panic on this task:\n{text}");
         };
-        assert!(dt < TIME_LIMIT, "{what}: {dt:?}\n{text}");
+        assert!(dt < time_limit(), "{what}: {dt:?}\n{text}");
         match r {
             Ok(run) => {
                 tally.ok += 1;
@@ -353,13 +383,14 @@ fn mutated_task_files() {
                 for (case, since) in &running {
                     let c = case.load(Ordering::Relaxed);
                     let t = *since.lock().unwrap_or_else(|e| e.into_inner());
-                    if c > 0 && t.elapsed() > TIME_LIMIT {
+                    if c > 0 && t.elapsed() > time_limit() {
                         let case = c - 1;
                         let mut rng = case_rng(case);
                         let (name, text) = rng.pick(&corpus);
                         let bytes = mutate(&mut rng, text);
                         eprintln!(
-                            "fuzz: case {case} (from {name}) runs past {TIME_LIMIT:?}: a hang; the task:\n{}",
+                            "fuzz: case {case} (from {name}) runs past {:?}: a hang; the task:\n{}",
+                            time_limit(),
                             String::from_utf8_lossy(&bytes)
                         );
                         std::process::abort();

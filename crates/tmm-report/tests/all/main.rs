@@ -11,4 +11,5 @@ mod dynamics_drawings;
 mod force_polygons;
 mod hardening_examples;
 mod linkage_examples;
+mod seg_index;
 mod sheets;
