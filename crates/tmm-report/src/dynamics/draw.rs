@@ -32,8 +32,10 @@ const H_SMALL: f64 = 2.5;
 /// The margins around the frame, mm: left (tick labels), top (title, the
 /// scale factors, the quantity's name), bottom (tick labels, positions).
 const LEFT: f64 = 17.0;
-const TOP: f64 = 21.0;
-const BOTTOM: f64 = 11.0;
+#[doc(hidden)]
+pub const TOP: f64 = 21.0;
+#[doc(hidden)]
+pub const BOTTOM: f64 = 11.0;
 /// The room right of the frame: the names of the marked levels and the legend.
 const RIGHT: f64 = 62.0;
 /// The grid step on paper, mm: the ticks stand at whole multiples of 10·μ.
@@ -42,16 +44,18 @@ const GRID: f64 = 10.0;
 /// One axis at a round scale factor μ (units per paper mm): the frame runs
 /// from `lo` (a whole multiple of the grid step GRID·μ) over `len` mm.
 #[derive(Debug, Clone, Copy)]
-struct Axis {
-    lo: f64,
-    mu: f64,
-    len: f64,
+#[doc(hidden)]
+pub struct Axis {
+    pub lo: f64,
+    pub mu: f64,
+    pub len: f64,
 }
 
 impl Axis {
     /// The smallest round μ at which `[a, b]`, widened to whole grid steps,
     /// fits in `room` mm.
-    fn fit(a: f64, b: f64, room: f64) -> Axis {
+    #[doc(hidden)]
+    pub fn fit(a: f64, b: f64, room: f64) -> Axis {
         let (a, b) = widened(a, b);
         let mut mu = round_mu((b - a) / room.max(1.0));
         for _ in 0..64 {
@@ -89,7 +93,8 @@ impl Axis {
 }
 
 /// What the horizontal axis is.
-enum XKind {
+#[doc(hidden)]
+pub enum XKind {
     /// The cycle angle φ over 0…360° at μ_φ, marked with the positions 0…12.
     Phi(Vec<f64>),
     /// Another quantity: its symbol and unit.
@@ -97,16 +102,17 @@ enum XKind {
 }
 
 /// A diagram on its own paper, drawn in paper mm (y down).
-struct Chart {
-    c: Canvas,
-    x: Axis,
-    y: Axis,
+#[doc(hidden)]
+pub struct Chart {
+    pub c: Canvas,
+    pub x: Axis,
+    pub y: Axis,
     /// The frame's top-left corner.
-    fx: f64,
-    fy: f64,
-    legend: usize,
+    pub fx: f64,
+    pub fy: f64,
+    pub legend: usize,
     /// Paper y of the level names written right of the frame.
-    levels: Vec<f64>,
+    pub levels: Vec<f64>,
 }
 
 /// `a unit/mm`, the unit in brackets when it is a ratio.
@@ -124,7 +130,8 @@ impl Chart {
     /// axis `xk` with data range `xr`, on the paper of `slot`; the title,
     /// then both scale factors under it, then the quantity's name.
     #[allow(clippy::too_many_arguments)]
-    fn new(
+    #[doc(hidden)]
+    pub fn new(
         lang: Language,
         sheet: SheetFormat,
         slot: Slot,
@@ -349,7 +356,8 @@ impl Chart {
         self.c.label_paper(p, label, H_SMALL, color);
     }
 
-    fn finish(&self) -> String {
+    #[doc(hidden)]
+    pub fn finish(&self) -> String {
         self.c.finish()
     }
 }
@@ -560,48 +568,4 @@ fn clip(k: f64, b: f64, bx: (f64, f64, f64, f64)) -> Option<((f64, f64), (f64, f
         return None;
     }
     (lo < hi).then_some(((lo, k * lo + b), (hi, k * hi + b)))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A constant or empty quantity still gets a frame with a few finite
-    /// ticks (a massless mechanism has I_II ≡ 0), inside the slot.
-    #[test]
-    fn flat_data_gets_a_finite_frame() {
-        for (a, b) in [
-            (0.0, 0.0),
-            (5.0, 5.0),
-            (-1e-300, 1e-300),
-            (1e9, 1e9 + 1e-7),
-            (f64::INFINITY, f64::NEG_INFINITY),
-        ] {
-            let ch = Chart::new(
-                Language::En,
-                SheetFormat::A1,
-                Slot::Diagram,
-                "t",
-                ("y", "m"),
-                (a, b),
-                false,
-                XKind::Other("x".into(), "s".into()),
-                (a, b),
-            );
-            assert!(ch.y.len > 0.0 && ch.x.len > 0.0, "{a} {b}");
-            assert!(ch.y.len <= 120.0 - TOP - BOTTOM + 1e-9, "{a} {b}");
-            let svg = ch.finish();
-            assert!(svg.matches("<line").count() < 100, "{a} {b}");
-        }
-    }
-
-    /// The axis' μ is round and the grid covers the data inside the room.
-    #[test]
-    fn axis_fits_at_a_round_mu() {
-        for (a, b, room) in [(31.1, 31.75, 90.0), (-1234.0, 877.0, 50.0), (0.0, 0.0123, 113.0)] {
-            let ax = Axis::fit(a, b, room);
-            assert_eq!(ax.mu, round_mu(ax.mu));
-            assert!(ax.lo <= a && ax.lo + ax.len * ax.mu >= b - 1e-12 && ax.len <= room + 1e-9);
-        }
-    }
 }

@@ -14,7 +14,8 @@ use crate::linkage::Loaded;
 use crate::output::num;
 
 /// The stride through the core's grid of `n` intervals for the arrays.
-pub(crate) fn stride(n: usize) -> usize {
+#[doc(hidden)]
+pub fn stride(n: usize) -> usize {
     if n <= 720 {
         return 1;
     }
@@ -127,20 +128,4 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         a.extend(b);
     }
     doc
-}
-
-#[cfg(test)]
-mod tests {
-    use super::stride;
-
-    #[test]
-    fn stride_keeps_at_least_360_intervals() {
-        for n in [360, 372, 720, 1440, 3600, 36_000, 3612] {
-            let s = stride(n);
-            assert_eq!(n % s, 0);
-            assert!(n / s >= 360, "{n}: {s}");
-        }
-        assert_eq!(stride(3600), 10);
-        assert_eq!(stride(720), 1);
-    }
 }

@@ -6,8 +6,10 @@
 //! with a motor, the run-up — as tables, one JSON document and SVG
 //! diagrams. The computation is `tmm_linkage::dynamics` (docs/dynamics.md).
 
-mod draw;
-mod json;
+#[doc(hidden)]
+pub mod draw;
+#[doc(hidden)]
+pub mod json;
 pub mod task;
 mod text;
 

@@ -108,15 +108,16 @@ const TEMPLATES: [Template; 4] = [
 
 /// A drawing read from the run's documents.
 #[derive(Debug, Clone)]
-struct Drawing {
-    path: String,
-    caption: String,
-    required: bool,
-    w: f64,
-    h: f64,
-    view_box: [f64; 4],
-    scale: Option<String>,
-    body: String,
+#[doc(hidden)]
+pub struct Drawing {
+    pub path: String,
+    pub caption: String,
+    pub required: bool,
+    pub w: f64,
+    pub h: f64,
+    pub view_box: [f64; 4],
+    pub scale: Option<String>,
+    pub body: String,
 }
 
 /// A drawing as placed on a sheet.
@@ -188,7 +189,8 @@ fn matches(pattern: &str, stem: &str) -> bool {
 
 /// Read a drawing's size, viewBox, scale and inner markup; `None` when it
 /// is not an SVG with a size in absolute units.
-fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize) -> Option<Drawing> {
+#[doc(hidden)]
+pub fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize) -> Option<Drawing> {
     let toks = xml::tokens(text).ok()?;
     let (root, body_from) = toks.iter().find_map(|t| match t {
         xml::Token::Start {
@@ -692,31 +694,4 @@ pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents,
         out.add_bytes(format!("sheets/sheet-{}.dxf", sheet.number), dxf.to_bytes()?)?;
     }
     Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two ids, one the beginning of the other (`a`, `ab`), defined and
-    /// referred to by `href="#…"` and `url(#…)`; a colour `#abc` that is no
-    /// id stays as it is. The expected markup is written out by hand.
-    #[test]
-    fn ids_take_the_drawing_prefix() {
-        let svg = concat!(
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm" viewBox="0 0 20 10">"#,
-            r#"<defs><marker id="a"><path d="M0 0L1 1"/></marker><clipPath id="ab"><rect width="5" height="5"/></clipPath></defs>"#,
-            r##"<path d="M0 0H9" marker-end="url(#a)" clip-path="url(#ab)" fill="#abc"/>"##,
-            r##"<use href="#ab"/><use xlink:href="#a"/><text>#a ab a"</text>"##,
-            "</svg>\n"
-        );
-        let expected = concat!(
-            r#"<defs><marker id="d7-a"><path d="M0 0L1 1"/></marker><clipPath id="d7-ab"><rect width="5" height="5"/></clipPath></defs>"#,
-            r##"<path d="M0 0H9" marker-end="url(#d7-a)" clip-path="url(#d7-ab)" fill="#abc"/>"##,
-            r##"<use href="#d7-ab"/><use xlink:href="#d7-a"/><text>#a ab a"</text>"##,
-        );
-        let d = read_drawing("linkage/positions.svg", svg, Language::En, true, 7).unwrap();
-        assert_eq!(d.body, expected);
-        assert_eq!((d.w, d.h, d.view_box), (20.0, 10.0, [0.0, 0.0, 20.0, 10.0]));
-    }
 }

@@ -13,3 +13,4 @@ mod hardening_examples;
 mod linkage_examples;
 mod seg_index;
 mod sheets;
+mod units;
