@@ -298,7 +298,7 @@ fn task_file_section_runs_and_errors_point_into_the_file() {
 
     // tmm run writes the section's files
     let out = d.join("out");
-    let v = json(&tmm(&["run", ex, "-o", out.to_str().unwrap(), "--json"]));
+    let v = json(&tmm(&["run", "--no-pdf", ex, "-o", out.to_str().unwrap(), "--json"]));
     assert!(v["cam"]["r0"].is_number());
     for n in ["cam.svg", "cam-sizing.svg", "cam-profile.dxf", "cam-profile.csv", "cam.json"] {
         assert!(out.join("cam").join(n).exists(), "{n}");

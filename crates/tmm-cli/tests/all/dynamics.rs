@@ -284,7 +284,7 @@ fn motor_run_up() {
 #[test]
 fn tmm_run_on_the_default_task_writes_dynamics() {
     let dir = tmp("run");
-    let o = tmm(&["run", "-o", dir.to_str().unwrap()]);
+    let o = tmm(&["run", "--no-pdf", "-o", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for f in [
         "dynamics/dynamics.json",

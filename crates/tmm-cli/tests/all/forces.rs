@@ -129,7 +129,7 @@ fn seed003_sixbar_with_gravity_and_sine_resistance() {
 #[test]
 fn tmm_run_has_the_forces_section() {
     let dir = tmp("run");
-    let o = tmm(&["run", "examples/seed-001-fourbar.toml", "-o", dir.to_str().unwrap()]);
+    let o = tmm(&["run", "--no-pdf", "examples/seed-001-fourbar.toml", "-o", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let rep: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
     check_equilibrium(&rep["forces"]["detail"]);

@@ -285,7 +285,7 @@ fn task_file_errors_name_the_field_and_place() {
     let d = tmp("task");
     let p = d.join("t.toml");
     std::fs::write(&p, "[gear]\nz1 = 15\nz2 = 20\nmodule = \"-5 mm\"\nx1 = 0.2\nx2 = 0.85\n").unwrap();
-    let o = tmm(&["run", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
+    let o = tmm(&["run", "--no-pdf", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
     bad(&o, "gear.module");
     assert!(
         String::from_utf8_lossy(&o.stderr).contains("t.toml:4:"),
@@ -293,10 +293,13 @@ fn task_file_errors_name_the_field_and_place() {
         String::from_utf8_lossy(&o.stderr)
     );
     std::fs::write(&p, "[gear]\nz1 = 15\nz2 = 20\nmodule = \"5 mm\"\nteeth = 3\n").unwrap();
-    bad(&tmm(&["run", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]), "teeth");
+    bad(
+        &tmm(&["run", "--no-pdf", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]),
+        "teeth",
+    );
     std::fs::write(&p, "[gear]\nz1 = 15\nz2 = 20\nmodule = \"5 mm\"\naw = \"70 mm\"\n").unwrap();
     bad(
-        &tmm(&["run", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]),
+        &tmm(&["run", "--no-pdf", p.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]),
         "gear.aw",
     );
 }
@@ -305,7 +308,7 @@ fn task_file_errors_name_the_field_and_place() {
 fn run_example_writes_the_gear_files() {
     let d = tmp("run");
     let ex = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/gear-seed001.toml");
-    let v = json(&tmm(&["run", ex, "-o", d.to_str().unwrap(), "--json"]));
+    let v = json(&tmm(&["run", "--no-pdf", ex, "-o", d.to_str().unwrap(), "--json"]));
     assert!((f(&v["gear"], "eps_alpha") - 1.2048).abs() < 1e-3);
     for name in ["mesh.svg", "mesh.dxf", "contour.svg", "sliding.svg", "profiles.csv"] {
         assert!(d.join("gear").join(name).exists(), "{name}");

@@ -115,11 +115,11 @@ fn svg_drawings_are_written() {
 #[test]
 fn run_default_and_a_file() {
     let d = tmp("run");
-    let o = tmm().args(["run", "--out"]).arg(&d).output().unwrap();
+    let o = tmm().args(["run", "--no-pdf", "--out"]).arg(&d).output().unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(d.join("report.json").exists() && d.join("linkage/positions.svg").exists());
     let o = tmm()
-        .args(["run", "--json", "--out"])
+        .args(["run", "--no-pdf", "--json", "--out"])
         .arg(&d)
         .arg(root().join("examples/seed-002-shaper.toml"))
         .output()

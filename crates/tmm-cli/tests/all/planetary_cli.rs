@@ -197,7 +197,7 @@ fn examples_and_run() {
     let out = temp("run-out");
     let task = temp("run.toml");
     std::fs::copy(repo("examples/planetary-int-int.toml"), &task).unwrap();
-    let o = tmm(&["run", task.to_str().unwrap(), "--out", out.to_str().unwrap(), "--json"]);
+    let o = tmm(&["run", "--no-pdf", task.to_str().unwrap(), "--out", out.to_str().unwrap(), "--json"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["planetary"]["equal_spacing"], false);

@@ -451,7 +451,7 @@ fn a_task_file_error_is_located_at_the_field() {
         "title = \"x\"\n[synthesis]\nkind = \"crank-slider\"\nstroke = \"300 mm\"\nk = 1.2\nmax_pressure = \"40 deg\"\n",
     )
     .unwrap();
-    let (code, _, err) = run(&["run", f.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
+    let (code, _, err) = run(&["run", "--no-pdf", f.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("t.toml:6:16: synthesis.max_pressure"), "{err}");
     assert!(err.contains("42.7989") && err.contains("42.8°"), "{err}");
@@ -471,6 +471,7 @@ fn examples_run_and_reach_their_k() {
         let out = d.join("out");
         let (code, stdout, err) = run(&[
             "run",
+            "--no-pdf",
             root().join("examples").join(f).to_str().unwrap(),
             "-o",
             out.to_str().unwrap(),
@@ -507,7 +508,7 @@ fn the_written_task_runs_with_forces_and_compares_the_given_linkage() {
     assert_eq!(code, 0, "{err}");
     let (code, _, err) = run(&["forces", t.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    let (code, out, err) = run(&["run", t.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
+    let (code, out, err) = run(&["run", "--no-pdf", t.to_str().unwrap(), "-o", d.join("out").to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("The task's own [linkage] is analysed"), "{out}");
 }
@@ -594,7 +595,14 @@ fn a_sweep_needs_not_the_option_it_sweeps() {
         "[synthesis]\nkind = \"crank-slider\"\nstroke = \"300 mm\"\nk = 1.2\nsweep = \"lambda=3..5:3\"\n",
     )
     .unwrap();
-    let (code, out, err) = run(&["run", f.to_str().unwrap(), "-o", d.join("out").to_str().unwrap(), "--json"]);
+    let (code, out, err) = run(&[
+        "run",
+        "--no-pdf",
+        f.to_str().unwrap(),
+        "-o",
+        d.join("out").to_str().unwrap(),
+        "--json",
+    ]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let l = &v["synthesis"]["lengths"];
@@ -915,7 +923,7 @@ fn every_kind_written_with_task_runs_through_linkage_forces_and_run() {
         for cmd in [
             vec!["linkage", ts],
             vec!["forces", ts],
-            vec!["run", ts, "-o", d.join("out").to_str().unwrap()],
+            vec!["run", "--no-pdf", ts, "-o", d.join("out").to_str().unwrap()],
         ] {
             let (code, _, err) = run(&cmd);
             assert_eq!(code, 0, "{n}: tmm {}: {err}", cmd[0]);
