@@ -1,30 +1,19 @@
 //! `tmm cam` and the `[cam]` section end to end: exit codes, one JSON
 //! document, files written, errors naming the option or field.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use crate::common::{self, json};
 
 const SEED_PHASES: &str = "rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129";
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run tmm")
+    common::tmm_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-cam-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(o: &Output) -> serde_json::Value {
-    assert!(o.status.success(), "stderr: {}", String::from_utf8_lossy(&o.stderr));
-    let s = String::from_utf8(o.stdout.clone()).unwrap();
-    serde_json::from_str(&s).expect("stdout is exactly one JSON document")
+    common::tmp("cam", name)
 }
 
 fn seed(extra: &[&str]) -> Vec<String> {

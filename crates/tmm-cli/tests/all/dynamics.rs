@@ -6,28 +6,18 @@
 //! with its field and exit code 2.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
+
+use crate::common::{self, json};
 
 use serde_json::Value;
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("run tmm")
+    common::tmm_in(&common::repo(), args)
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-dynamics-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(o: &Output) -> Value {
-    assert!(o.status.success(), "stderr: {}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_str(&String::from_utf8(o.stdout.clone()).unwrap()).expect("stdout is exactly one JSON document")
+    common::tmp("dynamics", name)
 }
 
 fn f(v: &Value) -> f64 {

@@ -3,28 +3,17 @@
 //! option or the field with its place in the file.
 
 use std::f64::consts::PI;
-use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use crate::common::{self, json};
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run tmm")
+    common::tmm_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-gear-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn json(o: &Output) -> serde_json::Value {
-    assert!(o.status.success(), "stderr: {}", String::from_utf8_lossy(&o.stderr));
-    let s = String::from_utf8(o.stdout.clone()).unwrap();
-    serde_json::from_str(&s).expect("stdout is exactly one JSON document")
+    common::tmp("gear", name)
 }
 
 fn f(v: &serde_json::Value, k: &str) -> f64 {

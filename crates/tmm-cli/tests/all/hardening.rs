@@ -3,35 +3,16 @@
 //! through the `tmm` binary and checks what the user sees.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 
-fn tmm() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-}
-
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+use crate::common::{self, repo, run, tmm};
 
 fn example(name: &str) -> String {
     repo().join("examples").join(name).to_string_lossy().into_owned()
 }
 
 fn tempdir(tag: &str) -> PathBuf {
-    let p = std::env::temp_dir().join(format!("tmm-hardening-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&p);
-    std::fs::create_dir_all(&p).unwrap();
-    p
-}
-
-/// (exit code, stdout, stderr)
-fn run(args: &[&str]) -> (i32, String, String) {
-    let o = tmm().args(args).stdin(Stdio::null()).output().unwrap();
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    common::tmp("hardening", tag)
 }
 
 /// Item 8: a closed pipe ends quietly with exit code 0, not a panic.

@@ -3,20 +3,15 @@
 //! with a message naming the field and exit code 2.
 
 use std::path::PathBuf;
-use std::process::Command;
 
-fn tmm() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-}
+use crate::common::{self, tmm};
 
 fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+    common::repo()
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-linkage-test-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    common::tmp("linkage", name)
 }
 
 const FOURBAR: &str = r#"

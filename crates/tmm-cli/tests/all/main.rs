@@ -3,6 +3,7 @@
 //! a module here: run one with `cargo test --release -p tmm-cli --test all <module>::`.
 
 mod cam;
+mod common;
 mod dynamics;
 mod forces;
 mod fuzz;

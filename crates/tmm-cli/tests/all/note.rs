@@ -3,27 +3,11 @@
 //! exits with 2 and an unwritable folder with 1, never a panic.
 
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
 
-fn tmm() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-}
+use crate::common::{self, run};
 
 fn tempdir(tag: &str) -> PathBuf {
-    let p = std::env::temp_dir().join(format!("tmm-note-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&p);
-    std::fs::create_dir_all(&p).unwrap();
-    p
-}
-
-/// (exit code, stdout, stderr)
-fn run(args: &[&str]) -> (i32, String, String) {
-    let o = tmm().args(args).stdin(Stdio::null()).output().unwrap();
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    common::tmp("note", tag)
 }
 
 fn text(pdf: &std::path::Path) -> String {

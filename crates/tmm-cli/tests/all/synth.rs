@@ -6,30 +6,15 @@
 //! field, and the examples run through `tmm run`.
 
 use std::path::PathBuf;
-use std::process::Command;
 
-fn tmm() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-}
+use crate::common::{self, run};
 
 fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+    common::repo()
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-synth-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let o = tmm().args(args).output().unwrap();
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    common::tmp("synth", name)
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
