@@ -9,6 +9,65 @@ use std::path::PathBuf;
 
 use crate::common::{self, run};
 
+/// Requests of `tmm synth` used by several tests (seed 002's knee press and
+/// shaper, seed 003's six-bars).
+const KNEE: &[&str] = &[
+    "knee-press",
+    "--stroke",
+    "90 mm",
+    "--k",
+    "1.12",
+    "--rocker",
+    "220 mm",
+    "--link",
+    "220 mm",
+    "--delta",
+    "5",
+];
+const SHAPER: &[&str] = &[
+    "slotted-lever",
+    "--stroke",
+    "400 mm",
+    "--k",
+    "1.5",
+    "--pivots",
+    "50 mm",
+    "--coupler-ratio",
+    "3",
+];
+const INVERSION: &[&str] = &[
+    "six-bar-inversion",
+    "--k",
+    "1.15",
+    "--travel",
+    "360 mm",
+    "--guide",
+    "-320 mm",
+    "--start",
+    "180 mm",
+    "--coupler",
+    "320 mm",
+    "--swing",
+    "70",
+    "--lever",
+    "360 mm",
+];
+const PRESSURE: &[&str] = &[
+    "six-bar-pressure",
+    "--k",
+    "1.07",
+    "--swing",
+    "55",
+    "--arm-b",
+    "0.6 m",
+    "--arm-c",
+    "0.6 m",
+    "--guide",
+    "-0.2 m",
+    "--max-pressure",
+    "38",
+];
+
 fn root() -> PathBuf {
     common::repo()
 }
@@ -102,66 +161,12 @@ fn knee_press_shaper_and_six_bars_reach_k_and_stroke() {
     let cases: [(&str, &[&str], f64, f64); 3] = [
         (
             "knee",
-            &[
-                "knee-press",
-                "--stroke",
-                "90 mm",
-                "--k",
-                "1.12",
-                "--rocker",
-                "220 mm",
-                "--link",
-                "220 mm",
-                "--delta",
-                "5",
-                "--horizontal",
-                "280 mm",
-                "--direction",
-                "cw",
-            ],
+            &[KNEE, &["--horizontal", "280 mm", "--direction", "cw"]].concat(),
             1.12,
             0.09,
         ),
-        (
-            "shaper",
-            &[
-                "slotted-lever",
-                "--stroke",
-                "400 mm",
-                "--k",
-                "1.5",
-                "--pivots",
-                "50 mm",
-                "--coupler-ratio",
-                "3",
-            ],
-            1.5,
-            0.4,
-        ),
-        (
-            "inversion",
-            &[
-                "six-bar-inversion",
-                "--k",
-                "1.15",
-                "--travel",
-                "360 mm",
-                "--guide",
-                "-320 mm",
-                "--start",
-                "180 mm",
-                "--coupler",
-                "320 mm",
-                "--swing",
-                "70",
-                "--lever",
-                "360 mm",
-                "--pivot-through",
-                "0 m, 0.2 m",
-            ],
-            1.15,
-            0.36,
-        ),
+        ("shaper", SHAPER, 1.5, 0.4),
+        ("inversion", &[INVERSION, &["--pivot-through", "0 m, 0.2 m"]].concat(), 1.15, 0.36),
     ];
     for (n, a, k, h) in cases {
         let v = synth_then_linkage(n, a, None);
@@ -173,23 +178,7 @@ fn knee_press_shaper_and_six_bars_reach_k_and_stroke() {
     // D stays at a fixed horizontal distance from C at one height of C... so
     // the stroke is compared with the one the synthesis reports, and l_CD
     // with its closed form 0.4/sin 38°.
-    let a = [
-        "six-bar-pressure",
-        "--k",
-        "1.07",
-        "--swing",
-        "55",
-        "--arm-b",
-        "0.6 m",
-        "--arm-c",
-        "0.6 m",
-        "--guide",
-        "-0.2 m",
-        "--max-pressure",
-        "38",
-        "--extreme-pressure",
-        "38",
-    ];
+    let a = [PRESSURE, &["--extreme-pressure", "38"]].concat();
     let v = synth_then_linkage("pressure", &a, None);
     close("Kv", v["kv"].as_f64().unwrap(), 1.07, 1e-9);
     let mut j = vec!["synth"];
@@ -819,78 +808,10 @@ fn every_kind_written_with_task_runs_through_linkage_forces_and_run() {
                 "90, 95",
             ],
         ),
-        (
-            "t-sl",
-            &[
-                "slotted-lever",
-                "--stroke",
-                "400 mm",
-                "--k",
-                "1.5",
-                "--pivots",
-                "50 mm",
-                "--coupler-ratio",
-                "3",
-                "--lever",
-                "oscillating",
-            ],
-        ),
-        (
-            "t-kp",
-            &[
-                "knee-press",
-                "--stroke",
-                "90 mm",
-                "--k",
-                "1.12",
-                "--rocker",
-                "220 mm",
-                "--link",
-                "220 mm",
-                "--delta",
-                "5",
-                "--optimum",
-            ],
-        ),
-        (
-            "t-inv",
-            &[
-                "six-bar-inversion",
-                "--k",
-                "1.15",
-                "--travel",
-                "360 mm",
-                "--guide",
-                "-320 mm",
-                "--start",
-                "180 mm",
-                "--coupler",
-                "320 mm",
-                "--swing",
-                "70",
-                "--lever",
-                "360 mm",
-            ],
-        ),
-        (
-            "t-pr",
-            &[
-                "six-bar-pressure",
-                "--k",
-                "1.07",
-                "--swing",
-                "55",
-                "--arm-b",
-                "0.6 m",
-                "--arm-c",
-                "0.6 m",
-                "--guide",
-                "-0.2 m",
-                "--max-pressure",
-                "38",
-                "--optimum",
-            ],
-        ),
+        ("t-sl", &[SHAPER, &["--lever", "oscillating"]].concat()),
+        ("t-kp", &[KNEE, &["--optimum"]].concat()),
+        ("t-inv", INVERSION),
+        ("t-pr", &[PRESSURE, &["--optimum"]].concat()),
     ];
     for (n, a) in cases {
         let d = tmp(n);
