@@ -5,9 +5,7 @@
 //! the run-up from rest to the steady cycle.
 
 use divan::black_box;
-use tmm_linkage::Mechanism;
 use tmm_linkage::dynamics::{DrivingMoment, Dynamics, DynamicsSpec, Motor};
-use tmm_linkage::forces::{Action, Law, Loads, Resistance};
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -16,27 +14,11 @@ fn main() {
     divan::main();
 }
 
-fn loads(m: &Mechanism) -> Loads {
-    let lens = [0.12, 0.48, 0.38];
-    let mut loads = Loads::new(m);
-    for i in 1..=3 {
-        let mass = 10.0 * lens[i - 1];
-        loads.links[i].mass = mass;
-        loads.links[i].inertia = 0.1 * mass * lens[i - 1] * lens[i - 1];
-    }
-    loads.resistance.push(Resistance {
-        link: 3,
-        action: Action::Moment { sign: None },
-        law: Law::Constant(380.0),
-    });
-    loads
-}
-
 /// Constant driving moment (the course's assumption).
 #[divan::bench]
 fn seed001_constant_moment(b: divan::Bencher) {
     let m = common::seed001();
-    let l = loads(&m);
+    let l = common::seed001_loads(&m);
     let spec = DynamicsSpec::new(0.02);
     b.bench(|| black_box(Dynamics::compute(black_box(&m), &l, &spec).unwrap().required.exact));
 }
@@ -46,7 +28,7 @@ fn seed001_constant_moment(b: divan::Bencher) {
 #[divan::bench]
 fn seed001_motor_runup(b: divan::Bencher) {
     let m = common::seed001();
-    let l = loads(&m);
+    let l = common::seed001_loads(&m);
     let mut spec = DynamicsSpec::new(0.02);
     spec.driving = DrivingMoment::Motor(Motor {
         synchronous_speed: 157.08,

@@ -7,27 +7,9 @@ use crate::common;
 
 use common::*;
 use tmm_geom::{Vec2, cross};
-use tmm_linkage::forces::{Action, Beam, ForceError, Kinetostatics, Law, LinkLoad, Loads, PointForce, Resistance, size_sections};
+use tmm_linkage::forces::{Action, Beam, ForceError, Kinetostatics, Law, Loads, PointForce, Resistance, size_sections};
 use tmm_linkage::mechanism::Pair;
 use tmm_linkage::{InputDef, LinkDef, Mechanism, MechanismDef, SliderDef};
-
-/// Random loads on every link: masses, inertia, point forces, moments, gravity.
-fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
-    let mut l = Loads::new(m);
-    l.gravity = v(rng.sym(3.0), -9.81 + rng.sym(3.0));
-    for i in 1..m.link_names.len() {
-        l.links[i] = LinkLoad {
-            mass: 0.1 + 5.0 * rng.uniform(),
-            inertia: 0.01 + 0.2 * rng.uniform(),
-            forces: vec![PointForce {
-                local: v(rng.sym(0.2), rng.sym(0.2)),
-                force: v(rng.sym(300.0), rng.sym(300.0)),
-            }],
-            moment: rng.sym(50.0),
-        };
-    }
-    l
-}
 
 /// Virtual power of all given loads at a solved position, computed here from
 /// the link states (not from the crate's reductions).

@@ -3,7 +3,7 @@
 #![allow(dead_code)]
 
 use tmm_geom::Vec2;
-use tmm_linkage::forces::{Action, Law, Loads, Resistance};
+use tmm_linkage::forces::{Action, Law, LinkLoad, Loads, PointForce, Resistance};
 use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, SliderDef};
 
 pub fn v(x: f64, y: f64) -> Vec2 {
@@ -218,4 +218,40 @@ pub fn triad() -> Mechanism {
 /// [`slotted_def`] compiled.
 pub fn slotted() -> Mechanism {
     Mechanism::new(&slotted_def()).unwrap()
+}
+
+/// Seed 001 loads: 10 kg/m, J_S = 0.1·m·l², S mid-link, no gravity, 380 N·m
+/// on the rocker against its rotation.
+pub fn seed001_loads(m: &Mechanism) -> Loads {
+    let lens = [0.12, 0.48, 0.38];
+    let mut loads = Loads::new(m);
+    for i in 1..=3 {
+        let mass = 10.0 * lens[i - 1];
+        loads.links[i].mass = mass;
+        loads.links[i].inertia = 0.1 * mass * lens[i - 1] * lens[i - 1];
+    }
+    loads.resistance.push(Resistance {
+        link: 3,
+        action: Action::Moment { sign: None },
+        law: Law::Constant(380.0),
+    });
+    loads
+}
+
+/// Random masses, inertias, gravity, external forces and moments.
+pub fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
+    let mut l = Loads::new(m);
+    l.gravity = v(rng.sym(3.0), -9.81 + rng.sym(3.0));
+    for i in 1..m.link_names.len() {
+        l.links[i] = LinkLoad {
+            mass: 0.1 + 5.0 * rng.uniform(),
+            inertia: 0.01 + 0.2 * rng.uniform(),
+            forces: vec![PointForce {
+                local: v(rng.sym(0.2), rng.sym(0.2)),
+                force: v(rng.sym(300.0), rng.sym(300.0)),
+            }],
+            moment: rng.sym(50.0),
+        };
+    }
+    l
 }
