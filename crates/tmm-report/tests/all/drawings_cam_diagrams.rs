@@ -5,27 +5,15 @@
 //! μ_φ, the language of the words and the decimal comma, labels clear of
 //! each other.
 
-use std::path::Path;
-
 use serde_json::Value;
-use tmm_report::TaskSource;
+
+use crate::svg_read::{attr_s, run_example as run};
 use tmm_report::paper::{Slot, slot_mm};
 use tmm_report::project::SheetFormat;
-use tmm_report::run::{Run, run_task};
+use tmm_report::run::Run;
 
 const FILES: [&str; 4] = ["cam-analogs.svg", "cam-motion.svg", "cam-pressure.svg", "cam-sizing.svg"];
 const EXAMPLES: [&str; 3] = ["cam-seed-001-roller.toml", "cam-seed-001-flat.toml", "cam-oscillating-roller.toml"];
-
-fn example(name: &str) -> String {
-    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name);
-    std::fs::read_to_string(p).unwrap()
-}
-
-/// Run an example with `[project]` added (sheet format, language).
-fn run(name: &str, sheet: &str, lang: &str) -> Run {
-    let text = format!("{}\n[project]\nsheet = \"{sheet}\"\nlang = \"{lang}\"\n", example(name));
-    run_task(&TaskSource::new(name, text)).unwrap()
-}
 
 fn svg<'a>(r: &'a Run, file: &str) -> &'a str {
     let path = format!("cam/{file}");
@@ -38,12 +26,6 @@ fn json(r: &Run) -> Value {
 
 fn attr(el: &str, name: &str) -> Option<f64> {
     attr_s(el, name)?.parse().ok()
-}
-
-fn attr_s<'a>(el: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = el.find(&key)? + key.len();
-    Some(&el[i..i + el[i..].find('"')?])
 }
 
 /// The paper size (mm) from the root's width and height.

@@ -8,6 +8,8 @@
 use std::path::Path;
 
 use tmm_report::TaskSource;
+
+use crate::svg_read::{attr, num, paper, texts};
 use tmm_report::output::Documents;
 use tmm_report::paper::{STANDARD_SCALES, Slot, round_mu, slot_mm};
 use tmm_report::project::{Language, SheetFormat};
@@ -37,51 +39,6 @@ fn synthesis_tasks() -> Vec<(String, String)> {
         v.push((name.clone(), std::fs::read_to_string(examples().join(&name)).unwrap()));
     }
     v
-}
-
-fn attr(tag: &str, name: &str) -> Option<String> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(tag[i..i + tag[i..].find('"')?].to_string())
-}
-
-fn num(tag: &str, name: &str) -> f64 {
-    attr(tag, name).unwrap().trim_end_matches("mm").parse().unwrap()
-}
-
-fn paper(svg: &str) -> (f64, f64, String) {
-    let root = svg.lines().find(|l| l.starts_with("<svg")).unwrap();
-    (num(root, "width"), num(root, "height"), root.to_string())
-}
-
-/// A text's shown characters and its box, estimated independently of the
-/// drawing code: 0.6 of the height per character, 0.85 above and 0.35
-/// below the baseline (a rotated text is skipped).
-fn texts(svg: &str) -> Vec<(String, [f64; 4])> {
-    let mut out = Vec::new();
-    for l in svg.lines().filter(|l| l.starts_with("<text") && !l.contains("rotate(")) {
-        let inner = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap()];
-        let mut shown = String::new();
-        let mut in_tag = false;
-        for ch in inner.chars() {
-            match ch {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                c if !in_tag => shown.push(c),
-                _ => {}
-            }
-        }
-        let shown = shown.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
-        let (x, y, s) = (num(l, "x"), num(l, "y"), num(l, "font-size"));
-        let w = 0.6 * s * shown.chars().count() as f64;
-        let x0 = match attr(l, "text-anchor").as_deref() {
-            Some("middle") => x - w / 2.0,
-            Some("end") => x - w,
-            _ => x,
-        };
-        out.push((shown, [x0, y - 0.85 * s, x0 + w, y + 0.35 * s]));
-    }
-    out
 }
 
 fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
@@ -127,7 +84,7 @@ fn check_fits(name: &str, path: &str, svg: &str, slot: Slot, sheet: SheetFormat)
     let (w, h, _) = paper(svg);
     let (sw, sh) = slot_mm(slot, sheet);
     assert!(w <= sw + 1e-9 && h <= sh + 1e-9, "{name} {path} {sheet:?}: {w}×{h} over {sw}×{sh}");
-    for (t, b) in texts(svg) {
+    for (t, b) in texts(svg, true) {
         assert!(
             b[0] >= -1e-6 && b[1] >= -1e-6 && b[2] <= w + 1e-6 && b[3] <= h + 1e-6,
             "{name} {path} {sheet:?}: \"{t}\" {b:?} off the {w}×{h} paper"
@@ -137,7 +94,7 @@ fn check_fits(name: &str, path: &str, svg: &str, slot: Slot, sheet: SheetFormat)
 
 /// No two texts' boxes overlap.
 fn check_apart(name: &str, path: &str, svg: &str) {
-    let t = texts(svg);
+    let t = texts(svg, true);
     for i in 0..t.len() {
         for j in i + 1..t.len() {
             assert!(
@@ -155,7 +112,7 @@ fn check_apart(name: &str, path: &str, svg: &str) {
 /// No English word (three Latin lower-case letters in a row; the indices
 /// max and min of ω_max, ω_min are notation) and no decimal point.
 fn check_russian(name: &str, path: &str, svg: &str) {
-    for (t, _) in texts(svg) {
+    for (t, _) in texts(svg, true) {
         let mut run = 0;
         for ch in t.replace("max", "").replace("min", "").chars() {
             run = if ch.is_ascii_lowercase() { run + 1 } else { 0 };
@@ -209,7 +166,7 @@ fn cycle_diagrams_mark_the_positions_at_a_round_mu() {
             "epsilon.svg",
         ] {
             let svg = docs.get(&format!("dynamics/{file}")).unwrap().as_text().unwrap();
-            let t = texts(svg);
+            let t = texts(svg, true);
             // the scale factors: "μ_φ = 2 °/мм" and μ of the quantity, both round
             let line = t
                 .iter()
@@ -337,7 +294,7 @@ fn plots_use_the_decimal_comma_in_russian() {
         assert!(!plots.is_empty());
         let mut fractional = 0;
         for (path, svg) in &plots {
-            for (t, _) in texts(svg) {
+            for (t, _) in texts(svg, true) {
                 let b: Vec<char> = t.chars().collect();
                 for i in 1..b.len().saturating_sub(1) {
                     let between = b[i - 1].is_ascii_digit() && b[i + 1].is_ascii_digit();

@@ -3,36 +3,15 @@
 //! task's data, GOST 2.302 scales, GOST 2.304 lettering, the slots of the
 //! A1 and A2 sheets.
 
-use std::path::Path;
-
-use tmm_report::TaskSource;
-use tmm_report::run::{Run, run_task};
-
-fn example(name: &str) -> String {
-    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name);
-    std::fs::read_to_string(p).unwrap()
-}
-
-/// Run an example with `[project]` added (sheet format, language).
-fn run(name: &str, sheet: &str, lang: &str) -> Run {
-    let text = format!("{}\n[project]\nsheet = \"{sheet}\"\nlang = \"{lang}\"\n", example(name));
-    run_task(&TaskSource::new(name, text)).unwrap()
-}
+use crate::svg_read::{attr_s, run_example as run};
+use tmm_report::run::Run;
 
 fn svg<'a>(r: &'a Run, path: &str) -> &'a str {
     r.docs.get(path).unwrap_or_else(|| panic!("{path}")).as_text().unwrap()
 }
 
 fn attr(el: &str, name: &str) -> Option<f64> {
-    let key = format!(" {name}=\"");
-    let i = el.find(&key)? + key.len();
-    el[i..i + el[i..].find('"')?].parse().ok()
-}
-
-fn attr_s<'a>(el: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = el.find(&key)? + key.len();
-    Some(&el[i..i + el[i..].find('"')?])
+    attr_s(el, name)?.parse().ok()
 }
 
 /// The paper size (mm) from the root's width and height.

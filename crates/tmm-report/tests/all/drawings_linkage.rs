@@ -8,6 +8,8 @@
 use std::path::Path;
 
 use tmm_report::TaskSource;
+
+use crate::svg_read::{attr, num, paper, texts};
 use tmm_report::linkage::{analyse, drawings, json_document, load};
 use tmm_report::paper::{STANDARD_SCALES, Slot, slot_mm};
 use tmm_report::project::{Language, SheetFormat};
@@ -19,52 +21,6 @@ fn tasks() -> Vec<(String, String)> {
         v.push((name.to_string(), std::fs::read_to_string(dir.join(name)).unwrap()));
     }
     v
-}
-
-fn attr(tag: &str, name: &str) -> Option<String> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(tag[i..i + tag[i..].find('"')?].to_string())
-}
-
-fn num(tag: &str, name: &str) -> f64 {
-    attr(tag, name).unwrap().trim_end_matches("mm").parse().unwrap()
-}
-
-/// The paper size from the root element.
-fn paper(svg: &str) -> (f64, f64, String) {
-    let root = svg.lines().find(|l| l.starts_with("<svg")).unwrap();
-    (num(root, "width"), num(root, "height"), root.to_string())
-}
-
-/// A text's shown characters (the tspans' markup dropped) and its box,
-/// estimated independently of the drawing code: 0.6 of the height per
-/// character, 0.85 above and 0.35 below the baseline.
-fn texts(svg: &str) -> Vec<(String, [f64; 4])> {
-    let mut out = Vec::new();
-    for l in svg.lines().filter(|l| l.starts_with("<text")) {
-        let inner = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap()];
-        let mut shown = String::new();
-        let mut in_tag = false;
-        for ch in inner.chars() {
-            match ch {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                c if !in_tag => shown.push(c),
-                _ => {}
-            }
-        }
-        let shown = shown.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
-        let (x, y, s) = (num(l, "x"), num(l, "y"), num(l, "font-size"));
-        let w = 0.6 * s * shown.chars().count() as f64;
-        let x0 = match attr(l, "text-anchor").as_deref() {
-            Some("middle") => x - w / 2.0,
-            Some("end") => x - w,
-            _ => x,
-        };
-        out.push((shown, [x0, y - 0.85 * s, x0 + w, y + 0.35 * s]));
-    }
-    out
 }
 
 /// Straight segments of the `<line>` elements and polylines.
@@ -135,7 +91,7 @@ fn every_drawing_fits_its_slot_and_keeps_inside_its_paper() {
                 let (w, h, _) = paper(svg);
                 let (sw, sh) = slot_mm(slot_of(&d.path), sheet);
                 assert!(w <= sw + 1e-9 && h <= sh + 1e-9, "{name} {}: {w}×{h} in {sw}×{sh}", d.path);
-                for (t, b) in texts(svg) {
+                for (t, b) in texts(svg, false) {
                     assert!(
                         b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= w && b[3] <= h,
                         "{name} {}: \"{t}\" {b:?} leaves the paper {w}×{h}",
@@ -162,7 +118,7 @@ fn labels_do_not_collide() {
         let (docs, ..) = run(&name, &text, Language::Ru, SheetFormat::A1);
         for d in docs.iter() {
             let svg = d.as_text().unwrap();
-            let t = texts(svg);
+            let t = texts(svg, false);
             for i in 0..t.len() {
                 for j in i + 1..t.len() {
                     assert!(
@@ -280,7 +236,7 @@ fn russian_drawings_have_no_english_words_and_use_the_decimal_comma() {
     for (name, text) in tasks() {
         let (docs, ..) = run(&name, &text, Language::Ru, SheetFormat::A1);
         for d in docs.iter() {
-            for (t, _) in texts(d.as_text().unwrap()) {
+            for (t, _) in texts(d.as_text().unwrap(), false) {
                 // Latin letters are the points' and quantities' names (B, CB, s, v):
                 // a run of three lower-case Latin letters is a word
                 let mut run = 0;
@@ -329,7 +285,7 @@ fn force_plans_and_the_lever_fit_their_slot_with_labels_apart() {
                     .unwrap();
                 let m = mu / 10f64.powf(mu.log10().floor());
                 assert!([1.0, 2.0, 2.5, 4.0, 5.0].iter().any(|r| (m - r).abs() < 1e-9), "{name}: μ = {mu}");
-                let tx = texts(svg);
+                let tx = texts(svg, false);
                 for (s, b) in &tx {
                     assert!(
                         b[0] >= 0.0 && b[1] >= 0.0 && b[2] <= w && b[3] <= h,
@@ -397,7 +353,7 @@ fn balancing_torque_circles_sit_on_the_curve() {
         assert!((y - cy).abs() < 0.05, "circle at x {cx}: {cy} against the curve's {y}");
     }
     // one turn: the last position mark at the curve's end, 360° from its start
-    let shown = texts(&svg);
+    let shown = texts(&svg, false);
     let twelve = shown.iter().find(|t| t.0 == "12").unwrap().1;
     assert!(
         (0.5 * (twelve[0] + twelve[2]) - x1).abs() < 0.5,
@@ -470,7 +426,7 @@ fn synthesis_constructions_keep_their_labels_off_the_lines() {
             let mut segs = segments(svg);
             segs.extend(polygon_segments(svg));
             assert!(segs.len() > 10, "{name}: {} segments", segs.len());
-            let t = texts(svg);
+            let t = texts(svg, false);
             assert!(t.len() >= 5, "{name}: {} texts", t.len());
             for (i, (txt, b)) in t.iter().enumerate() {
                 assert!(

@@ -13,4 +13,5 @@ mod hardening_examples;
 mod linkage_examples;
 mod seg_index;
 mod sheets;
+mod svg_read;
 mod units;

@@ -1,0 +1,77 @@
+//! Reading a drawing back for the tests: attributes and numbers of an SVG
+//! element, the paper's size, and each text's shown characters with a box
+//! estimated independently of the drawing code; and running an example with
+//! the sheet and language asked.
+
+use std::path::Path;
+
+use tmm_report::TaskSource;
+use tmm_report::run::{Run, run_task};
+
+/// The value of the attribute `name` of the element `tag`, if it has one.
+pub fn attr_s<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!(" {name}=\"");
+    let i = tag.find(&key)? + key.len();
+    Some(&tag[i..i + tag[i..].find('"')?])
+}
+
+/// [`attr_s`] as an owned string.
+pub fn attr(tag: &str, name: &str) -> Option<String> {
+    attr_s(tag, name).map(str::to_string)
+}
+
+/// A numeric attribute (a trailing `mm` dropped); panics if it is missing.
+pub fn num(tag: &str, name: &str) -> f64 {
+    attr(tag, name).unwrap().trim_end_matches("mm").parse().unwrap()
+}
+
+/// The paper's width and height, mm, and the root element.
+pub fn paper(svg: &str) -> (f64, f64, String) {
+    let root = svg.lines().find(|l| l.starts_with("<svg")).unwrap();
+    (num(root, "width"), num(root, "height"), root.to_string())
+}
+
+/// Each text's shown characters (the tspans' markup dropped) and its box:
+/// 0.6 of the height per character, 0.85 above and 0.35 below the baseline.
+/// Rotated texts are left out when `skip_rotated`.
+pub fn texts(svg: &str, skip_rotated: bool) -> Vec<(String, [f64; 4])> {
+    let mut out = Vec::new();
+    for l in svg
+        .lines()
+        .filter(|l| l.starts_with("<text") && !(skip_rotated && l.contains("rotate(")))
+    {
+        let inner = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap()];
+        let mut shown = String::new();
+        let mut in_tag = false;
+        for ch in inner.chars() {
+            match ch {
+                '<' => in_tag = true,
+                '>' => in_tag = false,
+                c if !in_tag => shown.push(c),
+                _ => {}
+            }
+        }
+        let shown = shown.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
+        let (x, y, s) = (num(l, "x"), num(l, "y"), num(l, "font-size"));
+        let w = 0.6 * s * shown.chars().count() as f64;
+        let x0 = match attr(l, "text-anchor").as_deref() {
+            Some("middle") => x - w / 2.0,
+            Some("end") => x - w,
+            _ => x,
+        };
+        out.push((shown, [x0, y - 0.85 * s, x0 + w, y + 0.35 * s]));
+    }
+    out
+}
+
+/// The text of `examples/<name>`.
+pub fn example(name: &str) -> String {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name);
+    std::fs::read_to_string(p).unwrap()
+}
+
+/// `tmm run` in memory on an example, on the sheet and in the language given.
+pub fn run_example(name: &str, sheet: &str, lang: &str) -> Run {
+    let text = format!("{}\n[project]\nsheet = \"{sheet}\"\nlang = \"{lang}\"\n", example(name));
+    run_task(&TaskSource::new(name, text)).unwrap()
+}
