@@ -394,3 +394,81 @@ fn infeasible_requests_of_every_kind_name_the_field_and_the_nearest_value() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The working stroke's largest pressure angle of a shaper's ram, by brute
+/// force over 20 001 crank angles: the coupler CD pushes the ram D along its
+/// guide, so ϑ is the angle between CD and the guide (the block slides in a
+/// slot through the lever's pivot, where the force is normal to the slot and
+/// so is the lever's velocity: ϑ = 0 there). The working stroke is the longer
+/// crank travel between the two dead positions (K > 1).
+fn shaper_working_pressure(s: &Synthesis) -> f64 {
+    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
+    let idx = |n: &str| m.points.iter().position(|p| p.name == n).unwrap();
+    let (c, d) = (idx("C"), idx("D"));
+    let guide = s.def.sliders.iter().find(|g| g.point == "D").unwrap().angle;
+    let u = Vec2::new(guide.cos(), guide.sin());
+    let sg = m.crank.omega.signum();
+    let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
+    let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
+    let (start, len) = if first > PI { (d0, first) } else { (d1, 2.0 * PI - first) };
+    let mut sol = m.solution();
+    let mut worst = 0.0f64;
+    for k in 0..=20_000 {
+        m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
+        let cd = sol.points[d].p - sol.points[c].p;
+        let cos = (cd.x * u.x + cd.y * u.y).abs() / cd.hypot();
+        worst = worst.max(cos.min(1.0).acos());
+    }
+    worst
+}
+
+/// A pressure limit on the working stroke holds on every shaper the synthesis
+/// returns, and every refusal by that limit is right: the same request
+/// without the limit gives a ram whose brute-force pressure angle exceeds it.
+#[test]
+fn shaper_pressure_limits_hold_by_brute_force() {
+    let mut rng = Rng(0x5eed_0014);
+    let (mut kept, mut refused) = (0, 0);
+    for i in 0..300 {
+        let h = 0.1 + rng.uniform();
+        let k = 1.05 + 1.4 * rng.uniform();
+        let loe = h * (0.02 + 0.3 * rng.uniform());
+        let lever = if i % 2 == 0 { Lever::Rotating } else { Lever::Oscillating };
+        let q = 1.5 + 3.0 * rng.uniform();
+        let limit = (3.0 + 27.0 * rng.uniform()).to_radians();
+        let request = |limits| SlottedRequest {
+            stroke: h,
+            k,
+            pivots: loe,
+            coupler: Coupler::Ratio(q),
+            lever,
+            drive: Drive::default(),
+            limits,
+        };
+        let free = slotted::synthesize(&request(Limits::default())).unwrap_or_else(|e| panic!("{i}: {e}"));
+        let worst = shaper_working_pressure(&free);
+        let limited = Limits {
+            pressure_working: Some(limit),
+            ..Limits::default()
+        };
+        match slotted::synthesize(&request(limited)) {
+            Ok(s) => {
+                kept += 1;
+                let w = shaper_working_pressure(&s);
+                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
+            }
+            Err(SynthesisError::Infeasible { .. }) => {
+                refused += 1;
+                assert!(
+                    worst > limit - 1e-6,
+                    "{i}: refused, but the ram's ϑ is {}° ≤ {}°",
+                    worst.to_degrees(),
+                    limit.to_degrees()
+                );
+            }
+            Err(e) => panic!("{i}: {e}"),
+        }
+    }
+    // both outcomes occur
+    assert!(kept > 30 && refused > 30, "{kept} kept, {refused} refused");
+}
