@@ -456,6 +456,11 @@ fn shaper_pressure_limits_hold_by_brute_force() {
                 kept += 1;
                 let w = shaper_working_pressure(&s);
                 assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
+                assert!(
+                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
+                    "{i}: {w} vs {:?}",
+                    s.check.pressure_angle_max
+                );
             }
             Err(SynthesisError::Infeasible { .. }) => {
                 refused += 1;
@@ -471,4 +476,185 @@ fn shaper_pressure_limits_hold_by_brute_force() {
     }
     // both outcomes occur
     assert!(kept > 30 && refused > 30, "{kept} kept, {refused} refused");
+}
+
+/// The acute angle between the lines of `a` and `b`, rad.
+fn line_angle(a: Vec2, b: Vec2) -> f64 {
+    ((a.x * b.x + a.y * b.y).abs() / (a.hypot() * b.hypot())).min(1.0).acos()
+}
+
+/// A knee press's largest pressure angle on the working stroke by brute
+/// force over 20 001 crank angles, from the geometry alone: the coupler AB
+/// pushes the rocker CB at B, which moves normal to CB; the link BF pushes
+/// the ram F along its guide.
+fn knee_working_pressure(s: &Synthesis) -> f64 {
+    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
+    let idx = |n: &str| m.points.iter().position(|p| p.name == n).unwrap();
+    let (a, b, c, f) = (idx("A"), idx("B"), idx("C"), idx("F"));
+    let guide = s.def.sliders.iter().find(|g| g.point == "F").unwrap().angle;
+    let u = Vec2::new(guide.cos(), guide.sin());
+    let sg = m.crank.omega.signum();
+    let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
+    let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
+    let (start, len) = if first > PI { (d0, first) } else { (d1, 2.0 * PI - first) };
+    let mut sol = m.solution();
+    let mut worst = 0.0f64;
+    for k in 0..=20_000 {
+        m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
+        let p = |i: usize| sol.points[i].p;
+        let cb = p(b) - p(c);
+        let at_b = line_angle(p(b) - p(a), Vec2::new(-cb.y, cb.x));
+        let at_f = line_angle(p(f) - p(b), u);
+        worst = worst.max(at_b).max(at_f);
+    }
+    worst
+}
+
+/// A working-stroke pressure limit holds, by the brute force above, on every
+/// knee press the synthesis returns (the pivot chosen for the largest margin).
+#[test]
+fn knee_press_pressure_limits_hold_by_brute_force() {
+    let mut rng = Rng(0x5eed_0015);
+    let (mut kept, mut refused) = (0, 0);
+    for i in 0..200 {
+        let l = 0.1 + 0.4 * rng.uniform();
+        let lf = if i % 2 == 0 { l } else { l * (1.0 + 0.5 * rng.uniform()) };
+        let delta = (2.0 + 15.0 * rng.uniform()).to_radians();
+        let depth = |b: f64| l * b.cos() + (lf * lf - (l * b.sin()).powi(2)).sqrt();
+        let h = (depth(delta) - depth(PI / 2.0)) * (0.1 + 0.7 * rng.uniform());
+        let k = 1.05 + 0.45 * rng.uniform();
+        let limit = (20.0 + 40.0 * rng.uniform()).to_radians();
+        let r = KneeRequest {
+            stroke: h,
+            k,
+            rocker: l,
+            link: lf,
+            delta,
+            pivot: KneePivot::Optimum,
+            drive: Drive::default(),
+            limits: Limits {
+                pressure_working: Some(limit),
+                ..Limits::default()
+            },
+        };
+        match knee_press::synthesize(&r) {
+            Ok(s) => {
+                kept += 1;
+                let w = knee_working_pressure(&s);
+                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
+                // and the brute force agrees with the design's own check
+                assert!(
+                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
+                    "{i}: {w} vs {:?}",
+                    s.check.pressure_angle_max
+                );
+            }
+            Err(SynthesisError::Infeasible { .. }) => refused += 1,
+            Err(e) => panic!("{i}: {e}"),
+        }
+    }
+    assert!(kept > 20 && refused > 20, "{kept} kept, {refused} refused");
+}
+
+/// A six-bar's largest pressure angle on the working stroke by brute force
+/// over 20 001 crank angles, from the geometry alone: the coupler AB pushes
+/// the lever at B, which turns about its frame pivot; the slider's coupler
+/// (link 4) pushes the slider along its guide.
+fn six_bar_working_pressure(s: &Synthesis) -> f64 {
+    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
+    let idx = |n: &str| m.points.iter().position(|p| p.name == n).unwrap();
+    let slider = &s.def.sliders[0];
+    let to = slider.point.as_str();
+    let link4 = s.def.links.iter().find(|l| l.name == "4").unwrap();
+    let from = link4.points.iter().map(|(n, _)| n.as_str()).find(|n| *n != to).unwrap();
+    let (a, b, o, f, t) = (idx("A"), idx("B"), idx(&s.def.fixed[1].0), idx(from), idx(to));
+    let u = Vec2::new(slider.angle.cos(), slider.angle.sin());
+    let sg = m.crank.omega.signum();
+    let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
+    let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
+    let (start, len) = if first > PI { (d0, first) } else { (d1, 2.0 * PI - first) };
+    let mut sol = m.solution();
+    let mut worst = 0.0f64;
+    for k in 0..=20_000 {
+        m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
+        let p = |i: usize| sol.points[i].p;
+        let ob = p(b) - p(o);
+        let at_b = line_angle(p(b) - p(a), Vec2::new(-ob.y, ob.x));
+        let at_t = line_angle(p(t) - p(f), u);
+        worst = worst.max(at_b).max(at_t);
+    }
+    worst
+}
+
+/// A working-stroke pressure limit holds, by the brute force above, on every
+/// six-bar (by inversion and by pressure) the synthesis returns.
+#[test]
+fn six_bar_pressure_limits_hold_by_brute_force() {
+    let mut rng = Rng(0x5eed_0016);
+    let (mut kept, mut refused) = (0, 0);
+    for i in 0..300 {
+        let limit = (25.0 + 35.0 * rng.uniform()).to_radians();
+        let limits = Limits {
+            pressure_working: Some(limit),
+            ..Limits::default()
+        };
+        let result = if i % 2 == 0 {
+            let rho = 0.2 + 0.3 * rng.uniform();
+            let gamma = (30.0 + 50.0 * rng.uniform()).to_radians();
+            let a0 = (-120.0 + 30.0 * rng.uniform()).to_radians();
+            let yg = -(0.7 + 0.5 * rng.uniform()) * rho;
+            let led = (0.9 + 0.8 * rng.uniform()) * rho;
+            let d = |a: f64| Vec2::new(a.cos(), a.sin()) * rho;
+            let e = |a: f64| {
+                let p = d(a);
+                Vec2::new(p.x + (led * led - (yg - p.y).powi(2)).sqrt(), yg)
+            };
+            let (e1, e2) = (e(a0), e(a0 + gamma));
+            if !(e1.x.is_finite() && e2.x.is_finite()) {
+                continue;
+            }
+            six_bar::by_inversion(&InversionRequest {
+                k: 1.05 + 0.35 * rng.uniform(),
+                travel: e2.x - e1.x,
+                guide: yg,
+                start: e1.x,
+                coupler: led,
+                swing: gamma,
+                lever: (0.5 + rng.uniform()) * rho,
+                pivot: PivotCondition::Optimum,
+                drive: Drive::default(),
+                limits,
+            })
+        } else {
+            let p = (30.0 + 20.0 * rng.uniform()).to_radians();
+            let (lb, lc) = (0.3 + 0.5 * rng.uniform(), 0.3 + 0.5 * rng.uniform());
+            six_bar::by_pressure(&PressureRequest {
+                k: 1.05 + 0.25 * rng.uniform(),
+                swing: (25.0 + 45.0 * rng.uniform()).to_radians(),
+                arm_b: lb,
+                arm_c: lc,
+                arm_angle: PI,
+                guide: -lc * (0.1 + 0.6 * rng.uniform()),
+                max_pressure: p,
+                pivot: PivotCondition::Optimum,
+                drive: Drive::default(),
+                limits,
+            })
+        };
+        match result {
+            Ok(s) => {
+                kept += 1;
+                let w = six_bar_working_pressure(&s);
+                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
+                assert!(
+                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
+                    "{i}: {w} vs {:?}",
+                    s.check.pressure_angle_max
+                );
+            }
+            Err(SynthesisError::Infeasible { .. }) => refused += 1,
+            Err(e) => panic!("{i}: {e}"),
+        }
+    }
+    assert!(kept > 30 && refused > 10, "{kept} kept, {refused} refused");
 }
