@@ -395,18 +395,15 @@ fn infeasible_requests_of_every_kind_name_the_field_and_the_nearest_value() {
     }
 }
 
-/// The working stroke's largest pressure angle of a shaper's ram, by brute
-/// force over 20 001 crank angles: the coupler CD pushes the ram D along its
-/// guide, so ϑ is the angle between CD and the guide (the block slides in a
-/// slot through the lever's pivot, where the force is normal to the slot and
-/// so is the lever's velocity: ϑ = 0 there). The working stroke is the longer
-/// crank travel between the two dead positions (K > 1).
-fn shaper_working_pressure(s: &Synthesis) -> f64 {
-    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
-    let idx = |n: &str| m.points.iter().position(|p| p.name == n).unwrap();
-    let (c, d) = (idx("C"), idx("D"));
-    let guide = s.def.sliders.iter().find(|g| g.point == "D").unwrap().angle;
-    let u = Vec2::new(guide.cos(), guide.sin());
+/// The acute angle between the lines of `a` and `b`, rad.
+fn line_angle(a: Vec2, b: Vec2) -> f64 {
+    ((a.x * b.x + a.y * b.y).abs() / (a.hypot() * b.hypot())).min(1.0).acos()
+}
+
+/// The largest of `angle` over the working stroke of a synthesised mechanism,
+/// sampled at 20 001 crank angles: the working stroke is the longer crank
+/// travel between the two dead positions the check found (K > 1).
+fn working_stroke_max(s: &Synthesis, m: &tmm_linkage::Mechanism, angle: impl Fn(&tmm_linkage::mechanism::Solution) -> f64) -> f64 {
     let sg = m.crank.omega.signum();
     let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
     let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
@@ -415,11 +412,23 @@ fn shaper_working_pressure(s: &Synthesis) -> f64 {
     let mut worst = 0.0f64;
     for k in 0..=20_000 {
         m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
-        let cd = sol.points[d].p - sol.points[c].p;
-        let cos = (cd.x * u.x + cd.y * u.y).abs() / cd.hypot();
-        worst = worst.max(cos.min(1.0).acos());
+        worst = worst.max(angle(&sol));
     }
     worst
+}
+
+/// The working stroke's largest pressure angle of a shaper's ram, by brute
+/// force over 20 001 crank angles: the coupler CD pushes the ram D along its
+/// guide, so ϑ is the angle between CD and the guide (the block slides in a
+/// slot through the lever's pivot, where the force is normal to the slot and
+/// so is the lever's velocity: ϑ = 0 there); over the working stroke, see [`working_stroke_max`].
+fn shaper_working_pressure(s: &Synthesis) -> f64 {
+    let m = tmm_linkage::Mechanism::new(&s.def).unwrap();
+    let idx = |n: &str| m.points.iter().position(|p| p.name == n).unwrap();
+    let (c, d) = (idx("C"), idx("D"));
+    let guide = s.def.sliders.iter().find(|g| g.point == "D").unwrap().angle;
+    let u = Vec2::new(guide.cos(), guide.sin());
+    working_stroke_max(s, &m, |sol| line_angle(sol.points[d].p - sol.points[c].p, u))
 }
 
 /// A pressure limit on the working stroke holds on every shaper the synthesis
@@ -478,11 +487,6 @@ fn shaper_pressure_limits_hold_by_brute_force() {
     assert!(kept > 30 && refused > 30, "{kept} kept, {refused} refused");
 }
 
-/// The acute angle between the lines of `a` and `b`, rad.
-fn line_angle(a: Vec2, b: Vec2) -> f64 {
-    ((a.x * b.x + a.y * b.y).abs() / (a.hypot() * b.hypot())).min(1.0).acos()
-}
-
 /// A knee press's largest pressure angle on the working stroke by brute
 /// force over 20 001 crank angles, from the geometry alone: the coupler AB
 /// pushes the rocker CB at B, which moves normal to CB; the link BF pushes
@@ -493,21 +497,11 @@ fn knee_working_pressure(s: &Synthesis) -> f64 {
     let (a, b, c, f) = (idx("A"), idx("B"), idx("C"), idx("F"));
     let guide = s.def.sliders.iter().find(|g| g.point == "F").unwrap().angle;
     let u = Vec2::new(guide.cos(), guide.sin());
-    let sg = m.crank.omega.signum();
-    let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
-    let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
-    let (start, len) = if first > PI { (d0, first) } else { (d1, 2.0 * PI - first) };
-    let mut sol = m.solution();
-    let mut worst = 0.0f64;
-    for k in 0..=20_000 {
-        m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
+    working_stroke_max(s, &m, |sol| {
         let p = |i: usize| sol.points[i].p;
         let cb = p(b) - p(c);
-        let at_b = line_angle(p(b) - p(a), Vec2::new(-cb.y, cb.x));
-        let at_f = line_angle(p(f) - p(b), u);
-        worst = worst.max(at_b).max(at_f);
-    }
-    worst
+        line_angle(p(b) - p(a), Vec2::new(-cb.y, cb.x)).max(line_angle(p(f) - p(b), u))
+    })
 }
 
 /// A working-stroke pressure limit holds, by the brute force above, on every
@@ -569,21 +563,11 @@ fn six_bar_working_pressure(s: &Synthesis) -> f64 {
     let from = link4.points.iter().map(|(n, _)| n.as_str()).find(|n| *n != to).unwrap();
     let (a, b, o, f, t) = (idx("A"), idx("B"), idx(&s.def.fixed[1].0), idx(from), idx(to));
     let u = Vec2::new(slider.angle.cos(), slider.angle.sin());
-    let sg = m.crank.omega.signum();
-    let (d0, d1) = (s.check.dead_phi[0], s.check.dead_phi[1]);
-    let first = (sg * (d1 - d0)).rem_euclid(2.0 * PI);
-    let (start, len) = if first > PI { (d0, first) } else { (d1, 2.0 * PI - first) };
-    let mut sol = m.solution();
-    let mut worst = 0.0f64;
-    for k in 0..=20_000 {
-        m.solve(start + sg * len * k as f64 / 20_000.0, &mut sol).unwrap();
+    working_stroke_max(s, &m, |sol| {
         let p = |i: usize| sol.points[i].p;
         let ob = p(b) - p(o);
-        let at_b = line_angle(p(b) - p(a), Vec2::new(-ob.y, ob.x));
-        let at_t = line_angle(p(t) - p(f), u);
-        worst = worst.max(at_b).max(at_t);
-    }
-    worst
+        line_angle(p(b) - p(a), Vec2::new(-ob.y, ob.x)).max(line_angle(p(t) - p(f), u))
+    })
 }
 
 /// A working-stroke pressure limit holds, by the brute force above, on every
