@@ -323,10 +323,24 @@ pub fn centre_distance(scheme: Scheme, t: &Teeth) -> f64 {
 /// assert_eq!(radial_size(Scheme::SunPlanetRing, &Teeth::single(30, 30, 90), ModuleRatio::ONE), 90.0);
 /// // ext-ext: planets stick out beyond both central wheels: 20 + 40 + 40
 /// assert_eq!(radial_size(Scheme::ExtExt, &Teeth::double(20, 40, 30, 30), ModuleRatio::ONE), 100.0);
+/// // with m_II/m_I = 5/6 and 2/3 two sets have the same size, 70/3, and the
+/// // same number: the search then ranks them by their ratio error
+/// let a = radial_size(Scheme::ExtInt, &Teeth::double(8, 7, 10, 28), ModuleRatio { num: 5, den: 6 });
+/// let b = radial_size(Scheme::ExtInt, &Teeth::double(9, 7, 11, 35), ModuleRatio { num: 2, den: 3 });
+/// assert_eq!(a, b);
+/// assert_eq!(a, 70.0 / 3.0);
 /// ```
+///
+/// Every term is a whole multiple of `1/den` for `m_II/m_I = num/den`, so the
+/// size is computed as the whole number `max(z1·den, num·z3, (2a_w/m_I)·den +
+/// max(z2·den, num·z2′))` divided once by `den` (derived here). The result is
+/// the correctly rounded value of the exact size: equal sizes give equal
+/// numbers, whatever the tooth numbers and module ratio, and the search's
+/// ranking by size is exact.
 pub fn radial_size(scheme: Scheme, t: &Teeth, q: ModuleRatio) -> f64 {
-    let qv = q.value();
-    let two_aw = span_row1(scheme, t) as f64;
-    let planet = f64::from(t.z2).max(qv * f64::from(t.z2p));
-    f64::from(t.z1).max(qv * f64::from(t.z3)).max(two_aw + planet)
+    let (num, den) = (i64::from(q.num), i64::from(q.den).max(1));
+    let two_aw = span_row1(scheme, t);
+    let planet = (i64::from(t.z2) * den).max(num * i64::from(t.z2p));
+    let size = (i64::from(t.z1) * den).max(num * i64::from(t.z3)).max(two_aw * den + planet);
+    size as f64 / den as f64
 }

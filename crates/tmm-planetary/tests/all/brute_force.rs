@@ -233,7 +233,9 @@ fn request() -> impl Strategy<Value = Request> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 160, ..ProptestConfig::default() })]
+    // `picture_ratio_is_willis` rejects about 4 draws in 10 (wheel 3 must come
+    // out whole), so the reject budget grows with PROPTEST_CASES
+    #![proptest_config(ProptestConfig { cases: 160, max_global_rejects: 1 << 20, ..ProptestConfig::default() })]
 
     #[test]
     fn search_matches_brute_force(r in request()) {
