@@ -59,8 +59,9 @@ pub enum GearError {
         /// circle (raise the shift).
         form: bool,
     },
-    /// The shift sum gives no operating pressure angle (inv αw < 0).
-    #[error("the shift sum {x_sum:.4} is too negative: inv αw = {inv_aw:.6} < 0 has no operating pressure angle")]
+    /// The shift sum gives no operating pressure angle: inv αw < 0 (too
+    /// negative), or αw practically 90° (too large).
+    #[error("{}", crate::error::shift_sum_text(*.x_sum, *.inv_aw))]
     ShiftSum {
         /// x1 + x2 (external) or x2 − x1 (internal).
         x_sum: f64,
@@ -130,6 +131,17 @@ pub(crate) fn unit_hint(m: f64) -> String {
         format!(" — did you mean {} mm? (a number without a unit is read in metres)", m)
     } else {
         String::new()
+    }
+}
+
+/// The message of [`GearError::ShiftSum`]: which way the sum is out.
+pub(crate) fn shift_sum_text(x_sum: f64, inv_aw: f64) -> String {
+    if inv_aw < 0.0 {
+        format!("the shift sum {x_sum:.4} is too negative: inv αw = {inv_aw:.6} < 0 has no operating pressure angle")
+    } else {
+        format!(
+            "the shift sum {x_sum:.4} is too large: inv αw = {inv_aw:.6} puts the operating pressure angle at practically 90°, where the teeth cannot transmit motion"
+        )
     }
 }
 

@@ -2,12 +2,14 @@
 //! (exit code 1), rendered with the place in the task file.
 //!
 //! Every message names the field (`linkage.links.BC.length`), where it is in
-//! the file (`task.toml:12:9`) and what would be valid.
+//! the file (`task.toml:12:9`) and what would be valid; numbers in it keep at
+//! most 12 digits ([`crate::message_numbers`]).
 
 use std::ops::Range;
 
 use miette::{Diagnostic, NamedSource, SourceSpan};
 
+use crate::message_numbers::tidy;
 use crate::task::TaskSource;
 
 /// A bad-input error: the message, the task file and the place in it.
@@ -54,7 +56,7 @@ impl Error {
     /// ```
     pub fn input(field: &str, message: impl std::fmt::Display) -> Self {
         Error::Input(Box::new(InputError {
-            message: format!("{field}: {message}"),
+            message: tidy(&format!("{field}: {message}")),
             src: None,
             span: None,
             help: None,
@@ -66,7 +68,7 @@ impl Error {
     pub fn at(task: &TaskSource, span: Range<usize>, field: &str, message: impl std::fmt::Display) -> Self {
         let (line, col) = task.line_col(span.start);
         Error::Input(Box::new(InputError {
-            message: format!("{}:{line}:{col}: {field}: {message}", task.name),
+            message: tidy(&format!("{}:{line}:{col}: {field}: {message}", task.name)),
             src: Some(NamedSource::new(task.name.clone(), task.text.clone())),
             span: Some(SourceSpan::from(span.start..span.end.max(span.start))),
             help: None,
@@ -76,7 +78,7 @@ impl Error {
     /// Add what would be valid.
     pub fn with_help(mut self, text: impl Into<String>) -> Self {
         if let Error::Input(e) = &mut self {
-            e.help = Some(text.into());
+            e.help = Some(tidy(&text.into()));
         }
         self
     }

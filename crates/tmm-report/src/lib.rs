@@ -29,6 +29,7 @@ pub mod gear;
 pub mod labels;
 pub mod line_grid;
 pub mod linkage;
+pub mod message_numbers;
 pub mod output;
 pub mod paper;
 pub mod planetary;

@@ -6,7 +6,8 @@
 //! by 0, a negative, a huge or a tiny value, units swapped, the text
 //! truncated, a byte flipped) and runs it. The test fails on any panic, a case
 //! slower than the time limit, a non-finite number in any output, files
-//! written by a run that failed, or an exit code other than 0, 1 or 2.
+//! written by a run that failed, a number written in full in a message (more
+//! than 17 digits and points in a row), or an exit code other than 0, 1 or 2.
 //!
 //! `TMM_FUZZ_CASES` sets the number of in-process cases (default 2000);
 //! every 25th case also runs through the `tmm` binary (with the note and the
@@ -199,6 +200,25 @@ fn has_nonfinite(s: &str) -> bool {
     false
 }
 
+/// The longest run of digits and points: a number written in full (`1e300`
+/// as 301 digits) in a message. Written here, apart from tmm's own tidying.
+fn longest_number(s: &str) -> usize {
+    s.split(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}
+
+/// A message may hold a 12-digit number with a sign, a point and 4 decimals at most.
+const LONGEST_NUMBER: usize = 17;
+
+#[test]
+fn the_number_check_measures_runs_of_digits() {
+    assert_eq!(longest_number("got 1e300 mm, z1 = 4294967295"), 10);
+    assert_eq!(longest_number(&format!("the sum {:.4}", 1e300)), 306);
+    assert_eq!(longest_number("no digits"), 0);
+}
+
 #[test]
 fn the_nonfinite_check_finds_whole_words_only() {
     for bad in ["x=\"NaN\"", "NaN", "1, inf]", "-Infinity", "ω=inf рад/с", "(NaN)"] {
@@ -262,11 +282,16 @@ fn run_bin(args: &[&str], dir: &Path) -> (i32, String, String) {
 }
 
 fn check_bin(args: &[&str], dir: &Path, what: &str) -> i32 {
+    check_bin_full(args, dir, what).0
+}
+
+/// [`check_bin`] that also returns stdout and stderr.
+fn check_bin_full(args: &[&str], dir: &Path, what: &str) -> (i32, String, String) {
     let (code, out, err) = run_bin(args, dir);
     assert!(matches!(code, 0..=2), "{what}: exit code {code}\nargs: {args:?}\nstderr: {err}");
     assert!(!err.contains("panicked"), "{what}: panic\nargs: {args:?}\n{err}");
     assert!(!has_nonfinite(&out), "{what}: non-finite number on stdout\nargs: {args:?}");
-    code
+    (code, out, err)
 }
 
 fn cases() -> usize {
@@ -335,6 +360,10 @@ fn fuzz_case(case: usize, corpus: &[(String, String)], work: &Path, tally: &mut 
                 assert!(matches!(e.exit_code(), 1 | 2), "{what}: exit code {}", e.exit_code());
                 let msg = e.to_string();
                 assert!(!msg.is_empty());
+                assert!(
+                    longest_number(&msg) <= LONGEST_NUMBER,
+                    "{what}: a number written in full in the message: {msg}"
+                );
                 for leak in ["Vec2 {", "Some(", "RawQty", "untagged enum"] {
                     assert!(!msg.contains(leak), "{what}: debug output in the message: {msg}");
                 }
@@ -479,7 +508,16 @@ fn mutated_command_lines() {
             };
         }
         let refs: Vec<&str> = args.iter().map(String::as_str).collect();
-        check_bin(&refs, &work, &format!("command-line case {case}"));
+        let what = format!("command-line case {case}");
+        let (code, _, err) = check_bin_full(&refs, &work, &what);
+        // the message may quote the arguments themselves, but nothing longer
+        let given = args.iter().map(|a| longest_number(a)).max().unwrap_or(0);
+        if code == 2 {
+            assert!(
+                longest_number(&err) <= LONGEST_NUMBER.max(given),
+                "{what}: a number written in full in the message\nargs: {args:?}\n{err}"
+            );
+        }
     }
     let _ = std::fs::remove_dir_all(&work);
 }

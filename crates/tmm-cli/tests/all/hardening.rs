@@ -499,3 +499,36 @@ fn dynamics_bounds() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A value of 1e300 or 1e-300 is quoted in the message as such, not as 301
+/// digits or 300 zeros, and a huge positive shift sum is called too large,
+/// not too negative.
+#[test]
+fn numbers_in_messages_stay_short() {
+    let cases: [(&[&str], &str); 5] = [
+        (&["--module", "1e-300mm"], "got 1e-300 mm"),
+        (&["--module", "1e300"], "got 1e303 mm"),
+        (
+            &["--module", "3mm", "--x1", "1e300", "--x2", "0"],
+            "the shift sum 1e300 is too large",
+        ),
+        (
+            &["--module", "3mm", "--x1", "-1e300", "--x2", "0"],
+            "the shift sum -1e300 is too negative",
+        ),
+        (&["--module", "3mm", "--sa-min", "1e300"], "got 1e300"),
+    ];
+    for (extra, want) in cases {
+        let mut args = vec!["gear", "pair", "--z1", "17", "--z2", "40"];
+        args.extend_from_slice(extra);
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+        let longest = err
+            .split(|c: char| !(c.is_ascii_digit() || c == '.'))
+            .map(str::len)
+            .max()
+            .unwrap_or(0);
+        assert!(longest <= 12, "{args:?}: {err}");
+    }
+}

@@ -7,6 +7,7 @@ mod dynamics_json;
 mod dynamics_task;
 mod gear_mesh;
 mod labels;
+mod message_numbers;
 mod output;
 mod planetary;
 mod planetary_drawing;
