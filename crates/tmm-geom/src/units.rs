@@ -221,23 +221,37 @@ fn split_number(t: &str) -> Option<(f64, &str)> {
     if i == start_digits {
         return None;
     }
-    // exponent
+    let i = exponent_end(bytes, i);
+    let num_txt = t[..i].replace(',', ".");
+    let num: f64 = num_txt.parse().ok()?;
+    Some((num, t[i..].trim()))
+}
+
+/// The end of the exponent (`e`, an optional sign, digits) that may follow a
+/// mantissa ending at `i`; `i` itself when there is none. Shared by every
+/// scan of numbers in text, so that they agree on what an exponent is.
+///
+/// ```
+/// use tmm_geom::units::exponent_end;
+/// assert_eq!(exponent_end(b"1.5e-3 m", 3), 6);
+/// assert_eq!(exponent_end(b"2 mm", 1), 1);
+/// assert_eq!(exponent_end(b"3e m", 1), 1); // an `e` without digits is not one
+/// ```
+pub fn exponent_end(bytes: &[u8], i: usize) -> usize {
     if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
         let mut j = i + 1;
         if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
             j += 1;
         }
-        let ds = j;
+        let digits = j;
         while j < bytes.len() && bytes[j].is_ascii_digit() {
             j += 1;
         }
-        if j > ds {
-            i = j;
+        if j > digits {
+            return j;
         }
     }
-    let num_txt = t[..i].replace(',', ".");
-    let num: f64 = num_txt.parse().ok()?;
-    Some((num, t[i..].trim()))
+    i
 }
 
 /// Fold the many ways of writing a unit into one spelling.

@@ -8,6 +8,7 @@
 //! no message of any section, on the command line or in the page, can carry
 //! such a number.
 
+use tmm_geom::units::exponent_end;
 use tmm_linkage::synthesis::error::show;
 
 /// The most digits a number in a message keeps as written; longer ones are
@@ -71,19 +72,5 @@ fn number_end(b: &[u8], start: usize) -> (usize, usize) {
         }
         i += 1;
     }
-    // an exponent: e, an optional sign, digits
-    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-        let mut j = i + 1;
-        if j < b.len() && (b[j] == b'-' || b[j] == b'+') {
-            j += 1;
-        }
-        let k = j;
-        while j < b.len() && b[j].is_ascii_digit() {
-            j += 1;
-        }
-        if j > k {
-            i = j;
-        }
-    }
-    (i, digits)
+    (exponent_end(b, i), digits)
 }

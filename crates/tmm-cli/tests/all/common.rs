@@ -1,6 +1,7 @@
 //! What the CLI tests share: the built `tmm` (stdin closed), run in a given
 //! folder; a fresh temporary folder per test; the repository's root; one JSON
-//! document read off a successful run's stdout.
+//! document read off a successful run's stdout; the longest number in a
+//! message.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -46,4 +47,14 @@ pub fn json(o: &Output) -> serde_json::Value {
     assert!(o.status.success(), "stderr: {}", String::from_utf8_lossy(&o.stderr));
     let s = String::from_utf8(o.stdout.clone()).unwrap();
     serde_json::from_str(&s).expect("stdout is exactly one JSON document")
+}
+
+/// The longest run of digits and points in `s`: a number written in full
+/// (`1e300` as 301 digits) in a message. Written here, apart from tmm's own
+/// tidying of message numbers.
+pub fn longest_number(s: &str) -> usize {
+    s.split(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
 }

@@ -30,6 +30,8 @@ use std::time::{Duration, Instant};
 use tmm_report::TaskSource;
 use tmm_report::run::{DEFAULT_TASK, run_task};
 
+use crate::common::{longest_number, repo};
+
 /// A small deterministic generator (xorshift64*).
 struct Rng(u64);
 
@@ -46,10 +48,6 @@ impl Rng {
     fn pick<'a, T>(&mut self, xs: &'a [T]) -> &'a T {
         &xs[self.below(xs.len())]
     }
-}
-
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
 
 fn corpus() -> Vec<(String, String)> {
@@ -198,15 +196,6 @@ fn has_nonfinite(s: &str) -> bool {
         }
     }
     false
-}
-
-/// The longest run of digits and points: a number written in full (`1e300`
-/// as 301 digits) in a message. Written here, apart from tmm's own tidying.
-fn longest_number(s: &str) -> usize {
-    s.split(|c: char| !(c.is_ascii_digit() || c == '.'))
-        .map(str::len)
-        .max()
-        .unwrap_or(0)
 }
 
 /// A message may hold a 12-digit number with a sign, a point and 4 decimals at most.

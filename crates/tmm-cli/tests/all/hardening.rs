@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 
-use crate::common::{self, repo, run, tmm};
+use crate::common::{self, longest_number, repo, run, tmm};
 
 fn example(name: &str) -> String {
     repo().join("examples").join(name).to_string_lossy().into_owned()
@@ -524,11 +524,6 @@ fn numbers_in_messages_stay_short() {
         let (code, _, err) = run(&args);
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(want), "{args:?}: {err}");
-        let longest = err
-            .split(|c: char| !(c.is_ascii_digit() || c == '.'))
-            .map(str::len)
-            .max()
-            .unwrap_or(0);
-        assert!(longest <= 12, "{args:?}: {err}");
+        assert!(longest_number(&err) <= 12, "{args:?}: {err}");
     }
 }

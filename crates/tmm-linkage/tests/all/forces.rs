@@ -220,18 +220,7 @@ fn seed001_sheet3_balancing_force_by_independent_virtual_power() {
     let m = seed001();
     let w1 = 900.0 * std::f64::consts::PI / 30.0;
     let lens = [0.12, 0.48, 0.38];
-    let mut loads = Loads::new(&m);
-    for i in 1..=3 {
-        let mass = 10.0 * lens[i - 1];
-        loads.links[i].mass = mass;
-        loads.links[i].inertia = 0.1 * mass * lens[i - 1] * lens[i - 1];
-    }
-    loads.resistance.push(Resistance {
-        link: 3,
-        action: Action::Moment { sign: None },
-        law: Law::Constant(380.0),
-    });
-    let mut k = Kinetostatics::new(&m, loads).unwrap();
+    let mut k = Kinetostatics::new(&m, seed001_loads(&m)).unwrap();
     let mut sol = m.solution();
     let mut f = k.result();
     let phi = 15f64.to_radians();

@@ -400,6 +400,18 @@ fn line_angle(a: Vec2, b: Vec2) -> f64 {
     ((a.x * b.x + a.y * b.y).abs() / (a.hypot() * b.hypot())).min(1.0).acos()
 }
 
+/// A kept design of case `i`: its working-stroke pressure angle `w`, found by
+/// brute force, is within `limit`, and agrees with the design's own check.
+#[track_caller]
+fn kept_design_meets(i: usize, s: &Synthesis, w: f64, limit: f64) {
+    assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
+    assert!(
+        (w - s.check.pressure_angle_max.0).abs() < 1e-6,
+        "{i}: {w} vs {:?}",
+        s.check.pressure_angle_max
+    );
+}
+
 /// The largest of `angle` over the working stroke of a synthesised mechanism,
 /// sampled at 20 001 crank angles: the working stroke is the longer crank
 /// travel between the two dead positions the check found (K > 1).
@@ -463,13 +475,7 @@ fn shaper_pressure_limits_hold_by_brute_force() {
         match slotted::synthesize(&request(limited)) {
             Ok(s) => {
                 kept += 1;
-                let w = shaper_working_pressure(&s);
-                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
-                assert!(
-                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
-                    "{i}: {w} vs {:?}",
-                    s.check.pressure_angle_max
-                );
+                kept_design_meets(i, &s, shaper_working_pressure(&s), limit);
             }
             Err(SynthesisError::Infeasible { .. }) => {
                 refused += 1;
@@ -534,14 +540,7 @@ fn knee_press_pressure_limits_hold_by_brute_force() {
         match knee_press::synthesize(&r) {
             Ok(s) => {
                 kept += 1;
-                let w = knee_working_pressure(&s);
-                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
-                // and the brute force agrees with the design's own check
-                assert!(
-                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
-                    "{i}: {w} vs {:?}",
-                    s.check.pressure_angle_max
-                );
+                kept_design_meets(i, &s, knee_working_pressure(&s), limit);
             }
             Err(SynthesisError::Infeasible { .. }) => refused += 1,
             Err(e) => panic!("{i}: {e}"),
@@ -628,13 +627,7 @@ fn six_bar_pressure_limits_hold_by_brute_force() {
         match result {
             Ok(s) => {
                 kept += 1;
-                let w = six_bar_working_pressure(&s);
-                assert!(w <= limit + 1e-9, "{i}: {}° over the limit {}°", w.to_degrees(), limit.to_degrees());
-                assert!(
-                    (w - s.check.pressure_angle_max.0).abs() < 1e-6,
-                    "{i}: {w} vs {:?}",
-                    s.check.pressure_angle_max
-                );
+                kept_design_meets(i, &s, six_bar_working_pressure(&s), limit);
             }
             Err(SynthesisError::Infeasible { .. }) => refused += 1,
             Err(e) => panic!("{i}: {e}"),

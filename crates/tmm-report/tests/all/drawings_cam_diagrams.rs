@@ -7,7 +7,7 @@
 
 use serde_json::Value;
 
-use crate::svg_read::{attr_s, run_example as run};
+use crate::svg_read::{attr_s, run_example as run, shown};
 use tmm_report::paper::{Slot, slot_mm};
 use tmm_report::project::SheetFormat;
 use tmm_report::run::Run;
@@ -66,37 +66,13 @@ fn panels(s: &str) -> Vec<(&str, Vec<(f64, f64)>)> {
 
 /// The texts' visible words.
 fn texts(s: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    for (i, _) in s.match_indices("<text") {
-        let body = &s[i..];
-        let end = body.find("</text>").unwrap();
-        let inner = &body[..end];
-        let mut t = String::new();
-        let mut tag = false;
-        for ch in inner.chars() {
-            match ch {
-                '<' => tag = true,
-                '>' => tag = false,
-                c if !tag => t.push(c),
-                _ => {}
-            }
-        }
-        out.push(t.trim_start_matches(|c| c != '>').to_string());
-        // the first '>' closes the opening tag
-        let o = &inner[inner.find('>').unwrap() + 1..];
-        let mut t = String::new();
-        let mut tag = false;
-        for ch in o.chars() {
-            match ch {
-                '<' => tag = true,
-                '>' => tag = false,
-                c if !tag => t.push(c),
-                _ => {}
-            }
-        }
-        *out.last_mut().unwrap() = t;
-    }
-    out
+    s.match_indices("<text")
+        .map(|(i, _)| {
+            let inner = &s[i..i + s[i..].find("</text>").unwrap()];
+            // the first '>' closes the opening tag
+            shown(&inner[inner.find('>').unwrap() + 1..])
+        })
+        .collect()
 }
 
 #[test]

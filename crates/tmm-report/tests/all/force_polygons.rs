@@ -8,6 +8,8 @@ use std::path::Path;
 use tmm_report::TaskSource;
 use tmm_report::forces::{analyse, drawings, load};
 
+use crate::svg_read::shown;
+
 fn read_back(svg: &str) -> (f64, f64) {
     let mut closure = None;
     let mut largest = 0.0f64;
@@ -15,16 +17,7 @@ fn read_back(svg: &str) -> (f64, f64) {
         // the words are Russian (the default), numbers with a decimal comma
         // and the subscripts' markup (tspans) dropped: the text as shown
         let inner = &line[line.find('>').unwrap() + 1..line.rfind("</text>").unwrap()];
-        let mut text = String::new();
-        let mut in_tag = false;
-        for ch in inner.chars() {
-            match ch {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                c if !in_tag => text.push(if c == ',' { '.' } else { c }),
-                _ => {}
-            }
-        }
+        let text = shown(inner).replace(',', ".");
         if let Some(v) = text.strip_prefix("замыкание ").and_then(|t| t.strip_suffix(" Н")) {
             closure = Some(v.parse::<f64>().unwrap());
         } else if let Some(v) = text.strip_suffix(" Н") {

@@ -31,6 +31,22 @@ pub fn paper(svg: &str) -> (f64, f64, String) {
     (num(root, "width"), num(root, "height"), root.to_string())
 }
 
+/// The characters of a text's content as shown: the markup inside it (the
+/// tspans of subscripts) dropped, entities left as written.
+pub fn shown(inner: &str) -> String {
+    let mut out = String::new();
+    let mut in_tag = false;
+    for ch in inner.chars() {
+        match ch {
+            '<' => in_tag = true,
+            '>' => in_tag = false,
+            c if !in_tag => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
 /// Each text's shown characters (the tspans' markup dropped) and its box:
 /// 0.6 of the height per character, 0.85 above and 0.35 below the baseline.
 /// Rotated texts are left out when `skip_rotated`.
@@ -41,17 +57,7 @@ pub fn texts(svg: &str, skip_rotated: bool) -> Vec<(String, [f64; 4])> {
         .filter(|l| l.starts_with("<text") && !(skip_rotated && l.contains("rotate(")))
     {
         let inner = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap()];
-        let mut shown = String::new();
-        let mut in_tag = false;
-        for ch in inner.chars() {
-            match ch {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                c if !in_tag => shown.push(c),
-                _ => {}
-            }
-        }
-        let shown = shown.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
+        let shown = shown(inner).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">");
         let (x, y, s) = (num(l, "x"), num(l, "y"), num(l, "font-size"));
         let w = 0.6 * s * shown.chars().count() as f64;
         let x0 = match attr(l, "text-anchor").as_deref() {
