@@ -50,6 +50,7 @@ fn main() -> ExitCode {
     // Messages are read in terminals and in logs: never break a field name.
     let _ = miette::set_hook(Box::new(|_| Box::new(miette::MietteHandlerOpts::new().wrap_lines(false).build())));
     let cli = Cli::parse();
+    write::clean_up_on_signals();
     let result = match &cli.command {
         Command::Run(a) => cmd::run::run(a),
         Command::Note(a) => cmd::note::run(a),
@@ -65,7 +66,9 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             let code = e.exit_code();
-            eprintln!("{:?}", miette::Report::new(e));
+            // A message that cannot be written (2>/dev/full) is dropped; the
+            // exit code still tells the error.
+            write::print_error(&format!("{:?}\n", miette::Report::new(e)));
             ExitCode::from(code as u8)
         }
     }

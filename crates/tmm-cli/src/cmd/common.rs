@@ -38,11 +38,18 @@ pub fn print(text: &str) -> Result<(), Error> {
     write::print(text)
 }
 
-/// Write the drawings of a subcommand's `--svg DIR` into `dir`: a new, empty
-/// or tmm-made folder is replaced as a whole; into any other folder the files
-/// are added one by one, deleting nothing.
+/// Write the drawings of a subcommand's `--svg DIR` into `dir`: a new or
+/// tmm-made folder is replaced as a whole, an empty one written into; into
+/// any other folder the files are added one by one, deleting nothing and
+/// refusing to replace a file tmm did not write.
 pub fn write_dir(dir: &Path, docs: &Documents) -> Result<Vec<PathBuf>, Error> {
-    write::write_folder(dir, docs, Existing::AddFiles)
+    write::write_folder(dir, docs, Existing::AddFiles, "--svg")
+}
+
+/// Write documents into the folder `dir` given as `option` (`tmm note
+/// --out DIR`), as [`write_dir`] does.
+pub fn write_into(dir: &Path, docs: &Documents, option: &str) -> Result<Vec<PathBuf>, Error> {
+    write::write_folder(dir, docs, Existing::AddFiles, option)
 }
 
 /// Write single files named on the command line (`--svg mesh.svg`), all or none.

@@ -9,7 +9,7 @@ use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, DEFAULT_TASK_NAME, Run, run_task_in};
 use tmm_report::{Error, TaskSource};
 
-use super::common::{print, read_task, write_named, written};
+use super::common::{print, read_task, write_into, written};
 
 /// The note of a task file as PDF.
 #[derive(clap::Args)]
@@ -19,7 +19,7 @@ pub struct Args {
     /// The language of the note (default: the task's [project] lang, else ru)
     #[arg(long, value_parser = ["ru", "uk", "en"])]
     pub lang: Option<String>,
-    /// The folder note.pdf is written into
+    /// The folder note.pdf is written into (an existing note.pdf that tmm did not write is never replaced)
     #[arg(short, long, default_value = ".")]
     pub out: PathBuf,
 }
@@ -86,6 +86,8 @@ pub fn run(a: &Args) -> Result<(), Error> {
     progress("typesetting the note");
     let pdf = note_pdf(&run, &task)?;
     progress("writing");
-    let files = write_named(&[(a.out.join("note.pdf"), pdf)])?;
+    let mut docs = Documents::new();
+    docs.add_bytes("note.pdf", pdf)?;
+    let files = write_into(&a.out, &docs, "--out")?;
     print(&written(&files))
 }

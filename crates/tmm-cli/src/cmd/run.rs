@@ -59,6 +59,6 @@ pub fn run(a: &Args) -> Result<(), Error> {
         docs.append(pdf_documents(&run, &task)?);
     }
     progress("writing");
-    let files = write_folder(&a.out, &docs, Existing::Refuse)?;
+    let files = write_folder(&a.out, &docs, Existing::Refuse, "--out")?;
     print(&if a.json { out } else { out + &written(&files) })
 }
