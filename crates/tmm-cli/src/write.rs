@@ -198,6 +198,13 @@ fn lock() -> MutexGuard<'static, Vec<Temp>> {
     TEMPS.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
+/// Run `f` with the registry locked, so a signal's clean-up cannot happen
+/// in the middle.
+fn lock_then<T>(f: impl FnOnce() -> T) -> T {
+    let _temps = lock();
+    f()
+}
+
 fn register(t: Temp) {
     lock().push(t);
 }
@@ -240,9 +247,10 @@ impl Run {
             }
         }
         for m in missing.into_iter().rev() {
+            let mut temps = lock();
             match std::fs::create_dir(&m) {
                 Ok(()) => {
-                    register(Temp::MadeDir(m.clone()));
+                    temps.push(Temp::MadeDir(m.clone()));
                     self.dirs.push(m);
                 }
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
@@ -495,7 +503,8 @@ fn build_beside(out: &Path, docs: &Documents) -> Result<PathBuf, Error> {
     let tmp = temp_name(out, "tmp");
     register(Temp::Folder(tmp.clone()));
     let built = (|| {
-        std::fs::create_dir(&tmp).map_err(|e| beside_error(out, &e))?;
+        lock_then(|| std::fs::create_dir(&tmp)).map_err(|e| beside_error(out, &e))?;
+        let mut made = Vec::new();
         write_new(
             &tmp.join(MARKER),
             marker_text(MARKER_HEAD, docs.iter().map(|d| Path::new(&d.path))).as_bytes(),
@@ -503,7 +512,12 @@ fn build_beside(out: &Path, docs: &Documents) -> Result<PathBuf, Error> {
         .map_err(|e| write_error(out, &e))?;
         for d in docs {
             let p = tmp.join(&d.path);
-            std::fs::create_dir_all(parent(&p)).map_err(|e| write_error(&out.join(&d.path), &e))?;
+            let dir = parent(&p);
+            if !made.iter().any(|m: &PathBuf| m == dir) {
+                let _temps = lock();
+                std::fs::create_dir_all(dir).map_err(|e| write_error(&out.join(&d.path), &e))?;
+                made.push(dir.to_path_buf());
+            }
             write_new(&p, &d.bytes).map_err(|e| write_error(&out.join(&d.path), &e))?;
         }
         Ok(())
@@ -744,8 +758,10 @@ fn renameat2(from: &Path, to: &Path, flags: libc::c_uint) -> std::io::Result<()>
 }
 
 /// Create a new file (never opening an existing one, so never following a
-/// link) and write it whole.
+/// link) and write it whole. The registry is held locked meanwhile, so a
+/// signal's clean-up finds every temporary file whole or not begun.
 fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let _temps = lock();
     let _ = std::fs::remove_file(path);
     let mut f = std::fs::OpenOptions::new().write(true).create_new(true).open(path)?;
     f.write_all(bytes).and_then(|()| f.sync_data())
