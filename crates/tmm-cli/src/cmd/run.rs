@@ -17,8 +17,8 @@ pub struct Args {
     /// The task file (TOML); without it, the embedded default course project
     pub file: Option<PathBuf>,
     /// Output folder for drawings, tables and report.json. It is written whole
-    /// or not at all; a folder an earlier run made is replaced, a folder with
-    /// other files is refused
+    /// or not at all; a folder an earlier run made is replaced, an empty one is
+    /// written into in place, a folder with other files is refused
     #[arg(short, long, default_value = "tmm-out")]
     pub out: PathBuf,
     /// Print the combined JSON report (the same as report.json) instead of the tables
