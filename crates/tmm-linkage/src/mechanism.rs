@@ -892,18 +892,41 @@ impl Mechanism {
             };
             resolved.push((p, line));
         }
-        let units = self.assembly_units(&resolved);
+        let mut group_of = vec![usize::MAX; self.link_names.len()];
+        for (g, grp) in self.groups.iter().enumerate() {
+            for &l in &grp.info.link_ids {
+                group_of[l] = g;
+            }
+        }
+        // where each point is known first: a joint is on several links, and
+        // its position is known once the earliest of them is solved (the
+        // frame and the crank before every group)
+        let rank = |l: usize| if l == 0 || group_of[l] == usize::MAX { -1 } else { group_of[l] as i64 };
+        let mut carrier: Vec<(usize, Vec2)> = self.points.iter().map(|p| (p.link, p.local)).collect();
+        for pair in &self.pairs {
+            let on: &[(usize, Vec2)] = match *pair {
+                Pair::R { a, b, la, lb, .. } => &[(a, la), (b, lb)],
+                Pair::P { slider, ps, .. } => &[(slider, ps)],
+            };
+            let c = &mut carrier[pair.point()];
+            for &(l, local) in on {
+                if rank(l) < rank(c.0) {
+                    *c = (l, local);
+                }
+            }
+        }
+        let units = self.assembly_units(&resolved, &carrier, &group_of);
         let phi = self.assembly_angle;
         let mut sol = self.solution();
         // the crank and the frame: hints on their points alone are scored here
         self.solve_groups(phi, &[], &mut sol)?;
         let fixed_hints: Vec<usize> = (0..resolved.len()).filter(|&i| !units.iter().any(|u| u.hints.contains(&i))).collect();
-        let s = self.score(def, &resolved, &fixed_hints, &sol)?;
+        let s = self.score(def, &resolved, &carrier, &fixed_hints, &sol)?;
         if s >= VIOLATION * self.scale {
             return Err(self.unsatisfied(def));
         }
         for unit in &units {
-            self.choose_unit(def, &resolved, unit, &mut sol)?;
+            self.choose_unit(def, &resolved, &carrier, unit, &mut sol)?;
         }
         if self.has_general {
             self.init = sol.links;
@@ -918,14 +941,13 @@ impl Mechanism {
     /// Split the groups into units chosen independently: the hinted units
     /// (unions of the hints' cones) first, then every other group alone, in
     /// solving order, so that each unit's upstream groups are chosen before it.
-    fn assembly_units(&self, hints: &[(usize, Option<(usize, usize)>)]) -> Vec<AssemblyUnit> {
+    fn assembly_units(
+        &self,
+        hints: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
+        group_of: &[usize],
+    ) -> Vec<AssemblyUnit> {
         let ng = self.groups.len();
-        let mut group_of = vec![usize::MAX; self.link_names.len()];
-        for (g, grp) in self.groups.iter().enumerate() {
-            for &l in &grp.info.link_ids {
-                group_of[l] = g;
-            }
-        }
         // the groups each group takes its outer joints from
         let upstream: Vec<Vec<usize>> = self
             .groups
@@ -964,7 +986,7 @@ impl Mechanism {
             let mut stack: Vec<usize> = [Some(p), line.map(|l| l.0), line.map(|l| l.1)]
                 .into_iter()
                 .flatten()
-                .map(|q| group_of[self.points[q].link])
+                .map(|q| group_of[carrier[q].0])
                 .filter(|&g| g != usize::MAX)
                 .collect();
             let mut cone = Vec::new();
@@ -1029,6 +1051,7 @@ impl Mechanism {
         &mut self,
         def: &MechanismDef,
         resolved: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
         unit: &AssemblyUnit,
         sol: &mut Solution,
     ) -> Result<(), LinkageError> {
@@ -1081,7 +1104,7 @@ impl Mechanism {
                 };
                 match self.solve_groups(phi, &unit.groups, s) {
                     Ok(()) => {
-                        let score = self.score(def, resolved, &unit.hints, s)?;
+                        let score = self.score(def, resolved, carrier, &unit.hints, s)?;
                         let pts: Vec<Vec2> = s.points.iter().map(|p| p.p).collect();
                         order += 1;
                         match &best {
@@ -1218,7 +1241,8 @@ impl Mechanism {
         Ok(())
     }
 
-    /// Score an assembly by the listed hints: [`VIOLATION`]·size per violated
+    /// Score an assembly by the listed hints (each point taken on its
+    /// `carrier`, the link that places it first): [`VIOLATION`]·size per violated
     /// side hint, plus distances to `near`. A side hint about a line with no
     /// such side (a vertical line for above/below, a horizontal one for
     /// left/right) is an error.
@@ -1226,10 +1250,15 @@ impl Mechanism {
         &self,
         def: &MechanismDef,
         resolved: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
         which: &[usize],
         sol: &Solution,
     ) -> Result<f64, LinkageError> {
-        let pos = |i: usize| sol.points[i].p;
+        // on the link that places the point first (the frame's points as given)
+        let pos = |i: usize| {
+            let (l, local) = carrier[i];
+            if l == 0 { local } else { sol.links[l].point(local).p }
+        };
         let mut s = 0.0;
         for &i in which {
             let h = &def.hints[i];
