@@ -93,8 +93,9 @@ fn profile_3600_points(b: Bencher) {
 #[divan::bench(sample_count = 5, sample_size = 1)]
 fn table_10000_design() {
     let n = 10_000;
-    let vals: Vec<String> =
-        (0..n).map(|i| format!("{:.4}", (std::f64::consts::TAU * i as f64 / (n - 1) as f64).sin())).collect();
+    let vals: Vec<String> = (0..n)
+        .map(|i| format!("{:.4}", (std::f64::consts::TAU * i as f64 / (n - 1) as f64).sin()))
+        .collect();
     let phases = format!("rise 108 table({}); dwell 15; return 108 sine; dwell 129", vals.join(", "));
     let t = CamTask {
         program: Program::new(0.013, spec::parse_phases(&phases).unwrap()).unwrap(),

@@ -134,7 +134,10 @@ impl Law {
                 if v.len() > MAX_TABLE {
                     return Err(CamError::LawParameter {
                         law: "table".into(),
-                        reason: format!("give at most {MAX_TABLE} values of the acceleration analog (this table has {})", v.len()),
+                        reason: format!(
+                            "give at most {MAX_TABLE} values of the acceleration analog (this table has {})",
+                            v.len()
+                        ),
                     });
                 }
                 if v.iter().any(|a| !a.is_finite()) {

@@ -223,6 +223,12 @@ impl Mechanism {
     /// Compile a description: check it, number it, find its structure, build
     /// the solvers and choose the assembly branch from the hints.
     pub fn new(def: &MechanismDef) -> Result<Self, LinkageError> {
+        if def.links.len() > limits::MAX_LINKS {
+            return Err(de(
+                "links",
+                format!("{} links given; at most {} are taken", def.links.len(), limits::MAX_LINKS),
+            ));
+        }
         // --- links
         let mut link_names = vec![FRAME.to_string()];
         let mut mass_centers = vec![Vec2::ZERO];
@@ -901,7 +907,13 @@ impl Mechanism {
         // where each point is known first: a joint is on several links, and
         // its position is known once the earliest of them is solved (the
         // frame and the crank before every group)
-        let rank = |l: usize| if l == 0 || group_of[l] == usize::MAX { -1 } else { group_of[l] as i64 };
+        let rank = |l: usize| {
+            if l == 0 || group_of[l] == usize::MAX {
+                -1
+            } else {
+                group_of[l] as i64
+            }
+        };
         let mut carrier: Vec<(usize, Vec2)> = self.points.iter().map(|p| (p.link, p.local)).collect();
         for pair in &self.pairs {
             let on: &[(usize, Vec2)] = match *pair {
@@ -920,7 +932,9 @@ impl Mechanism {
         let mut sol = self.solution();
         // the crank and the frame: hints on their points alone are scored here
         self.solve_groups(phi, &[], &mut sol)?;
-        let fixed_hints: Vec<usize> = (0..resolved.len()).filter(|&i| !units.iter().any(|u| u.hints.contains(&i))).collect();
+        let fixed_hints: Vec<usize> = (0..resolved.len())
+            .filter(|&i| !units.iter().any(|u| u.hints.contains(&i)))
+            .collect();
         let s = self.score(def, &resolved, &carrier, &fixed_hints, &sol)?;
         if s >= VIOLATION * self.scale {
             return Err(self.unsatisfied(def));

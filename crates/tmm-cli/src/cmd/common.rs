@@ -26,13 +26,15 @@ pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
     if bytes.len() as u64 > MAX_TASK_BYTES {
         return Err(Error::input(
             &name,
-            format!(
-                "the task file is larger than {MAX_TASK_BYTES} bytes (4 MiB), the most tmm reads; a task file is a few KB of TOML"
-            ),
+            format!("the task file is larger than {MAX_TASK_BYTES} bytes (4 MiB), the most tmm reads; a task file is a few KB of TOML"),
         ));
     }
-    let text = String::from_utf8(bytes)
-        .map_err(|_| unreadable(std::io::Error::new(std::io::ErrorKind::InvalidData, "stream did not contain valid UTF-8")))?;
+    let text = String::from_utf8(bytes).map_err(|_| {
+        unreadable(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        ))
+    })?;
     let task = TaskSource::new(path.display().to_string(), text);
     // the drawings speak the [project]'s language; a bad [project] is
     // reported by the section that reads it

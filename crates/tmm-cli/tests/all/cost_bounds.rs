@@ -76,8 +76,9 @@ fn a_long_line_is_cut_in_the_snippet_under_a_message() {
 fn a_cam_table_past_the_cap_is_refused_and_one_at_the_cap_runs() {
     let d = tmp("cam-table");
     let task = |n: usize| {
-        let vals: Vec<String> =
-            (0..n).map(|i| format!("{:.4}", (std::f64::consts::TAU * i as f64 / (n - 1) as f64).sin())).collect();
+        let vals: Vec<String> = (0..n)
+            .map(|i| format!("{:.4}", (std::f64::consts::TAU * i as f64 / (n - 1) as f64).sin()))
+            .collect();
         format!(
             "title = \"cam table\"\n[cam]\nfollower = \"translating-roller\"\nstroke = \"13 mm\"\nphases = \"rise 108 table({}); dwell 15; return 108 sine; dwell 129\"\nmax_pressure = 30\n",
             vals.join(", ")
@@ -87,7 +88,10 @@ fn a_cam_table_past_the_cap_is_refused_and_one_at_the_cap_runs() {
     std::fs::write(&f, task(10_001)).unwrap();
     let (code, _, err) = run(&["cam", f.to_str().unwrap(), "--json"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("table") && err.contains("10000") && err.contains("over.toml:"), "{err}");
+    assert!(
+        err.contains("table") && err.contains("10000") && err.contains("over.toml:"),
+        "{err}"
+    );
     let f = d.join("at.toml");
     std::fs::write(&f, task(10_000)).unwrap();
     let (code, out, err) = run(&["cam", f.to_str().unwrap(), "--json"]);
@@ -109,13 +113,19 @@ fn function_generation_positions_past_the_cap_are_refused_located() {
     let f = d.join("task.toml");
     std::fs::write(
         &f,
-        format!("title = \"fg\"\n[synthesis]\nkind = \"function-generation\"\npositions = [{}]\nframe = \"300 mm\"\n", pos.join(", ")),
+        format!(
+            "title = \"fg\"\n[synthesis]\nkind = \"function-generation\"\npositions = [{}]\nframe = \"300 mm\"\n",
+            pos.join(", ")
+        ),
     )
     .unwrap();
     let out = d.join("o");
     let (code, _, err) = run(&["run", f.to_str().unwrap(), "--out", out.to_str().unwrap(), "--no-pdf"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("positions") && err.contains("1000") && err.contains("task.toml:4:"), "{err}");
+    assert!(
+        err.contains("positions") && err.contains("1000") && err.contains("task.toml:4:"),
+        "{err}"
+    );
     assert!(err.len() < 10_000, "{} bytes of message", err.len());
     assert!(!out.exists());
 }

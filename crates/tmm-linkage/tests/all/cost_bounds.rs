@@ -5,7 +5,7 @@
 //! with a message naming the limit.
 
 use tmm_geom::Vec2;
-use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, MAX_COUPLED};
+use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, MAX_COUPLED, Mechanism, MechanismDef};
 
 /// Crank A–B (0.1 m) driving `n` dyads B–Ck (1 m), Dk–Ck (1 m), Dk fixed at
 /// (1.2 + 0.0005·k, 0.5) m; dyad k's hint puts Ck below the line B–Dk when
@@ -107,4 +107,14 @@ fn hints_coupling_too_many_dyads_are_refused_naming_the_limit() {
     let e = Mechanism::new(&def).unwrap_err().to_string();
     assert!(e.contains(&format!("2^{n} ")) && e.contains(&format!("2^{MAX_COUPLED}")), "{e}");
     assert!(e.contains("assembly"), "{e}");
+}
+
+#[test]
+fn more_links_than_the_cap_are_refused_naming_the_limit() {
+    // 1 + 2·125 = 251 links: the rank check costs their cube (999 links took 300 s)
+    let e = Mechanism::new(&fan(125, |_| true)).unwrap_err().to_string();
+    assert!(
+        e.contains("links") && e.contains("251") && e.contains(&tmm_linkage::limits::MAX_LINKS.to_string()),
+        "{e}"
+    );
 }

@@ -4,8 +4,8 @@
 
 #[path = "../common/mod.rs"]
 mod common;
-mod dynamics;
 mod cost_bounds;
+mod dynamics;
 mod forces;
 mod fourbar_closed_form;
 mod hardening;
