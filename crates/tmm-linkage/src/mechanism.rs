@@ -1023,18 +1023,15 @@ impl Mechanism {
         }
         if self.has_general {
             // one set of starting guesses for every Newton group: one unit
-            for g in 0..ng {
-                hinted[g] = true;
+            for (g, h) in hinted.iter_mut().enumerate() {
+                *h = true;
                 let (a, b) = (find(&mut root, 0), find(&mut root, g));
                 root[a.max(b)] = a.min(b);
             }
         }
         let mut units: Vec<AssemblyUnit> = Vec::new();
         let mut unit_of_root = vec![usize::MAX; ng];
-        for g in 0..ng {
-            if !hinted[g] {
-                continue;
-            }
+        for g in (0..ng).filter(|&g| hinted[g]) {
             let r = find(&mut root, g);
             if unit_of_root[r] == usize::MAX {
                 unit_of_root[r] = units.len();
@@ -1098,6 +1095,7 @@ impl Mechanism {
         let tie_tol = 1e-9 * self.scale;
         // the best so far: (score, combination·starts + start, links, point
         // positions, the order found)
+        #[allow(clippy::type_complexity)]
         let mut best: Option<(f64, usize, Vec<LinkState>, Vec<Vec2>, usize)> = None;
         // assemblies as good as the best but elsewhere, in the order found
         let mut ties: Vec<(usize, f64, Vec<Vec2>)> = Vec::new();
