@@ -86,3 +86,29 @@ fn profile_3600_points(b: Bencher) {
     };
     b.bench(|| Profile::new(black_box(&t.program), &m, 1.0, 3600));
 }
+
+/// A `table(…)` law of 10 000 values (the most accepted), designed whole:
+/// each value is a piece, found by binary search (the linear search made
+/// this quadratic, 19 s).
+#[divan::bench(sample_count = 5, sample_size = 1)]
+fn table_10000_design() {
+    let n = 10_000;
+    let vals: Vec<String> = (0..n)
+        .map(|i| format!("{:.4}", (std::f64::consts::TAU * i as f64 / (n - 1) as f64).sin()))
+        .collect();
+    let phases = format!("rise 108 table({}); dwell 15; return 108 sine; dwell 129", vals.join(", "));
+    let t = CamTask {
+        program: Program::new(0.013, spec::parse_phases(&phases).unwrap()).unwrap(),
+        follower: FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: None,
+        },
+        rotation: Rotation::Ccw,
+        limits: spec::parse_limits("rise 30, return 30", true).unwrap(),
+        min_curvature: None,
+        face_margin: 0.005,
+        omega: 200.0,
+        points: 3600,
+    };
+    black_box(&t).solve().unwrap();
+}

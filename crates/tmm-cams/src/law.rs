@@ -59,6 +59,10 @@ pub struct Law {
     pieces: Option<Pieces>,
 }
 
+/// The most values of a `table(…)` law: each value is a piece of the
+/// law, searched for extremes on its own.
+pub const MAX_TABLE: usize = 10_000;
+
 /// The shape of an unbalanced or empty table, for [`CamError::LawParameter`].
 fn shape_error(name: &str, e: ShapeError) -> CamError {
     let reason = match e {
@@ -125,6 +129,15 @@ impl Law {
                     return Err(CamError::LawParameter {
                         law: "table".into(),
                         reason: "give at least two values of the acceleration analog".into(),
+                    });
+                }
+                if v.len() > MAX_TABLE {
+                    return Err(CamError::LawParameter {
+                        law: "table".into(),
+                        reason: format!(
+                            "give at most {MAX_TABLE} values of the acceleration analog (this table has {})",
+                            v.len()
+                        ),
                     });
                 }
                 if v.iter().any(|a| !a.is_finite()) {

@@ -124,10 +124,9 @@ impl Pieces {
     /// `[y, y′, y″, y‴]` at the phase fraction `x ∈ [0, 1]`.
     #[inline]
     pub fn eval(&self, x: f64) -> [f64; 4] {
-        let mut k = 0;
-        while k + 1 < self.pieces.len() && x >= self.pieces[k + 1].x0 {
-            k += 1;
-        }
+        // the last piece starting at or before x (the first for x < 0 or NaN);
+        // a binary search: a table law has one piece per value
+        let k = self.pieces.partition_point(|p| p.x0 <= x).max(1) - 1;
         let p = &self.pieces[k];
         let r = p.eval(x - p.x0);
         [r[0] * self.scale, r[1] * self.scale, r[2] * self.scale, r[3] * self.scale]
@@ -137,10 +136,7 @@ impl Pieces {
     /// boundary the piece that ends there.
     #[inline]
     pub fn eval_left(&self, x: f64) -> [f64; 4] {
-        let mut k = 0;
-        while k + 1 < self.pieces.len() && x > self.pieces[k + 1].x0 {
-            k += 1;
-        }
+        let k = self.pieces.partition_point(|p| p.x0 < x).max(1) - 1;
         let p = &self.pieces[k];
         let r = p.eval(x - p.x0);
         [r[0] * self.scale, r[1] * self.scale, r[2] * self.scale, r[3] * self.scale]

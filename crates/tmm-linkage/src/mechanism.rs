@@ -186,9 +186,22 @@ pub struct Solution {
     warm: Option<f64>,
 }
 
-/// One assembly found while choosing branches: its score, the branch signs,
-/// the link states and every point's position.
-type Found = (f64, Vec<f64>, Vec<LinkState>, Vec<Vec2>);
+/// Groups whose branches are chosen together, and the hints that score them
+/// (indices into [`MechanismDef::hints`]).
+#[derive(Debug, Default)]
+struct AssemblyUnit {
+    groups: Vec<usize>,
+    hints: Vec<usize>,
+}
+
+/// The most dyads whose branches are chosen together (2^12 = 4096
+/// combinations): hints that tie more together are refused.
+pub const MAX_COUPLED: usize = 12;
+
+/// Whether two assemblies place some point more than `tol` apart.
+fn differs(a: &[Vec2], b: &[Vec2], tol: f64) -> bool {
+    a.iter().zip(b).any(|(p, q)| (*p - *q).hypot() > tol)
+}
 
 /// The penalty of a violated side hint, in sizes of the mechanism (far more
 /// than any `near` distance).
@@ -210,6 +223,12 @@ impl Mechanism {
     /// Compile a description: check it, number it, find its structure, build
     /// the solvers and choose the assembly branch from the hints.
     pub fn new(def: &MechanismDef) -> Result<Self, LinkageError> {
+        if def.links.len() > limits::MAX_LINKS {
+            return Err(de(
+                "links",
+                format!("{} links given; at most {} are taken", def.links.len(), limits::MAX_LINKS),
+            ));
+        }
         // --- links
         let mut link_names = vec![FRAME.to_string()];
         let mut mass_centers = vec![Vec2::ZERO];
@@ -850,43 +869,276 @@ impl Mechanism {
 
     /// Choose each dyad's branch and each general group's start from the
     /// assembly hints at the assembly angle.
+    ///
+    /// The choice is made unit by unit, so its cost is linear in the groups
+    /// for hints that each speak of one dyad. A hint's score depends on the
+    /// groups that place its points and on every group upstream of them (its
+    /// cone); groups whose cones meet form one unit, searched over all its
+    /// branch combinations (at most 2^[`MAX_COUPLED`], refused past that),
+    /// exactly as the whole mechanism once was. Units share no group and no
+    /// hint, so the best assembly of the whole is the best of each unit. A
+    /// group that no hint depends on is a unit of its own: its first branch
+    /// (+1) that assembles, and with any hint given, an error if its other
+    /// branch assembles elsewhere (the hints do not choose it). With a Newton
+    /// group, whose 48 starting guesses are shared by all groups, the whole
+    /// mechanism is one unit.
     fn choose_branches(&mut self, def: &MechanismDef) -> Result<(), LinkageError> {
+        let mut resolved = Vec::with_capacity(def.hints.len());
         for (i, h) in def.hints.iter().enumerate() {
             let check = |n: &str| {
                 self.point(n)
                     .ok_or_else(|| LinkageError::desc(format!("assembly[{i}]"), format!("unknown point `{n}`")))
             };
-            check(&h.point)?;
-            match &h.kind {
+            let p = check(&h.point)?;
+            let line = match &h.kind {
                 HintKind::Above(a, b) | HintKind::Below(a, b) | HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
-                    check(a)?;
-                    check(b)?;
+                    Some((check(a)?, check(b)?))
                 }
-                HintKind::Near(_) => {}
+                HintKind::Near(_) => None,
+            };
+            resolved.push((p, line));
+        }
+        let mut group_of = vec![usize::MAX; self.link_names.len()];
+        for (g, grp) in self.groups.iter().enumerate() {
+            for &l in &grp.info.link_ids {
+                group_of[l] = g;
             }
         }
-        let branchy: Vec<usize> = (0..self.groups.len())
+        // where each point is known first: a joint is on several links, and
+        // its position is known once the earliest of them is solved (the
+        // frame and the crank before every group)
+        let rank = |l: usize| {
+            if l == 0 || group_of[l] == usize::MAX {
+                -1
+            } else {
+                group_of[l] as i64
+            }
+        };
+        let mut carrier: Vec<(usize, Vec2)> = self.points.iter().map(|p| (p.link, p.local)).collect();
+        for pair in &self.pairs {
+            let on: &[(usize, Vec2)] = match *pair {
+                Pair::R { a, b, la, lb, .. } => &[(a, la), (b, lb)],
+                Pair::P { slider, ps, .. } => &[(slider, ps)],
+            };
+            let c = &mut carrier[pair.point()];
+            for &(l, local) in on {
+                if rank(l) < rank(c.0) {
+                    *c = (l, local);
+                }
+            }
+        }
+        let units = self.assembly_units(&resolved, &carrier, &group_of);
+        let phi = self.assembly_angle;
+        let mut sol = self.solution();
+        // the crank and the frame: hints on their points alone are scored here
+        self.solve_groups(phi, &[], &mut sol)?;
+        let fixed_hints: Vec<usize> = (0..resolved.len())
+            .filter(|&i| !units.iter().any(|u| u.hints.contains(&i)))
+            .collect();
+        let s = self.score(def, &resolved, &carrier, &fixed_hints, &sol)?;
+        if s >= VIOLATION * self.scale {
+            return Err(self.unsatisfied(def));
+        }
+        for unit in &units {
+            self.choose_unit(def, &resolved, &carrier, unit, &mut sol)?;
+        }
+        if self.has_general {
+            self.init = sol.links;
+        } else {
+            let mut fresh = self.solution();
+            self.solve_once(phi, &mut fresh)?;
+            self.init = fresh.links;
+        }
+        Ok(())
+    }
+
+    /// Split the groups into units chosen independently: the hinted units
+    /// (unions of the hints' cones) first, then every other group alone, in
+    /// solving order, so that each unit's upstream groups are chosen before it.
+    fn assembly_units(
+        &self,
+        hints: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
+        group_of: &[usize],
+    ) -> Vec<AssemblyUnit> {
+        let ng = self.groups.len();
+        // the groups each group takes its outer joints from
+        let upstream: Vec<Vec<usize>> = self
+            .groups
+            .iter()
+            .enumerate()
+            .map(|(g, grp)| {
+                let mut up: Vec<usize> = grp
+                    .info
+                    .pair_ids
+                    .iter()
+                    .flat_map(|&p| {
+                        let (a, b) = self.pairs[p].links();
+                        [a, b]
+                    })
+                    .map(|l| group_of[l])
+                    .filter(|&h| h != usize::MAX && h != g)
+                    .collect();
+                up.sort_unstable();
+                up.dedup();
+                up
+            })
+            .collect();
+        // union-find over groups; a unit's root is its smallest group
+        let mut root: Vec<usize> = (0..ng).collect();
+        fn find(root: &mut [usize], mut g: usize) -> usize {
+            while root[g] != g {
+                root[g] = root[root[g]];
+                g = root[g];
+            }
+            g
+        }
+        let mut hinted = vec![false; ng];
+        let mut hint_unit = vec![usize::MAX; hints.len()];
+        let mut seen = vec![usize::MAX; ng];
+        for (i, &(p, line)) in hints.iter().enumerate() {
+            let mut stack: Vec<usize> = [Some(p), line.map(|l| l.0), line.map(|l| l.1)]
+                .into_iter()
+                .flatten()
+                .map(|q| group_of[carrier[q].0])
+                .filter(|&g| g != usize::MAX)
+                .collect();
+            let mut cone = Vec::new();
+            while let Some(g) = stack.pop() {
+                if seen[g] == i {
+                    continue;
+                }
+                seen[g] = i;
+                cone.push(g);
+                stack.extend(upstream[g].iter().copied());
+            }
+            if let Some(&first) = cone.first() {
+                hint_unit[i] = first;
+                for &g in &cone {
+                    hinted[g] = true;
+                    let (a, b) = (find(&mut root, first), find(&mut root, g));
+                    root[a.max(b)] = a.min(b);
+                }
+            }
+        }
+        if self.has_general {
+            // one set of starting guesses for every Newton group: one unit
+            for (g, h) in hinted.iter_mut().enumerate() {
+                *h = true;
+                let (a, b) = (find(&mut root, 0), find(&mut root, g));
+                root[a.max(b)] = a.min(b);
+            }
+        }
+        let mut units: Vec<AssemblyUnit> = Vec::new();
+        let mut unit_of_root = vec![usize::MAX; ng];
+        for g in (0..ng).filter(|&g| hinted[g]) {
+            let r = find(&mut root, g);
+            if unit_of_root[r] == usize::MAX {
+                unit_of_root[r] = units.len();
+                units.push(AssemblyUnit::default());
+            }
+            units[unit_of_root[r]].groups.push(g);
+        }
+        for (i, &g) in hint_unit.iter().enumerate() {
+            if g != usize::MAX {
+                let r = find(&mut root, g);
+                units[unit_of_root[r]].hints.push(i);
+            }
+        }
+        for g in (0..ng).filter(|&g| !hinted[g]) {
+            units.push(AssemblyUnit {
+                groups: vec![g],
+                hints: Vec::new(),
+            });
+        }
+        units
+    }
+
+    /// Choose the branches of one unit: every combination of its dyads'
+    /// branches (and every start of its Newton groups) is assembled with the
+    /// groups chosen before kept; the best score of the unit's hints wins, the
+    /// first found among equal ones; `sol` is left holding it.
+    fn choose_unit(
+        &mut self,
+        def: &MechanismDef,
+        resolved: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
+        unit: &AssemblyUnit,
+        sol: &mut Solution,
+    ) -> Result<(), LinkageError> {
+        let branchy: Vec<usize> = unit
+            .groups
+            .iter()
+            .copied()
             .filter(|&g| self.groups[g].dyad().is_some_and(|d| d.has_branches()))
             .collect();
+        if branchy.len() > MAX_COUPLED {
+            let labels: Vec<String> = branchy.iter().map(|&g| self.groups[g].label()).collect();
+            let h: Vec<String> = unit.hints.iter().map(|&i| def.hints[i].to_string()).collect();
+            return Err(LinkageError::desc(
+                "assembly",
+                format!(
+                    "choosing the assembly would try the 2^{} branch combinations of the dyads {} together (at most 2^{MAX_COUPLED} are tried){}; give each dyad a hint on its own points (e.g. \"C above BD\" for the dyad BCD), so that each is chosen alone",
+                    branchy.len(),
+                    labels.join(", "),
+                    if h.is_empty() {
+                        String::new()
+                    } else {
+                        format!(", because the hints ({}) depend on all of them", h.join("; "))
+                    }
+                ),
+            ));
+        }
         let phi = self.assembly_angle;
-        // every assembly found: (score, branch signs, links, point positions)
-        let mut found: Vec<Found> = Vec::new();
+        let starts = if self.has_general { 48 } else { 1 };
+        let tol = 1e-6 * self.scale;
+        let tie_tol = 1e-9 * self.scale;
+        // the best so far: (score, combination·starts + start, links, point
+        // positions, the order found)
+        #[allow(clippy::type_complexity)]
+        let mut best: Option<(f64, usize, Vec<LinkState>, Vec<Vec2>, usize)> = None;
+        // assemblies as good as the best but elsewhere, in the order found
+        let mut ties: Vec<(usize, f64, Vec<Vec2>)> = Vec::new();
         let mut first_err = None;
-        let general_starts = if self.has_general { 48 } else { 1 };
+        let mut order = 0usize;
         for combo in 0..(1usize << branchy.len()) {
             for (k, &g) in branchy.iter().enumerate() {
                 self.groups[g].sign = if combo >> k & 1 == 0 { 1.0 } else { -1.0 };
             }
-            for start in 0..general_starts {
-                let mut sol = self.solution();
-                if self.has_general {
-                    self.seed_general(start, def, &mut sol);
-                }
-                match self.solve_once(phi, &mut sol) {
+            for start in 0..starts {
+                let mut fresh;
+                let s = if self.has_general {
+                    fresh = self.solution();
+                    self.seed_general(start, def, &mut fresh);
+                    &mut fresh
+                } else {
+                    &mut *sol
+                };
+                match self.solve_groups(phi, &unit.groups, s) {
                     Ok(()) => {
-                        let score = self.score(def, &sol)?;
-                        let pts: Vec<Vec2> = sol.points.iter().map(|p| p.p).collect();
-                        found.push((score, self.groups.iter().map(|g| g.sign).collect(), sol.links.clone(), pts));
+                        let score = self.score(def, resolved, carrier, &unit.hints, s)?;
+                        let pts: Vec<Vec2> = s.points.iter().map(|p| p.p).collect();
+                        order += 1;
+                        match &best {
+                            Some(b) if score.total_cmp(&b.0).is_ge() => {
+                                if !def.hints.is_empty() && ties.len() < 64 && (score - b.0).abs() <= tie_tol && differs(&pts, &b.3, tol) {
+                                    ties.push((order, score, pts));
+                                }
+                            }
+                            _ => {
+                                if let Some(b) = best.take() {
+                                    if !def.hints.is_empty() {
+                                        ties.push((b.4, b.0, b.3));
+                                    }
+                                }
+                                ties.retain(|t| (t.1 - score).abs() <= tie_tol);
+                                let links = s.links.clone();
+                                best = Some((score, combo * starts + start, links, pts, order));
+                            }
+                        }
+                        if def.hints.is_empty() && best.is_some() {
+                            break;
+                        }
                     }
                     Err(e) => {
                         if first_err.is_none() {
@@ -895,33 +1147,22 @@ impl Mechanism {
                     }
                 }
             }
+            if def.hints.is_empty() && best.is_some() {
+                break;
+            }
         }
-        // the best score; the first found wins among equal ones when no hint is given
-        let Some(bi) = (0..found.len()).min_by(|&i, &j| found[i].0.total_cmp(&found[j].0)) else {
+        let Some((score, pick, links, pts, _)) = best else {
             return Err(first_err.unwrap_or_else(|| LinkageError::Structure("no assembly found".into())));
         };
-        let score = found[bi].0;
         if score >= VIOLATION * self.scale {
-            let h: Vec<String> = def.hints.iter().map(|h| h.to_string()).collect();
-            return Err(LinkageError::desc(
-                "assembly",
-                format!(
-                    "no assembly at φ = {:.3}° satisfies every hint ({})",
-                    phi.to_degrees(),
-                    h.join("; ")
-                ),
-            ));
+            return Err(self.unsatisfied(def));
         }
         if !def.hints.is_empty() {
-            // another assembly, different in position, that the hints rate as well
-            let tol = 1e-6 * self.scale;
-            let tie = found
-                .iter()
-                .find(|f| (f.0 - score).abs() <= 1e-9 * self.scale && f.3.iter().zip(&found[bi].3).any(|(p, q)| (*p - *q).hypot() > tol));
-            if let Some(t) = tie {
+            ties.sort_by_key(|t| t.0);
+            if let Some(t) = ties.iter().find(|t| (t.1 - score).abs() <= tie_tol && differs(&t.2, &pts, tol)) {
                 let differ: Vec<String> =
-                    t.3.iter()
-                        .zip(&found[bi].3)
+                    t.2.iter()
+                        .zip(&pts)
                         .enumerate()
                         .filter(|(i, (p, q))| self.points[*i].link != 0 && (**p - **q).hypot() > tol)
                         .map(|(i, (p, q))| {
@@ -943,26 +1184,102 @@ impl Mechanism {
                 ));
             }
         }
-        let (_, signs, links, _) = found.swap_remove(bi);
-        for (g, s) in self.groups.iter_mut().zip(signs) {
-            g.sign = s;
+        let combo = pick / starts;
+        for (k, &g) in branchy.iter().enumerate() {
+            self.groups[g].sign = if combo >> k & 1 == 0 { 1.0 } else { -1.0 };
         }
-        self.init = links;
+        for &g in &unit.groups {
+            for &l in &self.groups[g].info.link_ids {
+                sol.links[l] = links[l];
+            }
+        }
+        for (p, q) in sol.points.iter_mut().zip(&pts) {
+            p.p = *q;
+        }
         Ok(())
     }
 
-    /// Score an assembly: [`VIOLATION`]·size per violated side hint, plus
-    /// distances to `near`. A side hint about a line with no such side (a
-    /// vertical line for above/below, a horizontal one for left/right) is an
-    /// error.
-    fn score(&self, def: &MechanismDef, sol: &Solution) -> Result<f64, LinkageError> {
-        let pos = |n: &str| self.point(n).map(|i| sol.points[i].p).unwrap_or(Vec2::ZERO);
+    /// The error of hints that no assembly satisfies.
+    fn unsatisfied(&self, def: &MechanismDef) -> LinkageError {
+        let h: Vec<String> = def.hints.iter().map(|h| h.to_string()).collect();
+        LinkageError::desc(
+            "assembly",
+            format!(
+                "no assembly at φ = {:.3}° satisfies every hint ({})",
+                self.assembly_angle.to_degrees(),
+                h.join("; ")
+            ),
+        )
+    }
+
+    /// Solve the crank and the listed groups (in solving order; the others
+    /// keep their links in `sol`) at crank angle `phi`, then every point.
+    fn solve_groups(&self, phi: f64, groups: &[usize], sol: &mut Solution) -> Result<(), LinkageError> {
+        sol.phi = phi;
+        let c = &self.crank;
+        let (s, co) = phi.sin_cos();
+        let u = crate::state::unrotate(Vec2::new(co, s), c.dir_local);
+        let piv = PointState {
+            p: c.pivot,
+            v: Vec2::ZERO,
+            a: Vec2::ZERO,
+        };
+        sol.links[c.link] = LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps);
+        for &gi in groups {
+            let g = &self.groups[gi];
+            match &g.solver {
+                Solver::Dyad(dy) => dy.solve(g.sign, &mut sol.links).map_err(|e| self.fail(g, phi, e))?,
+                Solver::General => self.solve_general(g, sol).map_err(|e| self.fail(g, phi, e))?,
+            }
+        }
+        let links = &sol.links;
+        for &(i, l) in &self.origin_points {
+            let l = &links[l];
+            sol.points[i] = PointState { p: l.o, v: l.v, a: l.a };
+        }
+        for &(i, l, local) in &self.offset_points {
+            sol.points[i] = links[l].point(local);
+        }
+        let mut sum = 0.0;
+        for l in links {
+            sum += (l.a.x + l.a.y) + l.eps;
+        }
+        if !sum.is_finite() {
+            return Err(LinkageError::NonFinite {
+                phi_deg: phi.to_degrees(),
+                what: "the positions, velocities or accelerations".into(),
+            });
+        }
+        Ok(())
+    }
+
+    /// Score an assembly by the listed hints (each point taken on its
+    /// `carrier`, the link that places it first): [`VIOLATION`]·size per violated
+    /// side hint, plus distances to `near`. A side hint about a line with no
+    /// such side (a vertical line for above/below, a horizontal one for
+    /// left/right) is an error.
+    fn score(
+        &self,
+        def: &MechanismDef,
+        resolved: &[(usize, Option<(usize, usize)>)],
+        carrier: &[(usize, Vec2)],
+        which: &[usize],
+        sol: &Solution,
+    ) -> Result<f64, LinkageError> {
+        // on the link that places the point first (the frame's points as given)
+        let pos = |i: usize| {
+            let (l, local) = carrier[i];
+            if l == 0 { local } else { sol.links[l].point(local).p }
+        };
         let mut s = 0.0;
-        for (i, h) in def.hints.iter().enumerate() {
-            let p = pos(&h.point);
+        for &i in which {
+            let h = &def.hints[i];
+            let (pi, line) = resolved[i];
+            let p = pos(pi);
             let ok = match &h.kind {
                 HintKind::Above(a, b) | HintKind::Below(a, b) | HintKind::LeftOf(a, b) | HintKind::RightOf(a, b) => {
-                    let (pa, pb) = (pos(a), pos(b));
+                    let (ia, ib) = line.unwrap_or((pi, pi));
+                    let (pa, pb) = (pos(ia), pos(ib));
                     let d = pb - pa;
                     let len = d.hypot();
                     let vertical = matches!(h.kind, HintKind::Above(..) | HintKind::Below(..));

@@ -67,10 +67,11 @@ impl Error {
     /// `file:line:column: field:`.
     pub fn at(task: &TaskSource, span: Range<usize>, field: &str, message: impl std::fmt::Display) -> Self {
         let (line, col) = task.line_col(span.start);
+        let shown = screen_width(&task.text, span);
         Error::Input(Box::new(InputError {
             message: tidy(&format!("{}:{line}:{col}: {field}: {message}", task.name)),
-            src: Some(NamedSource::new(task.name.clone(), task.text.clone())),
-            span: Some(SourceSpan::from(span.start..span.end.max(span.start))),
+            src: Some(NamedSource::new(task.name.clone(), shown.0)),
+            span: Some(SourceSpan::from(shown.1.start..shown.1.end.max(shown.1.start))),
             help: None,
         }))
     }
@@ -95,4 +96,51 @@ impl Error {
             Error::Io(_) => 1,
         }
     }
+}
+
+/// The longest line of a task file shown under a message, in bytes: a
+/// longer line is cut there and ends in `…`.
+pub const MAX_SHOWN_LINE: usize = 200;
+
+/// The task file as shown under a message: every line longer than
+/// [`MAX_SHOWN_LINE`] cut (the lines keep their numbers), and the span moved
+/// into the shortened text (to the cut when it lay beyond it).
+///
+/// ```
+/// let text = format!("a = 1\nbogus = \"{}\"\n", "y".repeat(50_000));
+/// let (shown, span) = tmm_report::error::screen_width(&text, 6..50_000);
+/// assert!(shown.len() < 300 && shown.lines().count() == 2);
+/// assert_eq!(&shown[span.start..span.start + 5], "bogus");
+/// assert!(span.end <= shown.len());
+/// ```
+pub fn screen_width(text: &str, span: Range<usize>) -> (String, Range<usize>) {
+    if text.split('\n').all(|l| l.len() <= MAX_SHOWN_LINE) {
+        return (text.to_string(), span);
+    }
+    let mut out = String::with_capacity(text.len().min(1 << 16));
+    let (mut start, mut end) = (None, None);
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let body = line.strip_suffix('\n').unwrap_or(line);
+        let mut cut = body.len().min(MAX_SHOWN_LINE);
+        while !body.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        let here = out.len();
+        for (pos, slot) in [(span.start, &mut start), (span.end, &mut end)] {
+            if slot.is_none() && pos >= at && pos <= at + body.len() {
+                *slot = Some(here + (pos - at).min(cut));
+            }
+        }
+        out.push_str(&body[..cut]);
+        if cut < body.len() {
+            out.push('…');
+        }
+        if line.len() > body.len() {
+            out.push('\n');
+        }
+        at += line.len();
+    }
+    let start = start.unwrap_or(out.len());
+    (out, start..end.unwrap_or(start).max(start))
 }

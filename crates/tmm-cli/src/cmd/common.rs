@@ -8,10 +8,33 @@ use tmm_report::{Error, TaskSource};
 
 use crate::write::{self, Existing};
 
-/// Read a task file; a missing or unreadable file is bad input (exit code 2).
+/// The largest task file read, in bytes (4 MiB; the largest example is a
+/// few KB): a larger file, an endless device or a pipe that keeps writing is
+/// refused after reading one byte more.
+pub const MAX_TASK_BYTES: u64 = 4 << 20;
+
+/// Read a task file; a missing, unreadable or too large file is bad input
+/// (exit code 2).
 pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Error::input(&path.display().to_string(), format!("cannot read the task file: {e}")))?;
+    use std::io::Read;
+    let name = path.display().to_string();
+    let unreadable = |e: std::io::Error| Error::input(&name, format!("cannot read the task file: {e}"));
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_TASK_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(unreadable)?;
+    if bytes.len() as u64 > MAX_TASK_BYTES {
+        return Err(Error::input(
+            &name,
+            format!("the task file is larger than {MAX_TASK_BYTES} bytes (4 MiB), the most tmm reads; a task file is a few KB of TOML"),
+        ));
+    }
+    let text = String::from_utf8(bytes).map_err(|_| {
+        unreadable(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        ))
+    })?;
     let task = TaskSource::new(path.display().to_string(), text);
     // the drawings speak the [project]'s language; a bad [project] is
     // reported by the section that reads it

@@ -4,6 +4,7 @@
 
 mod cam;
 mod common;
+mod cost_bounds;
 mod dynamics;
 mod forces;
 mod fuzz;

@@ -81,6 +81,10 @@ pub fn coefficients(positions: &[(f64, f64)]) -> Option<[f64; 3]> {
     solve3(ata, atb)
 }
 
+/// The most positions (φ, ψ) of a function generation: each adds a row to
+/// every table and a line to every drawing of the result.
+pub const MAX_POSITIONS: usize = 1000;
+
 /// Synthesise and check.
 ///
 /// ```
@@ -90,6 +94,12 @@ pub fn coefficients(positions: &[(f64, f64)]) -> Option<[f64; 3]> {
 /// assert!(s.free_parameter.unwrap().value < 1e-9); // the largest residual, rad
 /// ```
 pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
+    if r.positions.len() > MAX_POSITIONS {
+        return Err(SynthesisError::input(
+            "positions",
+            format!("at most {MAX_POSITIONS} pairs (φ, ψ) are taken, {} given", r.positions.len()),
+        ));
+    }
     if r.positions.len() < 3 {
         return Err(SynthesisError::input(
             "positions",

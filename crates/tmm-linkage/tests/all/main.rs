@@ -4,6 +4,7 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+mod cost_bounds;
 mod dynamics;
 mod forces;
 mod fourbar_closed_form;

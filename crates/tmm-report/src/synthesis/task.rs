@@ -361,6 +361,10 @@ pub fn param_dim(r: &Request, name: &str) -> Dim {
     }
 }
 
+/// The most variants of a sweep: each is a whole synthesis (10 000 of the
+/// slowest kind, the six-bar with `--optimum`, take about 3.5 s).
+pub const MAX_SWEEP: usize = 10_000;
+
 /// Read a sweep spec `PARAM=FROM..TO:N` for the request; errors name `label`
 /// (`--sweep` or `synthesis.sweep`) and the valid parameter names.
 pub fn parse_sweep(r: &Request, text: &str) -> Result<SweepSpec, String> {
@@ -374,8 +378,8 @@ pub fn parse_sweep(r: &Request, text: &str) -> Result<SweepSpec, String> {
     let (range, n) = rest.rsplit_once(':').ok_or_else(|| bad("no `:N`"))?;
     let (from, to) = range.split_once("..").ok_or_else(|| bad("no `..` between FROM and TO"))?;
     let n: usize = n.trim().parse().map_err(|_| bad("N is not a whole number"))?;
-    if !(1..=100_000).contains(&n) {
-        return Err(bad("N must be from 1 to 100000"));
+    if !(1..=MAX_SWEEP).contains(&n) {
+        return Err(bad(&format!("N must be from 1 to {MAX_SWEEP}")));
     }
     let dim = param_dim(r, param);
     let val = |t: &str| units::parse(t.trim(), dim).map_err(|e| bad(&e.to_string()));
@@ -564,6 +568,16 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         }
         "function-generation" => {
             let positions = f.angle_pairs("positions")?;
+            if positions.len() > tmm_linkage::synthesis::function_gen::MAX_POSITIONS {
+                return Err(f.error(
+                    "positions",
+                    format!(
+                        "{} positions given; at most {} are taken (each adds a row to every table and drawing)",
+                        positions.len(),
+                        tmm_linkage::synthesis::function_gen::MAX_POSITIONS
+                    ),
+                ));
+            }
             if positions.len() < 3 {
                 return Err(f
                     .error(
