@@ -202,7 +202,7 @@ pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run
         doc.insert(o.section.into(), o.json.clone());
     }
     let report = serde_json::Value::Object(doc);
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(&prepared.task);
     docs.add_text("report.json", to_json_text(&report))?;
     for o in &sections {
         docs.append(o.docs.clone());
