@@ -102,6 +102,19 @@ impl TaskSource {
         }
     }
 
+    /// An error about a section the file lacks, located at the file's end,
+    /// where the section would be added (`task.toml:41:1: linkage: …`).
+    ///
+    /// ```
+    /// let t = tmm_report::TaskSource::new("t.toml", "title = \"x\"\n");
+    /// let e = t.missing("linkage", "the file has no [linkage] section");
+    /// assert!(e.to_string().starts_with("t.toml:2:1: linkage: the file has no [linkage] section"), "{e}");
+    /// ```
+    pub fn missing(&self, section: &str, message: impl std::fmt::Display) -> Error {
+        let end = self.text.len();
+        Error::at(self, end..end, section, message)
+    }
+
     /// Check that every top-level key is a known section.
     pub fn check_sections(&self) -> Result<toml::Table, Error> {
         let doc: toml::Spanned<toml::Table> = self.parse("task file")?;
