@@ -229,3 +229,109 @@ fn file_level_messages_are_located() {
         "{err}"
     );
 }
+
+/// `synth-unnamed-field`, `synth-huge-values-messages`: every refusal of a
+/// synthesis names the option (or the task file's field at its line), huge
+/// and tiny sizes are range-checked, and no NaN, inf or internal coordinate
+/// is shown.
+#[test]
+fn synthesis_refusals_name_the_option() {
+    let pos = ["--position", "30, 60", "--position", "60, 80", "--position", "90, 100"];
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec![
+                "slotted-lever",
+                "--stroke",
+                "400 mm",
+                "--k",
+                "1.5",
+                "--pivots",
+                "50 mm",
+                "--coupler-ratio",
+                "0",
+            ],
+            "--coupler-ratio:",
+        ),
+        ([&["function-generation"][..], &pos, &["--frame", "0"]].concat(), "--frame:"),
+        ([&["function-generation"][..], &pos, &["--frame", "1e300"]].concat(), "--frame:"),
+        (
+            vec!["crank-slider", "--k", "1.2", "--max-pressure", "45", "--stroke", "1e-9"],
+            "--stroke:",
+        ),
+        (
+            vec!["crank-slider", "--stroke", "1e300", "--k", "1.2", "--max-pressure", "45"],
+            "--stroke:",
+        ),
+        (
+            vec!["crank-slider", "--stroke", "1e300", "--k", "1.2", "--lambda", "4"],
+            "--stroke:",
+        ),
+        (
+            vec!["crank-slider", "--stroke", "9000 m", "--k", "1.2", "--lambda", "4"],
+            "--stroke:",
+        ),
+        (
+            vec![
+                "six-bar-inversion",
+                "--k",
+                "1.15",
+                "--travel",
+                "1e300",
+                "--guide",
+                "-320 mm",
+                "--start",
+                "180 mm",
+                "--coupler",
+                "320 mm",
+                "--swing",
+                "70",
+                "--lever",
+                "360 mm",
+            ],
+            "--travel:",
+        ),
+    ];
+    for (args, named) in cases {
+        let mut a = vec!["synth"];
+        a.extend(&args);
+        let (code, _, err) = run(&a);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(named), "{args:?}: {err}");
+        for bad in ["NaN", "inf m", "links.", "degrees of freedom"] {
+            assert!(!err.contains(bad), "{args:?}: {err}");
+        }
+    }
+    let src = example("synth-seed-002-ex3-shaper.toml");
+    let line = src.lines().position(|l| l.starts_with("coupler_ratio")).unwrap() + 1;
+    let t = src
+        .lines()
+        .map(|l| if l.starts_with("coupler_ratio") { "coupler_ratio = 0" } else { l })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let (d, f) = task("synth-file", "task.toml", t.as_bytes());
+    let (code, _, err) = run_in(&d, &["run", &f, "--out", "o", "--no-pdf"]);
+    assert_eq!(code, 2);
+    assert!(err.contains(&format!("task.toml:{line}:17: synthesis.coupler_ratio:")), "{err}");
+}
+
+/// `dyn-rim-thin`: a flywheel ratio or density near zero gave a flywheel of
+/// no finite size, reported without the field; now each is refused at its
+/// place with its range.
+#[test]
+fn flywheel_ratios_are_range_checked() {
+    let cases = [
+        ("shape = \"rim\"\nthickness_ratio = 1e-300\n", "thickness_ratio"),
+        ("width_ratio = \"1e-320\"\n", "width_ratio"),
+        ("density = \"1e-320 g/cm^3\"\n", "density"),
+    ];
+    for (lines, field) in cases {
+        let text = format!("{}\n[dynamics.flywheel]\n{lines}", tmm_report::run::DEFAULT_TASK);
+        let (d, f) = task("flywheel", "task.toml", text.as_bytes());
+        let (code, _, err) = run_in(&d, &["dynamics", &f, "--json"]);
+        assert_eq!(code, 2, "{field}");
+        assert!(
+            err.contains(&format!("dynamics.flywheel.{field}: ")) && err.contains("outside the accepted range"),
+            "{err}"
+        );
+    }
+}
