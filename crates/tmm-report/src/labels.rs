@@ -45,7 +45,9 @@ pub const DASH_DOT_DOT: Style = Style {
 };
 
 /// A number with `digits` decimals and the decimal separator of `lang`
-/// (comma in ru/uk, GOST 2.105; point in en); `-0` is printed as `0`.
+/// (comma in ru/uk, GOST 2.105; point in en); `-0` is printed as `0`; a
+/// value that is not finite as the marker the output check refuses
+/// ([`crate::output::NONFINITE`]).
 ///
 /// ```
 /// use tmm_report::{labels::num, project::Language};
@@ -53,6 +55,9 @@ pub const DASH_DOT_DOT: Style = Style {
 /// assert_eq!(num(Language::En, -0.0001, 2), "0.00");
 /// ```
 pub fn num(lang: Language, v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return crate::output::NONFINITE.to_string();
+    }
     let mut s = format!("{v:.digits$}");
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s.remove(0);

@@ -17,7 +17,8 @@
 //! [`project`] reads `[project]` (title page, title block, language,
 //! sheet format), [`words`] the drawings' words in ru/uk/en, [`paper`] the drawings'
 //! slots on the sheets, standard scales and round μ. Shared pieces: [`error`] (the one error type, exit codes), [`task`]
-//! (sources, quantities with units), [`svg`] (a canvas and a plotter),
+//! (sources, quantities with units), [`user_text`] (names and titles: length,
+//! control characters), [`svg`] (a canvas and a plotter),
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
 pub mod cam;
@@ -40,6 +41,7 @@ pub mod sheets;
 pub mod svg;
 pub mod synthesis;
 pub mod task;
+pub mod user_text;
 pub mod words;
 
 pub use error::Error;

@@ -4,8 +4,10 @@
 //! Nothing here touches a file system. The command line writes the documents
 //! (all or none), the browser page shows them and the note typesets them: the
 //! same bytes everywhere. Every text document passes one check for
-//! non-finite numbers ([`check_finite`]) before it is handed out, so a NaN
-//! or an infinity becomes an error instead of a wrong drawing or table.
+//! non-finite numbers ([`check_finite_in`]) before it is handed out, so a NaN
+//! or an infinity becomes an error instead of a wrong drawing or table; the
+//! user's own text (a title "Infinity gear", a link named `inf`) is told
+//! apart from a number and passes as written.
 
 use crate::Error;
 
@@ -45,23 +47,57 @@ impl Document {
     }
 }
 
-/// The documents of a run or a section, in the order they were made.
+/// The documents of a run or a section, in the order they were made, with
+/// the user's text that the non-finite check lets pass ([`check_finite_in`]).
 #[derive(Debug, Clone, Default)]
 pub struct Documents {
     docs: Vec<Document>,
+    excused: std::sync::Arc<Vec<String>>,
 }
 
 impl Documents {
-    /// No documents yet.
+    /// No documents yet, and no user text: every `NaN`, `inf` or `Infinity`
+    /// word in a document is refused.
     pub fn new() -> Self {
         Self::default()
     }
 
+    /// No documents yet, for a task: its own text ([`crate::user_text::excused`])
+    /// passes the non-finite check as written.
+    ///
+    /// ```
+    /// use tmm_report::{TaskSource, output::Documents};
+    /// let t = TaskSource::new("t.toml", "title = \"Infinity gear\"\n");
+    /// let mut d = Documents::for_task(&t);
+    /// assert!(d.add_text("a.txt", "Infinity gear: u = 6").is_ok());
+    /// assert!(d.add_text("b.txt", "Infinity gear: u = inf").is_err());
+    /// assert!(Documents::new().add_text("a.txt", "Infinity gear").is_err());
+    /// ```
+    pub fn for_task(task: &crate::TaskSource) -> Self {
+        Documents {
+            docs: Vec::new(),
+            excused: std::sync::Arc::new(crate::user_text::excused(task)),
+        }
+    }
+
+    /// No documents yet, with the same user text as `other`.
+    pub fn like(other: &Documents) -> Self {
+        Documents {
+            docs: Vec::new(),
+            excused: other.excused.clone(),
+        }
+    }
+
+    /// The user's text that passes the non-finite check.
+    pub fn excused(&self) -> &[String] {
+        &self.excused
+    }
+
     /// Add a text document at `path` after checking it for non-finite
-    /// numbers ([`check_finite`]).
+    /// numbers ([`check_finite_in`]).
     pub fn add_text(&mut self, path: impl Into<String>, text: impl Into<String>) -> Result<(), Error> {
         let d = Document::text(path, text);
-        check_finite(&d)?;
+        check_finite_in(&d, &self.excused)?;
         self.docs.push(d);
         Ok(())
     }
@@ -74,13 +110,17 @@ impl Documents {
     /// Add a binary document (DXF is text too and goes through the check).
     pub fn add_bytes(&mut self, path: impl Into<String>, bytes: Vec<u8>) -> Result<(), Error> {
         let d = Document { path: path.into(), bytes };
-        check_finite(&d)?;
+        check_finite_in(&d, &self.excused)?;
         self.docs.push(d);
         Ok(())
     }
 
-    /// Move every document of `other` in, after these.
+    /// Move every document of `other` in, after these (they were checked
+    /// when they were added to `other`).
     pub fn append(&mut self, other: Documents) {
+        if self.excused.is_empty() {
+            self.excused = other.excused;
+        }
         self.docs.extend(other.docs);
     }
 
@@ -131,12 +171,24 @@ pub struct SectionOutput {
     pub docs: Documents,
 }
 
-/// The marker that [`num`] puts where a number is not finite; the check at
-/// the write point turns it into an error.
-const NONFINITE: &str = "NaN";
+/// What a number that is not finite is printed as by tmm's formatting
+/// helpers ([`num`], [`crate::svg::num`], [`crate::labels::num`]): a
+/// control character (which no user text may hold, [`crate::user_text`])
+/// before `NaN`, so [`check_finite_in`] refuses it wherever it stands, even
+/// beside a user's name `NaN`.
+pub const NONFINITE: &str = "\u{1}NaN";
 
-/// A JSON number; a non-finite value becomes the string `"NaN"`, which
-/// [`check_finite`] refuses, so it never reaches a file silently as `null`.
+/// [`NONFINITE`] as JSON writes it inside a string.
+const NONFINITE_JSON: &str = "\\u0001NaN";
+
+/// A JSON number; a non-finite value becomes the marker [`NONFINITE`], which
+/// [`check_finite_in`] refuses, so it never reaches a file silently as `null`.
+///
+/// ```
+/// use tmm_report::output::{num, to_json_text, Document, check_finite};
+/// let j = to_json_text(&serde_json::json!({ "name": "NaN", "x": num(f64::NAN) }));
+/// assert!(check_finite(&Document::text("a.json", j)).is_err());
+/// ```
 pub fn num(x: f64) -> serde_json::Value {
     if x.is_finite() {
         serde_json::Value::from(x)
@@ -151,11 +203,8 @@ pub fn to_json_text(v: &serde_json::Value) -> String {
     serde_json::to_string_pretty(v).unwrap_or_default()
 }
 
-/// Refuse a document that carries a non-finite number: Rust prints NaN as
-/// `NaN` and infinities as `inf`/`-inf`, and [`num`] marks them in JSON, so
-/// one scan of the text for those words (not inside a longer word, so
-/// `info` or `infeasible` pass) catches every table, drawing, CSV, DXF and
-/// JSON document at the one place they are handed out.
+/// [`check_finite_in`] with no user text: every `NaN`, `inf` or `Infinity`
+/// word is refused.
 ///
 /// ```
 /// use tmm_report::output::{Document, check_finite};
@@ -164,8 +213,31 @@ pub fn to_json_text(v: &serde_json::Value) -> String {
 /// assert!(check_finite(&Document::text("t.txt", "M = -inf N·m")).is_err());
 /// ```
 pub fn check_finite(d: &Document) -> Result<(), Error> {
+    check_finite_in(d, &[])
+}
+
+/// Refuse a document that carries a non-finite number. Two nets catch one:
+/// tmm's formatting helpers print it as the marker [`NONFINITE`], refused
+/// wherever it stands; and a number formatted elsewhere comes out as Rust
+/// writes it, `NaN`, `inf` or `-inf`, so the text is scanned for those words
+/// (and `Infinity`), not inside a longer word (`info`, `infeasible` pass).
+/// A word that is part of the user's own text (`excused`, from
+/// [`crate::user_text::excused`]: a title "Infinity gear", a link `inf`)
+/// passes where it stands as the user wrote it, one space-separated piece
+/// of that text at a time (a title block breaks a long title at spaces).
+///
+/// ```
+/// use tmm_report::output::{Document, check_finite_in, NONFINITE};
+/// let user = ["Planetary gear for -inf".to_string()];
+/// let ok = "<text>Planetary gear for</text><text>-inf</text>";
+/// assert!(check_finite_in(&Document::text("a.svg", ok), &user).is_ok());
+/// assert!(check_finite_in(&Document::text("a.svg", "u = inf"), &user).is_err());
+/// let marked = format!("<text>-inf</text><text>{NONFINITE}</text>");
+/// assert!(check_finite_in(&Document::text("a.svg", marked), &user).is_err());
+/// ```
+pub fn check_finite_in(d: &Document, excused: &[String]) -> Result<(), Error> {
     let Some(text) = d.as_text() else { return Ok(()) };
-    if let Some(at) = find_nonfinite(text) {
+    if let Some(at) = find_nonfinite_in(text, excused) {
         let line = text[..at].matches('\n').count() + 1;
         return Err(Error::input(
             &d.path,
@@ -178,11 +250,64 @@ pub fn check_finite(d: &Document) -> Result<(), Error> {
     Ok(())
 }
 
-/// Byte offset of the first `NaN`, `inf` or `Infinity` that stands as a word.
+/// Byte offset of the first non-finite number in `text`: the marker
+/// [`NONFINITE`] (also as JSON escapes it), or a `NaN`, `inf` or `Infinity`
+/// word that is not part of the user's text `excused`.
+#[doc(hidden)]
+pub fn find_nonfinite_in(text: &str, excused: &[String]) -> Option<usize> {
+    let marker = [NONFINITE, NONFINITE_JSON].iter().filter_map(|m| text.find(m)).min();
+    let mut from = 0;
+    let mut word = None;
+    while let Some(i) = find_nonfinite_word(&text[from..]) {
+        let s = from + i;
+        if !excused.iter().any(|u| in_user_text(text, s, u)) {
+            word = Some(s);
+            break;
+        }
+        from = word_end(text, s);
+    }
+    match (marker, word) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
+}
+
+/// [`find_nonfinite_in`] with no user text.
 #[doc(hidden)]
 pub fn find_nonfinite(text: &str) -> Option<usize> {
+    find_nonfinite_in(text, &[])
+}
+
+/// Whether the word at byte `s` of `text` stands inside a space-separated
+/// piece of the user's text `u`, written out in full around it.
+fn in_user_text(text: &str, s: usize, u: &str) -> bool {
+    u.split_whitespace().any(|piece| {
+        let mut from = 0;
+        while let Some(i) = find_nonfinite_word(&piece[from..]) {
+            let k = from + i;
+            if let Some(start) = s.checked_sub(k)
+                && text.is_char_boundary(start)
+                && text[start..].starts_with(piece)
+            {
+                return true;
+            }
+            from = word_end(piece, k);
+        }
+        false
+    })
+}
+
+/// The byte offset just past the word that starts at `s`.
+fn word_end(text: &str, s: usize) -> usize {
+    s + text[s..].bytes().take_while(|c| c.is_ascii_alphanumeric() || *c == b'_').count()
+}
+
+/// Byte offset of the first `NaN`, `inf` or `Infinity` that stands as a word.
+#[doc(hidden)]
+pub fn find_nonfinite_word(text: &str) -> Option<usize> {
     let b = text.as_bytes();
     let is_word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    let mut best: Option<usize> = None;
     for word in ["NaN", "inf", "Infinity"] {
         let mut from = 0;
         while let Some(i) = text[from..].find(word) {
@@ -191,10 +316,11 @@ pub fn find_nonfinite(text: &str) -> Option<usize> {
             let before = s == 0 || !is_word(b[s - 1]);
             let after = e >= b.len() || !is_word(b[e]);
             if before && after {
-                return Some(s);
+                best = Some(best.map_or(s, |x| x.min(s)));
+                break;
             }
             from = e;
         }
     }
-    None
+    best
 }

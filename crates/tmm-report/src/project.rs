@@ -141,8 +141,10 @@ struct Raw {
 }
 
 /// The longest text accepted in a `[project]` field, in characters (a title
-/// block's field holds far less; this only keeps nonsense out).
-pub const MAX_FIELD_CHARS: usize = 300;
+/// block's field holds far less; this only keeps nonsense out): the limit
+/// of every name and title, checked with its place before this section is
+/// read ([`crate::user_text`]).
+pub const MAX_FIELD_CHARS: usize = crate::user_text::MAX_TEXT_CHARS;
 
 /// Read `[project]` (all fields optional).
 ///
@@ -166,19 +168,8 @@ pub fn load(task: &TaskSource) -> Result<Project, Error> {
             ..Project::default()
         });
     };
-    let text = |field: &str, v: Option<String>| -> Result<String, Error> {
-        let v = v.unwrap_or_default();
-        if v.chars().count() > MAX_FIELD_CHARS {
-            return Err(Error::input(
-                &format!("{}: project.{field}", task.name),
-                format!(
-                    "the text is {} characters long; at most {MAX_FIELD_CHARS} are accepted",
-                    v.chars().count()
-                ),
-            ));
-        }
-        Ok(v.trim().to_string())
-    };
+    // the length and the characters were checked with their place by task.parse
+    let text = |_field: &str, v: Option<String>| -> Result<String, Error> { Ok(v.unwrap_or_default().trim().to_string()) };
     let word = |field: &str, v: Option<toml::Spanned<toml::Value>>| -> Result<String, Error> {
         match v {
             None => Ok(String::new()),

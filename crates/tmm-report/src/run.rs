@@ -102,7 +102,8 @@ pub fn prepare(task: &TaskSource, lang: Option<crate::project::Language>) -> Res
     }
     let task = task.clone().with_lang(project.lang).with_sheet(project.sheet);
     if !table.keys().any(|k| k != "title" && k != "project") {
-        return Err(Error::input(&task.name, "the task file has no section to run")
+        return Err(task
+            .missing("task file", "the task file has no section to run")
             .with_help(format!("add one of {}", crate::task::SECTIONS[2..].join(", "))));
     }
     // [synthesis] without [linkage]: the other sections see the synthesised one
@@ -202,7 +203,7 @@ pub fn assemble(prepared: &Prepared, sections: Vec<SectionOutput>) -> Result<Run
         doc.insert(o.section.into(), o.json.clone());
     }
     let report = serde_json::Value::Object(doc);
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(&prepared.task);
     docs.add_text("report.json", to_json_text(&report))?;
     for o in &sections {
         docs.append(o.docs.clone());

@@ -727,7 +727,9 @@ pub fn rich(s: &str, size: f64) -> String {
 }
 
 /// A number as printed on a drawing in `lang`: `decimals` places, trailing
-/// zeros dropped, a decimal comma in Russian and Ukrainian.
+/// zeros dropped, a decimal comma in Russian and Ukrainian; a value that
+/// is not finite as the marker the output check refuses
+/// ([`crate::output::NONFINITE`]).
 ///
 /// ```
 /// use tmm_report::{project::Language, svg::num};
@@ -736,6 +738,9 @@ pub fn rich(s: &str, size: f64) -> String {
 /// assert_eq!(num(-1.26, 1, Language::Uk), "-1,3");
 /// ```
 pub fn num(x: f64, decimals: usize, lang: crate::project::Language) -> String {
+    if !x.is_finite() {
+        return crate::output::NONFINITE.to_string();
+    }
     let mut t = format!("{x:.decimals$}");
     if t.contains('.') {
         t = t.trim_end_matches('0').trim_end_matches('.').to_string();

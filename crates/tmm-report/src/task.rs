@@ -84,8 +84,12 @@ impl TaskSource {
     }
 
     /// Deserialize the whole file into `T` (an area's view of the file),
-    /// turning a TOML or schema error into a located [`Error`].
+    /// turning a TOML or schema error into a located [`Error`]. The user's
+    /// names and texts are checked first ([`crate::user_text::check`]:
+    /// length and control characters), so no section reads one that is
+    /// refused.
     pub fn parse<T: for<'de> Deserialize<'de>>(&self, section: &str) -> Result<T, Error> {
+        crate::user_text::check(self)?;
         toml::from_str::<T>(&self.text).map_err(|e| self.toml_error(section, &e))
     }
 
@@ -96,6 +100,19 @@ impl TaskSource {
             Some(span) => Error::at(self, span, section, msg),
             None => Error::input(&format!("{}: {section}", self.name), msg),
         }
+    }
+
+    /// An error about a section the file lacks, located at the file's end,
+    /// where the section would be added (`task.toml:41:1: linkage: …`).
+    ///
+    /// ```
+    /// let t = tmm_report::TaskSource::new("t.toml", "title = \"x\"\n");
+    /// let e = t.missing("linkage", "the file has no [linkage] section");
+    /// assert!(e.to_string().starts_with("t.toml:2:1: linkage: the file has no [linkage] section"), "{e}");
+    /// ```
+    pub fn missing(&self, section: &str, message: impl std::fmt::Display) -> Error {
+        let end = self.text.len();
+        Error::at(self, end..end, section, message)
     }
 
     /// Check that every top-level key is a known section.
@@ -137,6 +154,41 @@ impl TaskSource {
         }
         None
     }
+}
+
+/// A task file's bytes as text; a byte that is not UTF-8 is refused at its
+/// place (`task.toml:28:12`, the column counting the characters before it),
+/// from [`std::str::from_utf8`]'s offset of the first bad byte.
+///
+/// ```
+/// let e = tmm_report::task::text_of("t.toml", b"a = 1\nb = \"1\xff\"\n".to_vec()).unwrap_err();
+/// assert_eq!(e.exit_code(), 2);
+/// assert!(e.to_string().starts_with("t.toml:2:7: "), "{e}");
+/// assert_eq!(tmm_report::task::text_of("t.toml", b"a = 1".to_vec()).unwrap(), "a = 1");
+/// ```
+pub fn text_of(name: &str, bytes: Vec<u8>) -> Result<String, Error> {
+    String::from_utf8(bytes).map_err(|e| {
+        let err = e.utf8_error();
+        let bytes = e.as_bytes();
+        let at = err.valid_up_to();
+        // the text up to the bad byte is valid: count its lines and characters
+        let before = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+        let line = before.matches('\n').count() + 1;
+        let col = before[before.rfind('\n').map_or(0, |p| p + 1)..].chars().count() + 1;
+        let bad: Vec<String> = bytes[at..(at + err.error_len().unwrap_or(bytes.len() - at)).min(bytes.len())]
+            .iter()
+            .take(4)
+            .map(|b| format!("0x{b:02X}"))
+            .collect();
+        Error::input(
+            &format!("{name}:{line}:{col}"),
+            format!(
+                "the task file is not UTF-8 text: the byte {} here is not a character",
+                bad.join(" ")
+            ),
+        )
+        .with_help("save the file as UTF-8 (any text editor can); tmm reads task files in UTF-8 only")
+    })
 }
 
 /// A `toml`/`serde` message in words for the user: no Rust type names.

@@ -147,7 +147,8 @@ pub fn run(a: &Args) -> Result<(), Error> {
             }
             let src: TaskSource = read_task(path)?;
             let Some((sec, span)) = input::read_section(&src)? else {
-                return Err(Error::input(&src.name, "the task file has no [cam] section")
+                return Err(src
+                    .missing("cam", "the task file has no [cam] section")
                     .with_help("add a [cam] section (see `tmm run --print-default`) or give the options"));
             };
             let loc = input::file_locator(&src, &sec, span);

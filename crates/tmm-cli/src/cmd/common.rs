@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use tmm_report::output::{Document, Documents, check_finite, to_json_text};
+use tmm_report::output::{Document, Documents, check_finite_in, to_json_text};
 use tmm_report::{Error, TaskSource};
 
 use crate::write::{self, Existing};
@@ -29,17 +29,24 @@ pub fn read_task(path: &Path) -> Result<TaskSource, Error> {
             format!("the task file is larger than {MAX_TASK_BYTES} bytes (4 MiB), the most tmm reads; a task file is a few KB of TOML"),
         ));
     }
-    let text = String::from_utf8(bytes).map_err(|_| {
-        unreadable(std::io::Error::new(
-            std::io::ErrorKind::InvalidData,
-            "stream did not contain valid UTF-8",
-        ))
-    })?;
-    let task = TaskSource::new(path.display().to_string(), text);
+    let text = tmm_report::task::text_of(&name, bytes)?;
+    let task = TaskSource::new(name, text);
+    let _ = EXCUSED.set(tmm_report::user_text::excused(&task));
     // the drawings speak the [project]'s language; a bad [project] is
     // reported by the section that reads it
     let p = tmm_report::project::load(&task).unwrap_or_default();
     Ok(task.with_lang(p.lang).with_sheet(p.sheet))
+}
+
+/// The user's text of the task this process read, which the non-finite
+/// check of standard output lets pass (a link named `inf`); set once by
+/// [`read_task`], since one `tmm` process reads one task.
+static EXCUSED: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+
+/// The user's text that the non-finite check of what is printed lets pass
+/// (see [`tmm_report::output::check_finite_in`]).
+pub fn excused() -> &'static [String] {
+    EXCUSED.get().map_or(&[], Vec::as_slice)
 }
 
 /// A JSON document as the text printed on stdout, checked for non-finite
@@ -52,7 +59,7 @@ pub fn json_text(v: &serde_json::Value) -> Result<String, Error> {
 
 /// Text for stdout, checked for non-finite numbers before anything is written.
 pub fn checked(text: String) -> Result<String, Error> {
-    check_finite(&Document::text("standard output", text.as_str()))?;
+    check_finite_in(&Document::text("standard output", text.as_str()), excused())?;
     Ok(text)
 }
 

@@ -33,7 +33,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
         .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm dynamics examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
     let (l, ft, dt) = load(&task)?.ok_or_else(|| {
-        Error::input(&task.name, "the file has no [dynamics] section")
+        task.missing("dynamics", "the file has no [dynamics] section")
             .with_help("add [dynamics] with delta = 0.02 (the coefficient of speed fluctuation); see examples/seed-001-fourbar.toml")
     })?;
     let d = analyse(&task, &l, &ft, &dt)?;

@@ -36,8 +36,10 @@ pub fn run(a: &Args) -> Result<(), Error> {
         .as_ref()
         .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm forces examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
-    let (l, t) = load(&task)?
-        .ok_or_else(|| Error::input(&task.name, "the file has no [forces] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let (l, t) = load(&task)?.ok_or_else(|| {
+        task.missing("forces", "the file has no [forces] section")
+            .with_help("see examples/seed-001-fourbar.toml")
+    })?;
     let at = match &a.at {
         Some(s) => Some(arg_qty("--at", s, Dim::Angle)?),
         None => None,

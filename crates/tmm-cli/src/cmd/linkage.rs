@@ -33,8 +33,10 @@ pub struct Args {
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
     let task = read_task(&a.file)?;
-    let l = load(&task)?
-        .ok_or_else(|| Error::input(&task.name, "the file has no [linkage] section").with_help("see examples/seed-001-fourbar.toml"))?;
+    let l = load(&task)?.ok_or_else(|| {
+        task.missing("linkage", "the file has no [linkage] section")
+            .with_help("see examples/seed-001-fourbar.toml")
+    })?;
     let all = a.at.as_deref().is_some_and(|t| t.trim().eq_ignore_ascii_case("all"));
     let at = match &a.at {
         Some(_) if all => None,

@@ -104,7 +104,7 @@ fn params(a: &Args) -> Result<(Params, Origin), Error> {
             let task: TaskSource = read_task(path)?;
             let got = tmm_report::planetary::input::from_task(&task)?;
             Some(got.ok_or_else(|| {
-                Error::input(&task.name, "the task file has no [planetary] section")
+                task.missing("planetary", "the task file has no [planetary] section")
                     .with_help("add a [planetary] section or give --scheme, --ratio and --planets")
             })?)
         }

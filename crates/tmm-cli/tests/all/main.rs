@@ -10,6 +10,7 @@ mod forces;
 mod fuzz;
 mod gear;
 mod hardening;
+mod input_limits;
 mod linkage;
 mod note;
 mod planetary_cli;

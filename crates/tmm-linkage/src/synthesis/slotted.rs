@@ -98,7 +98,7 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
         Lever::Oscillating => (loe * half.sin(), h / (2.0 * half.sin())),
     };
     let lcd = match r.coupler {
-        Coupler::Ratio(q) => positive("coupler", q)? * lec,
+        Coupler::Ratio(q) => positive("coupler_ratio", q)? * lec,
         Coupler::Length(l) => positive("coupler", l)?,
     };
     // the coupler must reach the ram's guide from every position of C

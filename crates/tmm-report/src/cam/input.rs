@@ -259,6 +259,20 @@ fn quantity(raw: &Option<RawQty>, dim: Dim, f: Field, loc: &Locate<'_>) -> Resul
     }
 }
 
+/// A length of the cam mechanism (the stroke, offset, roller, arm, pivot
+/// distance), m: |x| ≤ [`tmm_linkage::limits::MAX_LENGTH`], the linkage's
+/// limit, for the same reason — every tolerance is relative to the size, and
+/// beyond it squares of lengths and the curvature 1/ρ leave the range of
+/// doubles (a stroke of 1e12 m gives a curvature that underflows to 0).
+fn within_size(x: f64, f: Field, loc: &Locate<'_>) -> Result<(), Error> {
+    let max = tmm_linkage::limits::MAX_LENGTH;
+    if x.abs() <= max {
+        return Ok(());
+    }
+    Err(loc(f, format!("{x:e} m is outside the accepted range −1e4 m … 1e4 m"))
+        .with_help("a cam mechanism up to 10 km across; give the value with its unit, e.g. \"13 mm\""))
+}
+
 fn limits_of(raw: &RawQty, transmission: bool, f: Field, loc: &Locate<'_>) -> Result<Limits, Error> {
     let r = match raw {
         RawQty::Num(x) => spec::parse_limits(&format!("{x}"), transmission),
@@ -327,7 +341,17 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
         None => Program::from_phases(phases),
     }
     .map_err(|e| cam_error(e, loc))?;
-    let len = |r: &Option<RawQty>, f: Field| quantity(r, Dim::Length, f, loc);
+    if !oscillating {
+        let f = if stroke.is_some() { Field::Stroke } else { Field::Phases };
+        within_size(program.stroke(), f, loc)?;
+    }
+    let len = |r: &Option<RawQty>, f: Field| -> Result<Option<f64>, Error> {
+        let x = quantity(r, Dim::Length, f, loc)?;
+        if let Some(x) = x {
+            within_size(x, f, loc)?;
+        }
+        Ok(x)
+    };
     let offset = match &raw.offset {
         Some(RawQty::Text(t)) if t.trim().eq_ignore_ascii_case("auto") => None,
         r => len(r, Field::Offset)?,

@@ -69,7 +69,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let raw = sec.raw();
     let cam = input::build(&raw, &loc)?;
     let d = solve(&cam, input::given_r0(&raw, &loc)?, &loc)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     drawings(&cam, &d, "cam/", &mut docs, task.lang, task.sheet)?;
     docs.add_bytes("cam/cam-profile.dxf", profile_dxf(&d)?)?;
     docs.add_text("cam/cam-profile.csv", profile_csv(&d)?)?;

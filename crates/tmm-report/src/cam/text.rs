@@ -128,12 +128,15 @@ pub fn tables(task: &CamTask, d: &CamDesign, step_deg: usize) -> String {
     );
     let n = d.profile.phi.len();
     let step = step_deg.max(1);
+    // ρ of a straight piece of profile (curvature 0) is printed as "—"
+    let mut straight = false;
     for deg in (0..360).step_by(step) {
         let i = (deg * n) / 360;
         let m = d.profile.motion[i];
         let k = d.profile.curvature[i];
         let rho = if k.abs() < 1e-12 {
-            "∞".to_string()
+            straight = true;
+            "—".to_string()
         } else {
             format!("{:.3}", 1e3 / k)
         };
@@ -149,6 +152,9 @@ pub fn tables(task: &CamTask, d: &CamDesign, step_deg: usize) -> String {
             d.profile.pressure[i].to_degrees(),
             rho
         );
+    }
+    if straight {
+        let _ = writeln!(t, "  ρ —: a straight piece of profile (curvature 0)");
     }
     t
 }

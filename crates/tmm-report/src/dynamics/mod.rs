@@ -62,7 +62,7 @@ pub fn analyse(src: &TaskSource, l: &Loaded, ft: &ForcesTask, dt: &DynamicsTask)
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     draw::draw_all(&d, "dynamics/", task.lang, task.sheet, &mut docs)?;
     let json = json::document(&l, &d);
     docs.add_json("dynamics/dynamics.json", &json)?;
@@ -83,7 +83,7 @@ pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
     let (lang, sheet) = (task.lang, task.sheet);
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     let json = json::document(&l, &d);
     docs.add_json("dynamics/dynamics.json", &json)?;
     let text = text::report(&l, &d);

@@ -128,12 +128,12 @@ pub fn help_for(field: &str) -> &'static str {
         }
         "dynamics.flywheel.place" => "place = \"crank\" (the default) or \"motor\" (needs a motor)",
         "dynamics.flywheel.density" => {
-            "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³"
+            "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³; 10 … 100 000 kg/m³"
         }
         "dynamics.flywheel.shape" => "shape = \"disc\" (the default) or \"rim\" (with thickness_ratio = h/D in (0, 0.5))",
-        "dynamics.flywheel.width_ratio" => "width_ratio = 0.2 (b/D > 0)",
+        "dynamics.flywheel.width_ratio" => "width_ratio = 0.2 (b/D, 0.001 … 10)",
         "dynamics.flywheel.thickness_ratio" => {
-            "thickness_ratio = 0.1 (the rim's radial thickness h/D, in (0, 0.5); only with shape = \"rim\")"
+            "thickness_ratio = 0.1 (the rim's radial thickness h/D, 0.001 … 0.4999; only with shape = \"rim\")"
         }
         _ => "see the \"Task file\" part of docs/dynamics.md",
     }
@@ -324,6 +324,40 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
         };
         let width_ratio = ratio("width_ratio", &fr.width_ratio, 0.2)?;
         let thickness_ratio = ratio("thickness_ratio", &fr.thickness_ratio, 0.0)?;
+        // the sizes go as (I/(ρ·ratio))^(1/5): a ratio or density near zero
+        // gives a flywheel of infinite size, so each is held to a range that
+        // covers every real flywheel (a thin ring to a drum; cork to tungsten)
+        let within = |name: &str, span: Option<std::ops::Range<usize>>, v: f64, lo: f64, hi: f64, range: &str| match span {
+            Some(span) if !(lo..=hi).contains(&v) => {
+                let field = format!("dynamics.flywheel.{name}");
+                Err(Error::at(task, span, &field, format!("{v:e} is outside the accepted range {range}")).with_help(help_for(&field)))
+            }
+            _ => Ok(()),
+        };
+        within(
+            "width_ratio",
+            fr.width_ratio.as_ref().map(|q| q.span()),
+            width_ratio,
+            1e-3,
+            10.0,
+            "0.001 … 10",
+        )?;
+        within(
+            "thickness_ratio",
+            fr.thickness_ratio.as_ref().map(|q| q.span()),
+            thickness_ratio,
+            1e-3,
+            0.4999,
+            "0.001 … 0.4999 (below 0.5: the rim is thinner than its radius)",
+        )?;
+        within(
+            "density",
+            fr.density.as_ref().map(|q| q.span()),
+            fs.density,
+            10.0,
+            1e5,
+            "10 … 100 000 kg/m³",
+        )?;
         let shape = fr.shape.as_ref().map_or("disc", |s| s.get_ref().as_str());
         let shape_span = fr.shape.as_ref().map_or(fw.span(), |s| s.span());
         spans.insert("dynamics.flywheel.shape".to_string(), shape_span.clone());

@@ -223,7 +223,7 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((l, t)) = load(task)? else { return Ok(None) };
     let a = analyse(task, &l, &t, None)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     draw::draw_all(&l, &t, &a, task, "forces/", &mut docs)?;
     let json = json::document(&l, &t, &a);
     docs.add_json("forces/forces.json", &json)?;
@@ -243,7 +243,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
 pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
     let Some((l, t)) = load(task)? else { return Ok(None) };
     let a = analyse(task, &l, &t, None)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     let json = json::document(&l, &t, &a);
     docs.add_json("forces/forces.json", &json)?;
     let text = text::report(&l, &t, &a);
@@ -257,7 +257,7 @@ pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error
             docs,
         },
         draw: Box::new(move || {
-            let mut docs = Documents::new();
+            let mut docs = Documents::for_task(&task);
             draw::draw_all(&l, &t, &a, &task, "forces/", &mut docs)?;
             Ok(docs)
         }),
@@ -277,7 +277,7 @@ pub fn json_document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> serde_json::Va
 /// The drawings, as documents named by file name only (`group-1.svg`, …),
 /// in the task's language and for its sheet format.
 pub fn drawings(l: &Loaded, t: &ForcesTask, a: &Analysis, task: &TaskSource) -> Result<Documents, Error> {
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     draw::draw_all(l, t, a, task, "", &mut docs)?;
     Ok(docs)
 }

@@ -75,6 +75,9 @@ pub fn pair_json(s: &Solved, lim: &Limits, profiles: Option<(&ToothProfile, &Too
     o.insert("xmin2".into(), p.w2.xmin.map_or(Value::Null, num));
     o.insert("theta1_max".into(), p.theta1_max().map_or(Value::Null, num));
     o.insert("theta2_max".into(), p.theta2_max().map_or(Value::Null, num));
+    // null above means unbounded: the real active line reaches N1 (N2)
+    o.insert("theta1_unbounded".into(), p.theta1_max().is_none().into());
+    o.insert("theta2_unbounded".into(), p.theta2_max().is_none().into());
     if let Some(t) = p.tip_interference {
         o.insert("tip_interference".into(), num(t));
     }

@@ -151,7 +151,7 @@ fn teeth_near(t: &ToothProfile, rot: f64, c: Pt, n: i32) -> Vec<Vec<Pt>> {
 fn table(pair: &Pair) -> Vec<String> {
     let mm = |v: f64| format!("{:.3}", v * 1e3);
     let (w1, w2) = (&pair.w1, &pair.w2);
-    let th = |v: Option<f64>| v.map_or("∞".to_string(), |x| format!("{x:.3}"));
+    let th = |v: Option<f64>, n: usize| v.map_or(format!("unbounded (contact reaches N{n})"), |x| format!("{x:.3}"));
     vec![
         format!("z1 = {}, z2 = {}, m = {} mm", w1.z, w2.z, mm(pair.spec.m)),
         format!("x1 = {:.4}, x2 = {:.4}", w1.x, w2.x),
@@ -166,7 +166,7 @@ fn table(pair: &Pair) -> Vec<String> {
         format!("sa: {} / {} mm", mm(w1.sa), mm(w2.sa)),
         format!("p = {} mm, pb = {} mm", mm(pair.p), mm(pair.pb)),
         format!("εα = {:.4}", pair.eps_alpha),
-        format!("ϑ1max = {}, ϑ2max = {}", th(pair.theta1_max()), th(pair.theta2_max())),
+        format!("ϑ1max = {}, ϑ2max = {}", th(pair.theta1_max(), 1), th(pair.theta2_max(), 2)),
     ]
 }
 
@@ -186,7 +186,8 @@ fn table_rows(pair: &Pair, lang: Language) -> Vec<String> {
     let n = |v: f64, d: usize| num(lang, v, d);
     let l = |v: f64| num(lang, v * 1e3, 3);
     let (w1, w2) = (&pair.w1, &pair.w2);
-    let th = |v: Option<f64>| v.map_or("∞".to_string(), |x| n(x, 3));
+    // unbounded where the contact reaches N1 or N2 (ρ = 0 there): said in words
+    let th = |v: Option<f64>, k: &str| v.map_or_else(|| word(lang, k).to_string(), |x| n(x, 3));
     vec![
         format!("z_1 = {}, z_2 = {}, m = {} {mm}", w1.z, w2.z, l(pair.spec.m)),
         format!("x_1 = {}, x_2 = {}", n(w1.x, 4), n(w2.x, 4)),
@@ -202,7 +203,11 @@ fn table_rows(pair: &Pair, lang: Language) -> Vec<String> {
         format!("s_a1 = {}, s_a2 = {} {mm}", l(w1.sa), l(w2.sa)),
         format!("p = {}, p_b = {} {mm}", l(pair.p), l(pair.pb)),
         format!("ε_α = {}", n(pair.eps_alpha, 4)),
-        format!("ϑ_1max = {}, ϑ_2max = {}", th(pair.theta1_max()), th(pair.theta2_max())),
+        format!(
+            "ϑ_1max = {}, ϑ_2max = {}",
+            th(pair.theta1_max(), "gear.sliding_unbounded_1"),
+            th(pair.theta2_max(), "gear.sliding_unbounded_2")
+        ),
     ]
 }
 

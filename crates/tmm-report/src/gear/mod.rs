@@ -61,7 +61,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let solved = solve::solve(&job, &origin)?;
     let pair = &solved.pair;
     let (t1, t2) = profiles(pair, &origin)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2, task.lang, task.sheet))?;
     docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
     docs.add_text("gear/sliding.svg", sliding_svg(pair, task.lang, task.sheet))?;

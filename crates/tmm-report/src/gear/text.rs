@@ -86,8 +86,8 @@ pub fn pair_text(s: &Solved, lim: &Limits) -> String {
     row(&mut t, "ρl (boundary point), mm", mm(w1.rho_l), mm(w2.rho_l));
     let xm = |v: Option<f64>| v.map_or("—".into(), |x| format!("{x:.5}"));
     row(&mut t, "xmin", xm(w1.xmin), xm(w2.xmin));
-    let th = |v: Option<f64>| v.map_or("∞".into(), |x| format!("{x:.4}"));
-    row(&mut t, "ϑmax (specific sliding)", th(p.theta1_max()), th(p.theta2_max()));
+    let th = |v: Option<f64>, n: usize| v.map_or(format!("unbounded (contact reaches N{n})"), |x| format!("{x:.4}"));
+    row(&mut t, "ϑmax (specific sliding)", th(p.theta1_max(), 1), th(p.theta2_max(), 2));
     let _ = writeln!(
         t,
         "  εα = {:.5} over the real active line{}",

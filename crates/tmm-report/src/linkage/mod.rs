@@ -441,7 +441,7 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some(l) = load(task)? else { return Ok(None) };
     let a = analyse(&l, task, None, l.task.positions)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     draw::draw_all(&l, &a, task, "linkage/", &mut docs)?;
     let json = json::document(&l, &a);
     docs.add_json("linkage/linkage.json", &json)?;
@@ -461,7 +461,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
 pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
     let Some(l) = load(task)? else { return Ok(None) };
     let a = analyse(&l, task, None, l.task.positions)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     let json = json::document(&l, &a);
     docs.add_json("linkage/linkage.json", &json)?;
     let text = text::report(&l, &a);
@@ -475,7 +475,7 @@ pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error
             docs,
         },
         draw: Box::new(move || {
-            let mut docs = Documents::new();
+            let mut docs = Documents::for_task(&task);
             draw::draw_all(&l, &a, &task, "linkage/", &mut docs)?;
             Ok(docs)
         }),
@@ -513,7 +513,7 @@ pub fn json_document(l: &Loaded, a: &Analysis) -> serde_json::Value {
 /// in the task's language and for its sheet format; with `all_plans` also
 /// the plans of every position (`plan-velocity-1.svg`, …).
 pub fn drawings(l: &Loaded, a: &Analysis, task: &TaskSource, all_plans: bool) -> Result<Documents, Error> {
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     let which = if all_plans { draw::PlansAt::All } else { draw::PlansAt::One };
     draw::draw_with(l, a, task, "", which, &mut docs)?;
     Ok(docs)

@@ -33,7 +33,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
         return Ok(None);
     };
     let a = analyse(&params, &origin)?;
-    let mut docs = Documents::new();
+    let mut docs = Documents::for_task(task);
     let sheet = drawing::sheet(&a, task.lang, task.sheet);
     let text = text::report(&a);
     let json = json::document(&a);

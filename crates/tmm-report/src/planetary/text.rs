@@ -32,6 +32,9 @@ pub fn fraction_text(c: &Candidate) -> String {
 }
 
 fn g(x: f64) -> String {
+    if !x.is_finite() {
+        return crate::output::NONFINITE.to_string();
+    }
     let x = x + 0.0; // no "-0"
     let a = x.abs();
     if a != 0.0 && !(1e-3..1e6).contains(&a) {

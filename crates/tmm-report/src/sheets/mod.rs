@@ -576,6 +576,9 @@ fn to_placed(ds: &[Drawing], placed: &[(usize, Rect)]) -> Vec<Placed> {
 }
 
 fn num(x: f64) -> String {
+    if !x.is_finite() {
+        return crate::output::NONFINITE.to_string();
+    }
     let s = format!("{x:.3}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" { "0".to_string() } else { s.to_string() }
@@ -685,7 +688,7 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
 /// ```
 pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents, Error> {
     let (_, h) = project.sheet.size_mm();
-    let mut out = Documents::new();
+    let mut out = Documents::like(docs);
     for sheet in layout_sheets(docs, project) {
         let mut dxf = DxfDoc::new();
         svg_to_dxf::convert(&sheet.svg, &mut dxf, h)

@@ -109,6 +109,11 @@ pub fn given_dim(spec: &Spec, name: &str) -> Dim {
 
 /// The user's key for a field named in a core error.
 fn key_of(spec: &Spec, f: &Fields, field: &str) -> String {
+    // a field the user gave under the core's own name (function generation's
+    // `frame`, the slotted lever's `coupler_ratio`) is that field
+    if f.has(field) {
+        return field.to_string();
+    }
     let cond = spec.condition_key.unwrap_or("optimum");
     let k = match field {
         "omega" | "n1" => "speed",
@@ -147,6 +152,20 @@ pub fn locate(spec: &Spec, f: &Fields, e: &SynthesisError) -> Error {
                 }
                 None => err.with_help("change the given data (docs/synthesis.md states each kind's conditions)"),
             }
+        }
+        // a result beyond the linkage's range: name the given size, not an
+        // internal coordinate of the result
+        SynthesisError::Linkage(tmm_linkage::LinkageError::Range { value, range, .. })
+            if range.ends_with(" m")
+                && let Some(key) = ["stroke", "travel", "swing", "rocker", "pivots", "frame", "crank", "lever", "coupler"]
+                .into_iter()
+                .find(|k| f.has(k)) =>
+        {
+            f.error(
+                key,
+                format!("the mechanism synthesised for this value is too large: a point of it lies at {value}, outside the accepted range {range}"),
+            )
+            .with_help("give smaller sizes: the whole mechanism must fit within 10 km of its frame's origin")
         }
         other => f.error("kind", other).with_help(
             "the linkage core refuses the mechanism the synthesis gives, for the reason above: the data lie beyond what it analyses (a length out of range) or at the edge of what this mechanism can do (a group at its dead centre: a pressure angle of 90°); move the data away from that edge",

@@ -173,7 +173,32 @@ impl Fields {
                     .with_help(example(dim)));
             }
         };
-        r.map_err(|e| self.error(key, e))
+        let x = r.map_err(|e| self.error(key, e))?;
+        if dim == Dim::Length {
+            self.within_size(key, x)?;
+        }
+        Ok(x)
+    }
+
+    /// A given length within the linkage's range, |x| ≤ 1e4 m
+    /// ([`tmm_linkage::limits::MAX_LENGTH`]): the synthesised mechanism is
+    /// analysed by the linkage core, which refuses larger coordinates, so a
+    /// huge request is named here rather than as an internal coordinate of
+    /// the result. The stroke and the travel, which set the mechanism's size,
+    /// are at least [`MIN_SIZE`].
+    fn within_size(&self, key: &str, x: f64) -> Result<(), Error> {
+        let max = tmm_linkage::limits::MAX_LENGTH;
+        let sized = matches!(key, "stroke" | "travel");
+        if x.abs() <= max && (!sized || x.abs() >= MIN_SIZE) {
+            return Ok(());
+        }
+        let range = if sized { "1e-6 m … 1e4 m" } else { "−1e4 m … 1e4 m" };
+        Err(self
+            .error(
+                key,
+                format!("{} m is outside the accepted range {range}", tmm_linkage::synthesis::error::show(x)),
+            )
+            .with_help("a lever mechanism from a micrometre to 10 km; give the value with its unit, e.g. \"300 mm\""))
     }
 
     /// A required quantity.
@@ -420,6 +445,11 @@ fn limits(f: &Fields) -> Result<Limits, Error> {
 }
 
 /// The fields that fix a six-bar's crank pivot by a number.
+/// The smallest stroke or travel a synthesis accepts, m (1 µm): the
+/// synthesised lengths scale with it, and below about 1e-9 m the analysis of
+/// the result loses the mechanism's joints in its absolute round-off.
+pub const MIN_SIZE: f64 = 1e-6;
+
 const SIX_BAR_PIVOTS: [&str; 4] = ["crank", "frame", "pivot_max_pressure", "extreme_pressure"];
 
 /// The crank pivot condition of a six-bar.
