@@ -5,6 +5,8 @@
 mod cam;
 mod common;
 mod dynamics;
+mod every_example;
+mod fg_partial;
 mod forces;
 mod fuzz;
 mod gear;
