@@ -14,4 +14,5 @@ mod hardening;
 mod linkage;
 mod note;
 mod planetary_cli;
+mod seed_003_direction;
 mod synth;
