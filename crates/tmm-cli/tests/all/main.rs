@@ -14,5 +14,6 @@ mod hardening;
 mod linkage;
 mod note;
 mod planetary_cli;
+mod redundant;
 mod seed_003_direction;
 mod synth;
