@@ -448,6 +448,8 @@ impl Mechanism {
                             && left.contains(&o[0].0)
                             && !def.sliders.iter().any(|s| s.point == points[*k].name)
                             && def.links[o[0].0 - 1].points.len() >= 2
+                            // a link's own centre of mass `S<link>` is meant to join nothing
+                            && points[*k].name != format!("S{}", link_names[o[0].0])
                     })
                     .map(|(k, o)| format!("`{}` (on link `{}`)", points[k].name, link_names[o[0].0]))
                     .collect();
@@ -459,17 +461,25 @@ impl Mechanism {
                         lone.join(", ")
                     )
                 };
-                // the rank of the whole mechanism at an assembled position
+                // the rank of the whole mechanism at an assembled position:
+                // at a special crank angle (a parallelogram with every link
+                // on the frame line, φ = 0) the rank drops or the assembly
+                // fails, so it is counted at up to two assembled angles of
+                // several and the larger rank (the smaller mobility) is the
+                // mechanism's
                 let size = scale_of(def, radius);
-                let (sc, cc) = def.assembly_angle.sin_cos();
-                let u = crate::state::unrotate(Vec2::new(cc, sc), unit(pin_local - pivot_local));
                 let piv = PointState {
                     p: pivot,
                     v: Vec2::ZERO,
                     a: Vec2::ZERO,
                 };
-                let mut st = vec![LinkState::default(); nl];
-                st[cl] = LinkState::from_point(&piv, pivot_local, u, inp.omega, inp.epsilon);
+                let crank_at = |angle: f64| {
+                    let (sc, cc) = angle.sin_cos();
+                    let u = crate::state::unrotate(Vec2::new(cc, sc), unit(pin_local - pivot_local));
+                    let mut st = vec![LinkState::default(); nl];
+                    st[cl] = LinkState::from_point(&piv, pivot_local, u, inp.omega, inp.epsilon);
+                    st
+                };
                 let near: Vec<(usize, Vec2, Vec2)> = def
                     .hints
                     .iter()
@@ -490,8 +500,22 @@ impl Mechanism {
                     .collect();
                 let fixed: Vec<Vec2> = def.fixed.iter().map(|(_, p)| *p).collect();
                 let centre = fixed.iter().fold(Vec2::ZERO, |a, b| a + *b) * (1.0 / fixed.len().max(1) as f64);
-                let count = crate::whole::assemble_all(&pairs, &st, cl, &near, centre, size, 64)
-                    .map(|asm| crate::whole::rank_count(&pairs, nl, cl, &asm, size));
+                let mut count: Option<crate::whole::RankCount> = None;
+                let mut counted = 0;
+                for shift in [0.0, 0.7, 1.9, 3.4, 4.6] {
+                    if counted == 2 {
+                        break;
+                    }
+                    let st = crank_at(def.assembly_angle + shift);
+                    let Some(asm) = crate::whole::assemble_all(&pairs, &st, cl, &near, centre, size, 64) else {
+                        continue;
+                    };
+                    counted += 1;
+                    let rc = crate::whole::rank_count(&pairs, nl, cl, &asm, size);
+                    if count.is_none_or(|c| rc.dof < c.dof) {
+                        count = Some(rc);
+                    }
+                }
                 return Err(match count {
                     Some(rc) if rc.redundant > 0 || rc.dof != w => LinkageError::Redundant {
                         w,

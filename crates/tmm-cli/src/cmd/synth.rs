@@ -290,7 +290,8 @@ fn toml_value(v: &RawField) -> String {
 }
 
 /// The task file of `--task`: the request as a `[synthesis]` section, the
-/// `[linkage]` of the result, and placeholder loads for `tmm forces`.
+/// `[linkage]` of the result, and placeholder loads for `tmm forces` (none
+/// for a crank that does not turn fully).
 fn task_file(kind: &str, fields: &[(String, RawField)], linkage: &str) -> String {
     let mut t = String::new();
     let _ = writeln!(t, "# Metric synthesis of a {kind} (tmm synth {kind}).");
@@ -303,6 +304,14 @@ fn task_file(kind: &str, fields: &[(String, RawField)], linkage: &str) -> String
     }
     t.push('\n');
     t.push_str(linkage);
+    // a crank that does not turn fully (`range = "partial"`) has no cycle to
+    // find the forces over: `tmm forces` refuses such a [linkage]
+    if linkage.contains("\nrange = \"partial\"\n") {
+        t.push_str(
+            "\n# The crank does not turn fully: the [linkage] is analysed over the crank angles\n# where it assembles (range = \"partial\"); [forces] and [dynamics] need a full turn.\n",
+        );
+        return t;
+    }
     t.push_str(
         "\n# Loads for `tmm forces`: placeholders (10 kg per metre of link, J_S = 0.1·m·l²,\n# no useful resistance); replace them with the task's own.\n[forces]\nmass_per_length = \"10 kg/m\"\nk = 0.1\n",
     );

@@ -11,7 +11,7 @@ use crate::model::{Block, Section};
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let mut rows = vec![
         (cx.w("q_follower")?, follower(cx)?),
-        (cx.w("q_stroke")?, cx.qv("/cam/stroke", 1000.0, "u_mm")?),
+        (cx.w("q_stroke")?, stroke(cx)?),
         (cx.w("q_cam_omega")?, cx.qv("/cam/omega", 1.0, "u_rad_s")?),
     ];
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_rise") {
@@ -21,6 +21,21 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
         rows.push((cx.w("q_limit_return")?, cx.q(p.to_degrees(), "u_deg")?));
     }
     Ok(rows)
+}
+
+/// An oscillating follower (коромысло): its stroke is an angle, its place
+/// is given by the pivot distance and the arm, not by an offset e.
+fn oscillating(cx: &Ctx) -> bool {
+    cx.s("/cam/follower").is_some_and(|f| f.starts_with("oscillating"))
+}
+
+/// The follower's stroke: a length in mm, or the arm's swing in degrees.
+fn stroke(cx: &Ctx) -> Result<String, NoteError> {
+    if oscillating(cx) {
+        cx.deg("/cam/stroke")
+    } else {
+        cx.qv("/cam/stroke", 1000.0, "u_mm")
+    }
 }
 
 /// The follower's kind in words.
@@ -34,15 +49,24 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(cam) = cx.report.get("cam") else { return Ok(None) };
     let statement = vec![
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_friction")?.into()]),
-        cx.para("cam_given", &[follower(cx)?, cx.qv("/cam/stroke", 1000.0, "u_mm")?])?,
+        cx.para("cam_given", &[follower(cx)?, stroke(cx)?])?,
         cx.para("cam_method", &[])?,
         cx.para("cam_sought", &[])?,
     ];
-    let formulas = vec![
+    let osc = oscillating(cx);
+    let mut formulas = vec![
         cx.para("cam_f_analogs", &[])?,
         formula("v = omega (dif s) / (dif phi), quad a = omega^2 (dif^2 s) / (dif phi^2)"),
-        cx.para("cam_f_pressure", &[])?,
-        formula("tan theta.alt = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)"),
+    ];
+    if osc {
+        formulas.push(cx.para("cam_f_pressure_oscillating", &[])?);
+    } else {
+        formulas.push(cx.para("cam_f_pressure", &[])?);
+        formulas.push(formula(
+            "tan theta.alt = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)",
+        ));
+    }
+    formulas.extend([
         cx.para("cam_f_roller", &[])?,
         // the numbers with the language's decimal separator
         formula(&format!(
@@ -50,7 +74,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             crate::number::math_number(0.4, 1, cx.lang)?,
             crate::number::math_number(0.7, 1, cx.lang)?
         )),
-    ];
+    ]);
+    // the analogues of an oscillating follower are of an angle: dψ/dφ is a
+    // pure number, d²ψ/dφ² per radian; of a translating one, lengths in mm
+    let (analog_scale, analog_unit) = if osc { (1.0, "") } else { (1000.0, "u_mm") };
     let mut rows = Vec::new();
     if let Some(ph) = cam.get("phases").and_then(Value::as_array) {
         for p in ph {
@@ -59,8 +86,8 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             rows.push(vec![
                 text(cx.w(&format!("phase_{kind}")).unwrap_or_else(|_| kind.to_string())),
                 num(angle.to_degrees()),
-                num(p.get("ds_dphi_max").and_then(Value::as_f64).unwrap_or(0.0) * 1000.0),
-                num(p.get("d2s_dphi2_max").and_then(Value::as_f64).unwrap_or(0.0) * 1000.0),
+                num(p.get("ds_dphi_max").and_then(Value::as_f64).unwrap_or(0.0) * analog_scale),
+                num(p.get("d2s_dphi2_max").and_then(Value::as_f64).unwrap_or(0.0) * analog_scale),
             ]);
         }
     }
@@ -69,21 +96,37 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         &[
             ("col_phase", ""),
             ("col_phase_angle", "u_deg"),
-            ("col_ds_max", "u_mm"),
-            ("col_dds_max", "u_mm"),
+            ("col_ds_max", analog_unit),
+            ("col_dds_max", analog_unit),
         ],
         rows,
     )?];
-    let mut q = vec![
-        (cx.w("q_r0")?, cx.qv("/cam/r0", 1000.0, "u_mm")?),
-        (cx.w("q_e")?, cx.qv("/cam/e", 1000.0, "u_mm")?),
+    let mut q = vec![(cx.w("q_r0")?, cx.qv("/cam/r0", 1000.0, "u_mm")?)];
+    // where the follower is: the offset e of a translating one; the pivot
+    // distance, the arm and its initial angle of an oscillating one
+    if let Some(e) = cx.opt("/cam/e") {
+        q.push((cx.w("q_e")?, cx.q(e * 1000.0, "u_mm")?));
+    }
+    if let Some(a) = cx.opt("/cam/pivot_distance") {
+        q.push((cx.w("q_pivot_distance")?, cx.q(a * 1000.0, "u_mm")?));
+    }
+    if let Some(l) = cx.opt("/cam/arm") {
+        q.push((cx.w("q_arm")?, cx.q(l * 1000.0, "u_mm")?));
+    }
+    if cx.opt("/cam/arm_angle_start").is_some() {
+        q.push((cx.w("q_arm_angle_start")?, cx.deg("/cam/arm_angle_start")?));
+    }
+    if cx.opt("/cam/face_angle_start").is_some() {
+        q.push((cx.w("q_face_angle_start")?, cx.deg("/cam/face_angle_start")?));
+    }
+    if let Some(r) = cx.opt("/cam/roller_radius").filter(|r| *r > 0.0) {
+        q.push((cx.w("q_roller")?, cx.q(r * 1000.0, "u_mm")?));
+    }
+    q.extend([
         (cx.w("q_pressure_rise")?, cx.deg("/cam/pressure_angle_max_rise")?),
         (cx.w("q_pressure_return")?, cx.deg("/cam/pressure_angle_max_return")?),
         (cx.w("q_rho_min")?, cx.qv("/cam/rho_min", 1000.0, "u_mm")?),
-    ];
-    if let Some(r) = cx.opt("/cam/roller_radius") {
-        q.insert(2, (cx.w("q_roller")?, cx.q(r * 1000.0, "u_mm")?));
-    }
+    ]);
     results.push(cx.quantities("tab_cam", q)?);
     for (path, key) in [
         ("cam/cam-motion.svg", "fig_cam_motion"),

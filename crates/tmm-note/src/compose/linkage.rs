@@ -75,16 +75,21 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("lk_method", &[])?,
         cx.para("lk_sought", &[])?,
     ];
-    let formulas = vec![
+    // a crank that turns fully has a time ratio; a partial-range input
+    // (`range = "partial"`) has assembly ranges instead
+    let kv = cx.opt("/linkage/kv");
+    let mut formulas = vec![
         cx.para("lk_f_dof", &[])?,
         formula("W = 3 n - 2 p_5 - p_4"),
         cx.para("lk_f_velocity", &[])?,
         formula("arrow(v)_C = arrow(v)_B + arrow(v)_(C B), quad v_B = omega_1 l_(A B)"),
         cx.para("lk_f_acceleration", &[])?,
         formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B), quad a^n_(C B) = omega_2^2 l_(B C)"),
-        cx.para("lk_f_kv", &[])?,
-        formula("K_v = (180° + theta) / (180° - theta)"),
     ];
+    if kv.is_some() {
+        formulas.push(cx.para("lk_f_kv", &[])?);
+        formulas.push(formula("K_v = (180° + theta) / (180° - theta)"));
+    }
     let mut results = vec![cx.para(
         "lk_structure",
         &[
@@ -140,12 +145,39 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     let conclusions = vec![
         cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
-        cx.para(
-            "lk_conclusion_kinematics",
-            &[cx.qv("/linkage/kv", 1.0, "")?, cx.deg("/linkage/theta")?, pressure_max(cx)?],
-        )?,
+        match kv {
+            Some(kv) => cx.para(
+                "lk_conclusion_kinematics",
+                &[cx.q(kv, "")?, cx.deg("/linkage/theta")?, pressure_max(cx)?],
+            )?,
+            None => cx.para("lk_conclusion_partial", &[assembly_ranges(cx)?, pressure_max(cx)?])?,
+        },
     ];
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
+}
+
+/// The crank-angle ranges where a partial-range linkage assembles
+/// (`/linkage/assembly_ranges`), printed as `38.62°…78.58°, 281.4°…321.4°`.
+fn assembly_ranges(cx: &Ctx) -> Result<String, NoteError> {
+    let ranges = cx
+        .report
+        .pointer("/linkage/assembly_ranges")
+        .and_then(Value::as_array)
+        .cloned()
+        .unwrap_or_default();
+    let mut out = Vec::new();
+    for r in &ranges {
+        let (Some(from), Some(to)) = (r.get("from").and_then(Value::as_f64), r.get("to").and_then(Value::as_f64)) else {
+            continue;
+        };
+        // the report may give a range past 360° when it runs over 0°
+        let wrap = |a: f64| {
+            let d = a.to_degrees();
+            if d > 360.0 + 1e-9 { d - 360.0 } else { d }
+        };
+        out.push(format!("{}…{}", cx.q(wrap(from), "u_deg")?, cx.q(wrap(to), "u_deg")?));
+    }
+    Ok(out.join(", "))
 }
 
 /// The largest pressure angle of the report's list, printed.

@@ -16,7 +16,9 @@ const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 /// One given value printed with its unit: angles in degrees, ratios bare,
 /// everything else a length in mm.
 fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
-    if ANGLES.contains(&key) {
+    // the numbered angles of a function generator: phi1, psi2 …
+    let stem = key.trim_end_matches(|c: char| c.is_ascii_digit());
+    if ANGLES.contains(&key) || ANGLES.contains(&stem) {
         cx.q(v.to_degrees(), "u_deg")
     } else if PURE.contains(&key) {
         cx.q(v, "")
@@ -46,6 +48,9 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
 /// The section, if the report has `synthesis`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(sy) = cx.report.get("synthesis") else { return Ok(None) };
+    if cx.s("/synthesis/kind") == Some("function-generation") {
+        return function_generation(cx, sy).map(Some);
+    }
     let k = cx.v("/synthesis/k")?;
     let statement = vec![
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
@@ -60,7 +65,63 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("sy_f_pressure", &[])?,
         formula("gamma = 90° - theta.alt, quad theta.alt_max <= [theta.alt]"),
     ];
-    let mut results = Vec::new();
+    let mut results = vec![lengths(cx, sy)?];
+    let mut q = vec![
+        (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
+        (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
+    ];
+    q.extend(angle_checks(cx)?);
+    results.push(cx.quantities("tab_synth_results", q)?);
+    results.extend(figures(cx)?);
+    let check = cx.v("/synthesis/check/k")?;
+    let conclusions = vec![cx.para(
+        "sy_conclusion",
+        &[cx.q(check, "")?, cx.q(k, "")?, cx.q(((check - k) / k).abs(), "")?],
+    )?];
+    Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
+}
+
+/// The section of a function generator (by given positions, Freudenstein):
+/// no time ratio is given, and the crank may not turn fully (then the check
+/// has no K_v).
+fn function_generation(cx: &Ctx, sy: &Value) -> Result<Section, NoteError> {
+    let statement = vec![
+        Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
+        cx.para("sy_given_function", &[])?,
+        cx.quantities("tab_given", given_rows(cx)?)?,
+        cx.para("sy_method_function", &[])?,
+        cx.para("sy_sought", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("sy_f_function", &[])?,
+        // Freudenstein 1955; Norton, Design of Machinery, § 5.12 (as the core's
+        // tmm_linkage::synthesis::function_gen states it)
+        formula(
+            "K_1 cos psi - K_2 cos phi + K_3 = cos(phi - psi), quad K_1 = d / a, quad K_2 = d / c, quad K_3 = (a^2 - b^2 + c^2 + d^2) / (2 a c)",
+        ),
+        cx.para("sy_f_pressure", &[])?,
+        formula("gamma = 90° - theta.alt, quad theta.alt_max <= [theta.alt]"),
+    ];
+    let mut results = vec![lengths(cx, sy)?];
+    let check = cx.opt("/synthesis/check/k");
+    let mut q = Vec::new();
+    if let Some(k) = check {
+        q.push((cx.w("q_k_check")?, cx.q(k, "")?));
+    }
+    q.extend(angle_checks(cx)?);
+    if !q.is_empty() {
+        results.push(cx.quantities("tab_synth_results", q)?);
+    }
+    results.extend(figures(cx)?);
+    let conclusions = vec![match check {
+        Some(k) => cx.para("sy_conclusion_function_full", &[cx.q(k, "")?])?,
+        None => cx.para("sy_conclusion_function_partial", &[])?,
+    }];
+    four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)
+}
+
+/// The table of the synthesised lengths.
+fn lengths(cx: &Ctx, sy: &Value) -> Result<Block, NoteError> {
     let mut rows = Vec::new();
     if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
         for (name, v) in l {
@@ -69,11 +130,26 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             }
         }
     }
-    results.push(cx.table("tab_synth_lengths", &[("col_length_name", ""), ("col_length", "u_mm")], rows)?);
-    let mut q = vec![
-        (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
-        (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
-    ];
+    cx.table("tab_synth_lengths", &[("col_length_name", ""), ("col_length", "u_mm")], rows)
+}
+
+/// The drawings of the synthesis the run made.
+fn figures(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
+    let mut out = Vec::new();
+    for (path, key) in [
+        ("synthesis/construction.svg", "fig_synth_construction"),
+        ("synthesis/pressure.svg", "fig_synth_pressure"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            out.push(f);
+        }
+    }
+    Ok(out)
+}
+
+/// The checked pressure and transmission angles the report has.
+fn angle_checks(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
+    let mut q = Vec::new();
     if let Some(w) = cx.opt("/synthesis/pressure_angle_max/working") {
         q.push((cx.w("q_pressure_working")?, cx.q(w.to_degrees(), "u_deg")?));
     }
@@ -83,19 +159,5 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if let Some(t) = cx.opt("/synthesis/transmission_angle_min") {
         q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
     }
-    results.push(cx.quantities("tab_synth_results", q)?);
-    for (path, key) in [
-        ("synthesis/construction.svg", "fig_synth_construction"),
-        ("synthesis/pressure.svg", "fig_synth_pressure"),
-    ] {
-        if let Some(f) = cx.figure(path, key)? {
-            results.push(f);
-        }
-    }
-    let check = cx.v("/synthesis/check/k")?;
-    let conclusions = vec![cx.para(
-        "sy_conclusion",
-        &[cx.q(check, "")?, cx.q(k, "")?, cx.q(((check - k) / k).abs(), "")?],
-    )?];
-    Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
+    Ok(q)
 }

@@ -379,6 +379,7 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
     // as in the check (tmm_linkage::synthesis::check)
     let cy = match Cycle::new(&m, Working::Slower) {
         Ok(c) => c,
+        Err(_) if !s.syn.check.crank_turns_fully => return Ok(pressure_partial(&m, lang, sheet)),
         Err(e) => Cycle::new(&m, Working::Increasing).map_err(|_| Error::input("synthesis", e))?,
     };
     let mut sol = m.solution();
@@ -462,4 +463,59 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
         w,
         h,
     ))
+}
+
+/// The pressure angle at each dyad's inner joint against the absolute crank
+/// angle φ, for a crank that does not turn fully (no cycle, no working
+/// stroke): sampled each degree, a curve broken where the mechanism does not
+/// assemble.
+fn pressure_partial(m: &Mechanism, lang: Language, sheet: SheetFormat) -> String {
+    let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
+    let mut sol = m.solution();
+    let mut out = Vec::new();
+    let mut curves: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();
+    let mut assembled = true;
+    for i in 0..=360 {
+        let phi = f64::from(i).to_radians();
+        if m.solve(phi, &mut sol).is_err() {
+            // a break in every curve (the plot leaves a gap at a NaN point)
+            if assembled {
+                for c in &mut curves {
+                    c.1.push((f64::NAN, f64::NAN));
+                }
+            }
+            assembled = false;
+            continue;
+        }
+        assembled = true;
+        pressure_angles(m, &sol, &mut out);
+        for &(pt, v) in &out {
+            let at = (f64::from(i), v.to_degrees());
+            match curves.iter_mut().find(|c| c.0 == pt) {
+                Some(c) => c.1.push(at),
+                None => curves.push((pt, vec![at])),
+            }
+        }
+    }
+    let names: Vec<String> = curves.iter().map(|c| format!("ϑ {}", m.points[c.0].name)).collect();
+    let cols = [BLUE, RED, GREEN, "#8e44ad", "#d35400"];
+    let series: Vec<Series<'_>> = curves
+        .iter()
+        .enumerate()
+        .map(|(i, c)| Series {
+            name: &names[i],
+            points: &c.1,
+            color: cols[i % cols.len()],
+        })
+        .collect();
+    let (w, h) = slot_mm(Slot::Diagram, sheet);
+    plot_in(
+        lang,
+        &wd("title_pressure_partial"),
+        &wd("axis_crank_absolute"),
+        "ϑ, °",
+        &series,
+        w,
+        h,
+    )
 }

@@ -189,6 +189,12 @@ pub fn solve(f: &Fields) -> Result<Solved, Error> {
     {
         linkage = linkage.replacen("[linkage]\n", "[linkage]\nworking = \"increasing\"\n", 1);
     }
+    // a crank that does not turn fully (a function generator over a range
+    // of a double rocker or a rocker-crank): the [linkage] is analysed over
+    // the crank angles where it assembles (docs/linkage.md, `range`)
+    if !syn.check.crank_turns_fully {
+        linkage = linkage.replacen("[linkage]\n", "[linkage]\nrange = \"partial\"\n", 1);
+    }
     Ok(Solved { spec, syn, linkage })
 }
 
