@@ -2,12 +2,21 @@
 //! default task and the command-line options, run as an ordinary test with a
 //! fixed seed.
 //!
-//! Each case mutates a task (a line deleted or duplicated, a number replaced
-//! by 0, a negative, a huge or a tiny value, units swapped, the text
-//! truncated, a byte flipped) and runs it. The test fails on any panic, a case
-//! slower than the time limit, a non-finite number in any output, files
-//! written by a run that failed, a number written in full in a message (more
-//! than 17 digits and points in a row), or an exit code other than 0, 1 or 2.
+//! The corpus is every task under `examples/` (recursively), the default
+//! task, and tasks written here for the fields no example uses: every
+//! `[synthesis]` kind, `[dynamics]` with a motor, shaft inertias and both
+//! flywheel shapes, and a `[project]` with every field. Each case mutates a
+//! task (a line deleted or duplicated, a number replaced by 0, a negative, a
+//! huge or a tiny value, units swapped, a quoted string replaced by markup,
+//! control characters, other scripts or 301 letters, the text truncated, a
+//! byte flipped) and runs it. The command-line cases cover every subcommand,
+//! `tmm synth` of every kind with `--svg`, `--task` and `--sweep` included.
+//! The test fails on any panic, a case slower than the time limit, a run
+//! taking more than 1 GiB, a non-finite number in any output, a character
+//! XML forbids in an SVG, files written by a run that failed, any file left
+//! beside the outputs (temporary files or folders) or a change to the user's
+//! own files in the folder, a number written in full in a message (more than
+//! 17 digits and points in a row), or an exit code other than 0, 1 or 2.
 //!
 //! `TMM_FUZZ_CASES` sets the number of in-process cases (default 2000);
 //! every 25th case also runs through the `tmm` binary (with the note and the
@@ -50,19 +59,127 @@ impl Rng {
     }
 }
 
+/// Every task file under `examples/` (recursively), the embedded default
+/// task, and the tasks of [`EXTRA`]: the `[synthesis]` kinds no example
+/// poses, `[dynamics]` with every sub-table, and a `[project]` with every
+/// field, so that each section's fields are mutated too.
 fn corpus() -> Vec<(String, String)> {
     let mut v = vec![("default".to_string(), DEFAULT_TASK.to_string())];
-    let mut files: Vec<PathBuf> = std::fs::read_dir(repo().join("examples"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
+    let mut files = Vec::new();
+    let mut stack = vec![repo().join("examples")];
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|e| e == "toml") {
+                files.push(p);
+            }
+        }
+    }
     files.sort();
+    let root = repo().join("examples");
     for f in files {
         v.push((
-            f.file_name().unwrap().to_string_lossy().into_owned(),
+            f.strip_prefix(&root).unwrap_or(&f).to_string_lossy().into_owned(),
             std::fs::read_to_string(&f).unwrap(),
         ));
+    }
+    for (name, text) in EXTRA {
+        v.push((name.to_string(), text.to_string()));
+    }
+    v
+}
+
+/// Tasks written for the fuzzer: each section's less common fields.
+const EXTRA: [(&str, &str); 9] = [
+    (
+        "extra: crank-slider synthesis",
+        "[synthesis]\nkind = \"crank-slider\"\nk = 1.2\nstroke = \"300 mm\"\nmax_pressure = \"45 deg\"\nspeed = \"90 rpm\"\n",
+    ),
+    (
+        "extra: crank-slider by positions",
+        "[synthesis]\nkind = \"crank-slider-positions\"\nlambda = 4\nlambda_e = 0.1\nphi_start = \"30 deg\"\nphi_end = \"200 deg\"\ntravel = \"300 mm\"\n",
+    ),
+    (
+        "extra: function generation",
+        "[synthesis]\nkind = \"function-generation\"\npositions = [[30, 60], [60, 80], [90, 100]]\nframe = \"300 mm\"\n",
+    ),
+    (
+        "extra: slotted lever",
+        "[synthesis]\nkind = \"slotted-lever\"\nstroke = \"400 mm\"\nk = 1.5\npivots = \"50 mm\"\ncoupler_ratio = 3\nlever = \"oscillating\"\n",
+    ),
+    (
+        "extra: six-bar by inversion",
+        "[synthesis]\nkind = \"six-bar-inversion\"\nk = 1.15\ntravel = \"400 mm\"\nguide = \"-320 mm\"\nstart = \"180 mm\"\ncoupler = \"320 mm\"\nswing = \"70 deg\"\nlever = \"360 mm\"\n",
+    ),
+    (
+        "extra: synthesis sweep",
+        "[synthesis]\nkind = \"crank-rocker\"\nk = 1.28\nswing = \"60 deg\"\nrocker = \"245 mm\"\noptimum = true\nsweep = \"k=1.1..1.4:7\"\n",
+    ),
+    (
+        "extra: dynamics with a motor and a rim",
+        concat!(
+            include_str!("../../../../examples/seed-001-fourbar.toml"),
+            "\n[dynamics.motor]\nsynchronous_speed = \"1500 rpm\"\nnominal_speed = \"1430 rpm\"\n",
+            "nominal_torque = \"200 N m\"\nratio = 1.6\n",
+            "[dynamics.inertia]\ncrank_shaft = \"0.1 kg m^2\"\nmotor_shaft = \"0.015 kg m^2\"\n",
+            "[dynamics.flywheel]\nplace = \"motor\"\ndensity = \"7.85 g/cm^3\"\nshape = \"rim\"\nthickness_ratio = 0.1\nwidth_ratio = 0.2\n",
+        ),
+    ),
+    (
+        "extra: dynamics with a disc",
+        concat!(
+            include_str!("../../../../examples/seed-004-two-sliders.toml"),
+            "\n[dynamics.flywheel]\nplace = \"crank\"\nshape = \"disc\"\nwidth_ratio = 0.25\ndensity = \"7200 kg/m^3\"\n",
+        ),
+    ),
+    (
+        "extra: every project field",
+        concat!(
+            "title = \"Планетарная передача\"\n[project]\nuniversity = \"Харківський університет\"\n",
+            "department = \"Кафедра ТММ\"\nstudent = \"Петренко П. П.\"\ngroup = \"М-21\"\nteacher = \"Іваненко І. І.\"\n",
+            "variant = \"12б\"\ncity = \"Харків\"\nyear = 2026\ntitle = \"Проєктування планетарної передачі\"\n",
+            "designation = \"ТММ.КП.012.00.000\"\nlang = \"uk\"\nframe = true\nsheet = \"A2\"\n",
+            "[planetary]\nscheme = \"ext-int\"\nratio = 12\nplanets = 3\nmodule = \"2 mm\"\n",
+        ),
+    ),
+];
+
+/// Strings a user may type into a name or a title: empty, long, markup of
+/// every output format, other scripts. (The words NaN and Infinity as user
+/// text have their own tests; here the output scan would take them for
+/// numbers.)
+const STRINGS: [&str; 10] = [
+    "",
+    " ",
+    "#read(\\\"/etc/passwd\\\") $x$ *b* _i_ // /* <x> @ref",
+    "<svg onload='x'>&amp;&lt;]]>",
+    "\\u0001",
+    "שלום مرحبا 👍 e\u{301}",
+    "trailing space ",
+    "\\n\\t\\r",
+    "%s %d {} {{}} \\\\",
+    "a\\u0000b",
+];
+
+/// Positions of the quoted strings in a text (inside the quotes): (start, end).
+fn string_spans(t: &str) -> Vec<(usize, usize)> {
+    let b = t.as_bytes();
+    let mut v = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'"' {
+            let s = i + 1;
+            i += 1;
+            while i < b.len() && b[i] != b'"' && b[i] != b'\n' {
+                i += if b[i] == b'\\' { 2 } else { 1 };
+            }
+            if i < b.len() && b[i] == b'"' {
+                v.push((s, i));
+            }
+        }
+        i += 1;
     }
     v
 }
@@ -122,7 +239,7 @@ fn mutate(rng: &mut Rng, t: &str) -> Vec<u8> {
     let rounds = 1 + rng.below(3);
     let mut text = t.to_string();
     for _ in 0..rounds {
-        match rng.below(8) {
+        match rng.below(9) {
             0 if !lines.is_empty() => {
                 let mut l: Vec<&str> = text.lines().collect();
                 if !l.is_empty() {
@@ -154,6 +271,18 @@ fn mutate(rng: &mut Rng, t: &str) -> Vec<u8> {
                 if !hits.is_empty() {
                     let at = *rng.pick(&hits);
                     text.replace_range(at..at + a.len(), b);
+                }
+            }
+            7 => {
+                let spans = string_spans(&text);
+                if !spans.is_empty() {
+                    let (s, e) = *rng.pick(&spans);
+                    // one in eleven: past the 300-character limit of a name
+                    let v = match rng.below(STRINGS.len() + 1) {
+                        i if i < STRINGS.len() => STRINGS[i].to_string(),
+                        _ => "Ж".repeat(301),
+                    };
+                    text.replace_range(s..e, &v);
                 }
             }
             6 => {
@@ -196,6 +325,13 @@ fn has_nonfinite(s: &str) -> bool {
         }
     }
     false
+}
+
+/// A character XML 1.0 forbids in a document (§ 2.2 Char): control
+/// characters other than tab, line feed and carriage return, surrogates,
+/// U+FFFE and U+FFFF. An SVG holding one is refused by browsers and CAD.
+fn not_xml_char(c: char) -> bool {
+    matches!(c, '\u{0}'..='\u{8}' | '\u{b}' | '\u{c}' | '\u{e}'..='\u{1f}' | '\u{fffe}' | '\u{ffff}')
 }
 
 /// A message may hold a 12-digit number with a sign, a point and 4 decimals at most.
@@ -253,21 +389,80 @@ fn run_bin(args: &[&str], dir: &Path) -> (i32, String, String) {
         b
     });
     let start = Instant::now();
+    let status_file = PathBuf::from(format!("/proc/{}/status", child.id()));
+    let mut peak_kib = 0;
     let status = loop {
         if let Some(st) = child.try_wait().unwrap() {
             break st;
         }
+        peak_kib = peak_kib.max(peak_memory_kib(&status_file));
         if start.elapsed() > time_limit() {
             let _ = child.kill();
             panic!("timeout: tmm {}", args.join(" "));
         }
         std::thread::sleep(Duration::from_millis(2));
     };
+    assert!(
+        peak_kib <= MEMORY_LIMIT_KIB,
+        "tmm {} took {peak_kib} KiB of memory (the bound is {MEMORY_LIMIT_KIB} KiB)",
+        args.join(" ")
+    );
     (
         status.code().unwrap_or(-1),
         String::from_utf8_lossy(&to.join().unwrap()).into_owned(),
         String::from_utf8_lossy(&te.join().unwrap()).into_owned(),
     )
+}
+
+/// The memory a run may take: 1 GiB (issue: a small input finishes in
+/// 10 s and 1 GB, or is refused at once).
+const MEMORY_LIMIT_KIB: u64 = 1 << 20;
+
+/// The peak resident size of a running process (`VmHWM` in
+/// `/proc/PID/status`, Linux), 0 where it cannot be read (another system,
+/// or the process has just ended). Sampled while the run goes, so a peak
+/// shorter than the sampling step may be missed; the bound is for inputs
+/// that grow memory over seconds.
+fn peak_memory_kib(status: &Path) -> u64 {
+    std::fs::read_to_string(status)
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix("VmHWM:"))
+                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
+        })
+        .unwrap_or(0)
+}
+
+/// The user's own files in a fuzz case's folder, which no run may touch.
+const USER_FILES: [(&str, &str); 2] = [("mine.txt", "the user's notes\n"), ("keep/positions.svg", "<svg/>\n")];
+
+/// Put the user's own files into a case's folder.
+fn plant_user_files(work: &Path) {
+    for (name, text) in USER_FILES {
+        let p = work.join(name);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, text).unwrap();
+    }
+}
+
+/// After a run in `work`: the user's files are as they were and nothing
+/// but `expected` (the task, the outputs of a run that succeeded) was added
+/// beside them — no temporary file or folder of a failed or finished run.
+fn check_folder(work: &Path, expected: &[&str], what: &str) {
+    for (name, text) in USER_FILES {
+        let got = std::fs::read_to_string(work.join(name)).unwrap_or_default();
+        assert_eq!(got, text, "{what}: the user's file {name} was changed or removed");
+    }
+    for e in std::fs::read_dir(work).unwrap() {
+        let name = e.unwrap().file_name().to_string_lossy().into_owned();
+        assert!(
+            name == "mine.txt" || name == "keep" || expected.contains(&name.as_str()),
+            "{what}: `{name}` was left in the folder"
+        );
+    }
+    let keep: Vec<_> = std::fs::read_dir(work.join("keep")).unwrap().collect();
+    assert_eq!(keep.len(), 1, "{what}: files were added to the user's folder keep/");
 }
 
 fn check_bin(args: &[&str], dir: &Path, what: &str) -> i32 {
@@ -334,6 +529,13 @@ fn fuzz_case(case: usize, corpus: &[(String, String)], work: &Path, tally: &mut 
                 for d in &run.docs {
                     if let Some(t) = d.as_text() {
                         assert!(!has_nonfinite(t), "{what}: non-finite number in {}\n{text}", d.path);
+                        if d.path.ends_with(".svg") {
+                            assert!(
+                                !t.chars().any(not_xml_char),
+                                "{what}: a character XML forbids in {}\n{text}",
+                                d.path
+                            );
+                        }
                     }
                 }
                 for o in &run.sections {
@@ -374,8 +576,10 @@ fn fuzz_case(case: usize, corpus: &[(String, String)], work: &Path, tally: &mut 
         let code = check_bin(args, work, &what);
         if code == 0 {
             assert!(out.join(".tmm-out").exists(), "{what}: no marker");
+            check_folder(work, &["task.toml", "out"], &what);
         } else {
             assert!(!out.exists(), "{what}: a failed run left files");
+            check_folder(work, &["task.toml"], &what);
         }
     }
 }
@@ -423,6 +627,7 @@ fn mutated_task_files() {
                     let work = std::env::temp_dir().join(format!("tmm-fuzz-{}-{w}", std::process::id()));
                     let _ = std::fs::remove_dir_all(&work);
                     std::fs::create_dir_all(&work).unwrap();
+                    plant_user_files(&work);
                     let mut tally = Tally::default();
                     for case in (from + w..from + n).step_by(workers) {
                         *slot.1.lock().unwrap_or_else(|e| e.into_inner()) = Instant::now();
@@ -477,10 +682,22 @@ fn mutated_command_lines() {
         "planetary --scheme sun-planet-ring --ratio 6 --planets 3",
         "planetary --scheme ext-int --ratio 12 --planets 3 --json",
         "cam --follower translating-roller --stroke 13mm --phases rise_108_cosine;dwell_15;return_108_cosine;dwell_129 --max-pressure 30",
+        "dynamics {ex}/seed-001-fourbar.toml --json",
+        "linkage {ex}/seed-002-shaper.toml --svg d",
+        "synth crank-rocker --k 1.28 --swing 60 --rocker 245mm --crank 100mm --task t.toml",
+        "synth crank-slider --stroke 300mm --k 1.2 --max-pressure 45 --svg d",
+        "synth crank-slider --stroke 300mm --k 1.2 --sweep lambda=2..6:9 --json",
+        "synth crank-slider-positions --lambda 4 --phi-start 30 --phi-end 200 --travel 300mm",
+        "synth function-generation --position 30,_60 --position 60,_80 --position 90,_100 --frame 300mm --task t.toml",
+        "synth slotted-lever --stroke 400mm --k 1.5 --pivots 50mm --coupler-ratio 3",
+        "synth knee-press --stroke 90mm --k 1.12 --rocker 220mm --link 220mm --delta 10 --optimum --json",
+        "synth six-bar-inversion --k 1.15 --travel 400mm --guide -320mm --start 180mm --coupler 320mm --swing 70 --lever 360mm",
+        "synth six-bar-pressure --k 1.07 --swing 55 --arm-b 0.6m --arm-c 0.6m --guide -0.2m --max-pressure 38 --svg d",
     ]
     .iter()
     .map(|s| s.replace("{ex}", &ex).split(' ').map(|w| w.replace('_', " ")).collect())
     .collect();
+    plant_user_files(&work);
     let n = (cases() / 10).max(100);
     for case in 0..n {
         let mut args = rng.pick(&base).clone();
@@ -499,6 +716,19 @@ fn mutated_command_lines() {
         let refs: Vec<&str> = args.iter().map(String::as_str).collect();
         let what = format!("command-line case {case}");
         let (code, _, err) = check_bin_full(&refs, &work, &what);
+        // the outputs a command names (`--svg d`, `--task t.toml`) exist only
+        // after a run that succeeded; nothing else is left beside them
+        let named: Vec<&str> = args
+            .windows(2)
+            .filter(|w| matches!(w[0].as_str(), "--svg" | "--task" | "--out" | "--dxf" | "--csv"))
+            .map(|w| w[1].as_str())
+            .collect();
+        check_folder(&work, if code == 0 { &named } else { &[] }, &what);
+        for name in named.iter().filter(|n| !n.is_empty() && !n.contains("..")) {
+            let p = work.join(name);
+            let _ = std::fs::remove_dir_all(&p);
+            let _ = std::fs::remove_file(&p);
+        }
         // the message may quote the arguments themselves, but nothing longer
         let given = args.iter().map(|a| longest_number(a)).max().unwrap_or(0);
         if code == 2 {

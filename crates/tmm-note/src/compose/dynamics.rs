@@ -33,7 +33,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("dy_f_moment", &[])?,
         formula("M_c (phi) = sum_i (arrow(F)_i dot arrow(v)_i + M_i omega_i) / omega_1, quad A_c (phi) = integral_0^phi M_c dif phi"),
         cx.para("dy_f_md", &[])?,
-        formula("M_d = -A_c (2 pi) / (2 pi), quad Delta T = A_d + A_c"),
+        formula("M_d = -(A_c |_(phi = 2 pi)) / (2 pi), quad Delta T = A_d + A_c"),
         cx.para("dy_f_flywheel", &[])?,
         formula("I_\"fl\" = (Delta E_max) / (omega_m^2 delta) - I_I, quad delta = (omega_max - omega_min) / omega_m"),
     ];

@@ -30,7 +30,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("fo_f_balancing", &[])?,
         formula("M_b = P_b l_1"),
         cx.para("fo_f_zhukovsky", &[])?,
-        formula("M_\"Zh\" omega_1 = sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i"),
+        formula("M_\"Zh\" omega_1 = -(sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i)"),
     ];
     let mut results = Vec::new();
     let mut rows = Vec::new();
