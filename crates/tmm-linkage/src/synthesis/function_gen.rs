@@ -258,5 +258,8 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }
