@@ -25,8 +25,9 @@
 //! sin α = Y_D/|OD| (X_D ≥ 0 taken, the book's guess X_D = 2 h_max > 0).
 //!
 //! The [`MechanismDef`] takes the lever as the input crank: the piston rod
-//! is a slider block at B on a guide of the cylinder (a block at D turning
-//! about D); the working range is φ1 … φ1 + β only.
+//! is a slider block at B on a guide of the cylinder, a bar D–E turning
+//! about D (E: the cylinder's far end, h_max from D along its axis); the
+//! working range is φ1 … φ1 + β only.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -34,7 +35,7 @@ use tmm_geom::Vec2;
 use tmm_geom::angle::wrap_pi;
 
 use crate::mechanism::Mechanism;
-use crate::model::{InputDef, LinkDef, MechanismDef, SliderDef};
+use crate::model::{AssemblyHint, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
 
 use super::check::check_limits;
 use super::error::{SynthesisError, finite, positive, show};
@@ -131,11 +132,19 @@ pub fn solutions(s0: f64, s1: f64, beta: f64, at: PressureAt, alpha: impl Fn(f64
 }
 
 /// The lever with the cylinder: lever OB (1) as the input crank, piston rod
-/// (2) a block at B sliding on the cylinder (3), a block turning about D.
-pub fn mechanism(l1: f64, d: Vec2, omega: f64, phi: f64) -> MechanismDef {
+/// (2) a block at B sliding on the cylinder (3), a bar from its pivot D to
+/// its far end E at `h_max` along the axis D→B, assembled at lever angle
+/// `phi`.
+pub fn mechanism(l1: f64, d: Vec2, h_max: f64, omega: f64, phi: f64) -> MechanismDef {
+    let b = polar(phi) * l1;
+    let e = d + (b - d) * (h_max / (b - d).hypot());
     MechanismDef {
         fixed: vec![("O".into(), Vec2::ZERO), ("D".into(), d)],
-        links: vec![LinkDef::bar("1", "O", "B", l1), LinkDef::block("2", "B"), LinkDef::block("3", "D")],
+        links: vec![
+            LinkDef::bar("1", "O", "B", l1),
+            LinkDef::block("2", "B"),
+            LinkDef::bar("3", "D", "E", h_max),
+        ],
         sliders: vec![SliderDef {
             slider: "2".into(),
             point: "B".into(),
@@ -145,7 +154,10 @@ pub fn mechanism(l1: f64, d: Vec2, omega: f64, phi: f64) -> MechanismDef {
             angle_on_slider: 0.0,
         }],
         input: Some(InputDef::crank("1", "O", "B", omega)),
-        hints: vec![],
+        hints: vec![AssemblyHint {
+            point: "E".into(),
+            kind: HintKind::Near(e),
+        }],
         assembly_angle: phi,
         output: Some("3".into()),
     }
@@ -253,7 +265,7 @@ pub fn synthesize(r: &CylinderRequest) -> Result<Synthesis, SynthesisError> {
     // the check: the linkage core solves the mechanism over the lever's
     // travel; |DB| must run from s0 to s1 monotonically and the pressure
     // angles computed from its positions must be the construction's
-    let def = mechanism(p.l1, p.d, omega, p.phi1);
+    let def = mechanism(p.l1, p.d, h1, omega, p.phi1);
     let m = Mechanism::new(&def)?;
     let mut sol = m.solution();
     let (ib, id) = (
@@ -354,8 +366,10 @@ pub fn synthesize(r: &CylinderRequest) -> Result<Synthesis, SynthesisError> {
             name: "Y_D, m: the turn of the whole configuration about O".into(),
             value: p.d.y,
             reason: format!(
-                "{variant}. The pressure-angle condition and the four loop equations leave the turn about O free: l1, |OD| and both pressure angles do not depend on it; the family is D = |OD|·(cos α, sin α), φ1 = α − {:.4}°, φ3 = α + const. Roots of the quadratic in l1: {}; taken: the one with the smaller largest pressure angle, X_D ≥ 0 (the other sign of X_D is the same family turned)",
-                (p.d.atan2() - p.phi1).to_degrees(),
+                "{variant}. The pressure-angle condition and the four loop equations leave the turn about O free: l1, |OD| and both pressure angles do not depend on it; the family is D = |OD|·(cos α, sin α), φ1 = α {:+.4}°, φ3н = α {:+.4}°, φ3к = α {:+.4}°. Roots of the quadratic in l1: {}; taken: the one with the smaller largest pressure angle, X_D ≥ 0 (the other sign of X_D is the same family turned)",
+                wrap_pi(p.phi1 - p.d.atan2()).to_degrees(),
+                wrap_pi(p.phi3.0 - p.d.atan2()).to_degrees(),
+                wrap_pi(p.phi3.1 - p.d.atan2()).to_degrees(),
                 notes.join("; ")
             ),
         }),
