@@ -13,3 +13,4 @@ mod linkage;
 mod note;
 mod planetary_cli;
 mod synth;
+mod textbook_synthesis;
