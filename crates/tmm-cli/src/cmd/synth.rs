@@ -244,6 +244,25 @@ kind_args! {
 }
 
 kind_args! {
+    /// Crank-knee press with a bell-crank rocker B–C–D driving the knee C–D–F (seed 002 ex. 2 read literally)
+    KneePressBellCrank {
+        stroke: "Stroke of the slide H_F",
+        k: "Time ratio K ≥ 1",
+        knee: "The knee's arm l_CD of the bell crank",
+        link: "The knee's link l_DF",
+        arm: "The bell crank's arm l_CB to the coupler",
+        chord: "The bell crank's side l_BD",
+        arm_ratio: "l_CB / l_BD instead of --chord (seed 002: 2)",
+        delta: "Angle δ of CD from the line CF at the bottom (> 0)",
+        horizontal: "Horizontal distance of the crank pivot from C (seed 002: 0.28 m)",
+        crank: "Crank length l_OA",
+        frame: "Distance of the crank pivot from C",
+    } flags {
+        optimum: "The pivot with the best margin",
+    }
+}
+
+kind_args! {
     /// Crank-rocker by the two extreme positions of its rocker with its pivot D given (textbook П1.2)
     RockerExtremes {
         frame_x: "Abscissa X_D of the rocker's pivot (the crank's pivot A at the origin)",
@@ -311,6 +330,8 @@ pub enum SynthCommand {
     SixBarInversion(SixBarInversion),
     /// Six-bar by the pressure angle
     SixBarPressure(SixBarPressure),
+    /// Crank-knee press with a bell-crank rocker (seed 002 ex. 2 read literally)
+    KneePressBellCrank(KneePressBellCrank),
     /// Crank-rocker by the rocker's extreme positions, its pivot D given (textbook П1.2)
     RockerExtremes(RockerExtremes),
     /// Crank-rocker by the rocker's extreme positions and K, X_D found (textbook П1.3)
@@ -332,6 +353,7 @@ impl SynthCommand {
             SynthCommand::KneePress(a) => ("knee-press", a.fields(), &a.common),
             SynthCommand::SixBarInversion(a) => ("six-bar-inversion", a.fields(), &a.common),
             SynthCommand::SixBarPressure(a) => ("six-bar-pressure", a.fields(), &a.common),
+            SynthCommand::KneePressBellCrank(a) => ("knee-press-bell-crank", a.fields(), &a.common),
             SynthCommand::RockerExtremes(a) => ("rocker-extremes", a.fields(), &a.common),
             SynthCommand::RockerExtremesK(a) => ("rocker-extremes-k", a.fields(), &a.common),
             SynthCommand::ThreePositions(a) => ("three-positions", a.fields(), &a.common),

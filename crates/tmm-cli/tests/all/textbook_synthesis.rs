@@ -353,3 +353,19 @@ fn bad_textbook_input_names_the_field_and_exits_2() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("only one of"), "{err}");
 }
+
+#[test]
+fn seed_002_knee_press_with_the_bell_crank_runs_and_reaches_k_and_stroke() {
+    let d = tmp("knee-bell");
+    let out = d.join("out");
+    let file = common::repo().join("examples/synth-seed-002-ex2-knee-press-bell-crank.toml");
+    let (code, stdout, err) = run(&["run", "--no-pdf", file.to_str().unwrap(), "-o", out.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    close("K", f(&v, "/linkage/kv"), 1.12, 1e-9);
+    close("H_F", f(&v, "/linkage/stroke"), 0.09, 1e-9);
+    let s = &v["synthesis"];
+    assert!((f(s, "/lengths/OA") / 0.055 - 1.0).abs() < 0.011);
+    assert!((f(s, "/lengths/AB") / 0.255 - 1.0).abs() < 0.011);
+    close("l_BD", f(s, "/lengths/BD"), 0.11, 1e-15);
+}

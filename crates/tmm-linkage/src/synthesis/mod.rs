@@ -29,6 +29,7 @@ pub mod crank_slider;
 pub mod cylinder;
 pub mod error;
 pub mod function_gen;
+pub mod knee_bell_crank;
 pub mod knee_press;
 pub mod limits;
 pub mod locus;

@@ -7,6 +7,7 @@ use super::crank_slider::{CrankSliderRequest, SliderCondition, TwoPositionsReque
 use super::cylinder::{self, CylinderRequest, PressureAt};
 use super::error::SynthesisError;
 use super::function_gen::FunctionRequest;
+use super::knee_bell_crank::{self, BellKneeRequest};
 use super::knee_press::{KneePivot, KneeRequest};
 use super::pivot::PivotCondition;
 use super::result::Synthesis;
@@ -43,6 +44,9 @@ pub enum Request {
     ThreePositions(ThreePositionsRequest),
     /// Lever with an oscillating cylinder (textbook П1.5).
     Cylinder(CylinderRequest),
+    /// Crank-knee press with a bell-crank rocker (seed 002 ex. 2 read
+    /// literally).
+    KneeBellCrank(BellKneeRequest),
 }
 
 /// Solve a request (each kind checks its result over the cycle). When no
@@ -91,6 +95,7 @@ pub fn solve(r: &Request) -> Result<Synthesis, SynthesisError> {
         Request::RockerExtremes(q) => rocker_extremes::synthesize(q),
         Request::ThreePositions(q) => three_positions::synthesize(q),
         Request::Cylinder(q) => cylinder::synthesize(q),
+        Request::KneeBellCrank(q) => knee_bell_crank::synthesize(q),
     }
 }
 
@@ -273,6 +278,7 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             Request::RockerExtremes(q) => &mut q.limits,
             Request::ThreePositions(q) => &mut q.limits,
             Request::Cylinder(q) => &mut q.limits,
+            Request::KneeBellCrank(q) => &mut q.limits,
         };
         let l = match name {
             "pressure_working" => &mut limits.pressure_working,
@@ -414,6 +420,23 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             "frame_y" => q.frame_y.as_mut(),
             _ => return Err(()),
         },
+        Request::KneeBellCrank(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "knee" => Some(&mut q.knee),
+            "link" => Some(&mut q.link),
+            "arm" => Some(&mut q.arm),
+            "chord" => Some(&mut q.chord),
+            "delta" => Some(&mut q.delta),
+            "horizontal" => cond!(q.pivot, KneePivot::Horizontal),
+            "crank" => cond!(q.pivot, KneePivot::Crank),
+            "frame" => cond!(q.pivot, KneePivot::Frame),
+            "pivot" => match &mut q.pivot {
+                KneePivot::Horizontal(x) | KneePivot::Crank(x) | KneePivot::Frame(x) => Some(x),
+                KneePivot::Optimum => None,
+            },
+            _ => return Err(()),
+        },
     })
 }
 
@@ -468,6 +491,19 @@ impl Request {
                 (PressureAt::End(_), Some(_)) => &["h_min", "h_max", "rod", "swing", "pressure_end", "frame_y"],
                 (PressureAt::End(_), None) => &["h_min", "h_max", "rod", "swing", "pressure_end"],
             },
+            Request::KneeBellCrank(_) => &[
+                "stroke",
+                "k",
+                "knee",
+                "link",
+                "arm",
+                "chord",
+                "delta",
+                "horizontal",
+                "crank",
+                "frame",
+                "pivot",
+            ],
         }
     }
 
@@ -479,6 +515,7 @@ impl Request {
             (Request::CrankSlider(_), "lambda" | "offset" | "max_pressure")
                 | (Request::CrankRocker(_), "crank" | "frame" | "frame_angle")
                 | (Request::Knee(_), "horizontal" | "crank" | "frame")
+                | (Request::KneeBellCrank(_), "horizontal" | "crank" | "frame")
                 | (
                     Request::SixBarInversion(_) | Request::SixBarPressure(_),
                     "crank" | "frame" | "pivot_max_pressure" | "extreme_pressure"
@@ -501,6 +538,7 @@ impl Request {
         let f = field.strip_prefix("limits.").unwrap_or(field);
         let f = match (self, f) {
             (Request::Knee(_), p) => p.strip_prefix("pivot.").unwrap_or(p),
+            (Request::KneeBellCrank(_), p) => p.strip_prefix("pivot.").unwrap_or(p),
             (_, p) => p,
         };
         self.value(f).is_some().then_some(f)

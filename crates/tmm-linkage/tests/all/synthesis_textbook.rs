@@ -425,3 +425,55 @@ fn p1_5_the_family_keeps_the_lever_the_distance_and_the_pressure_angles() {
         "{e}"
     );
 }
+
+/// Seed 002, example 2, with every given: the bell crank B–C–D
+/// (l_BC = l_CD = 0.22 m, l_BC/l_BD = 2) drives the knee C–D–F
+/// (l_DF = 0.2 m); H_F = 0.09 m, K = 1.12, δ = 5°, l^x_CO = 0.28 m.
+#[test]
+fn seed_002_knee_press_with_the_bell_crank_uses_every_given() {
+    use tmm_linkage::synthesis::Rotation;
+    use tmm_linkage::synthesis::knee_bell_crank::{self, BellKneeRequest};
+    use tmm_linkage::synthesis::knee_press::KneePivot;
+    let s = knee_bell_crank::synthesize(&BellKneeRequest {
+        stroke: 0.09,
+        k: 1.12,
+        knee: 0.22,
+        link: 0.2,
+        arm: 0.22,
+        chord: 0.11,
+        delta: rad(5.0),
+        pivot: KneePivot::Horizontal(0.28),
+        drive: Drive {
+            rotation: Rotation::Cw,
+            omega: 1.0,
+        },
+        limits: Default::default(),
+    })
+    .unwrap();
+    let (l1, l2) = (s.length("OA").unwrap(), s.length("AB").unwrap());
+    // the seed's graphical lengths (read at 0.005 m/mm): within about 1 %
+    assert!((l1 / 0.055 - 1.0).abs() < 0.011, "l_OA = {l1}");
+    assert!((l2 / 0.255 - 1.0).abs() < 0.011, "l_AB = {l2}");
+    // analysed back: at the core's two dead positions the slide is 0.09 m
+    // apart, the knee CD at δ = 5° from the vertical at the bottom, B and D
+    // 0.11 m apart, |CB| = |CD| = 0.22 m, and O sees B′B″ at θ
+    let theta = PI * 0.12 / 2.12;
+    let pos = &s.check.dead_positions;
+    let p = |i: usize, n: &str| pos[i].iter().find(|(m, _)| m == n).unwrap().1;
+    let (f0, f1) = (p(0, "F"), p(1, "F"));
+    assert!(((f0.y - f1.y).abs() - 0.09).abs() < 1e-9);
+    let bottom = if f0.y < f1.y { 0 } else { 1 };
+    let d = p(bottom, "D");
+    assert!(((-d.x).atan2(-d.y) - rad(5.0)).abs() < 1e-9, "{d:?}");
+    for i in 0..2 {
+        assert!(((p(i, "B") - p(i, "D")).hypot() - 0.11).abs() < 1e-12);
+        assert!((p(i, "B").hypot() - 0.22).abs() < 1e-12 && (p(i, "D").hypot() - 0.22).abs() < 1e-12);
+        assert!(((p(i, "F") - p(i, "D")).hypot() - 0.2).abs() < 1e-12 && p(i, "F").x.abs() < 1e-12);
+    }
+    let o = s.frame[1].1;
+    assert!((o.x - 0.28).abs() < 1e-12);
+    let (r0, r1) = (p(0, "B") - o, p(1, "B") - o);
+    let seen = (r0.x * r1.y - r0.y * r1.x).atan2(r0.x * r1.x + r0.y * r1.y).abs();
+    assert!((seen - theta).abs() < 1e-9, "{} vs {}", seen.to_degrees(), theta.to_degrees());
+    assert!((s.check.k.unwrap() - 1.12).abs() < 1e-9);
+}

@@ -26,6 +26,7 @@ use tmm_linkage::synthesis::crank_rocker::{CrankRockerRequest, RockerCondition};
 use tmm_linkage::synthesis::crank_slider::{CrankSliderRequest, SliderCondition, TwoPositionsRequest};
 use tmm_linkage::synthesis::cylinder::{CylinderRequest, PressureAt};
 use tmm_linkage::synthesis::function_gen::FunctionRequest;
+use tmm_linkage::synthesis::knee_bell_crank::BellKneeRequest;
 use tmm_linkage::synthesis::knee_press::{KneePivot, KneeRequest};
 use tmm_linkage::synthesis::pivot::PivotCondition;
 use tmm_linkage::synthesis::rocker_extremes::{Abscissa, ExtremesRequest};
@@ -63,6 +64,10 @@ pub const KINDS: &[(&str, &str)] = &[
     (
         "three-positions",
         "four-bar through three positions, the rocker's pivot D and length given (textbook П1.4)",
+    ),
+    (
+        "knee-press-bell-crank",
+        "crank-knee press with a bell-crank rocker B–C–D (seed 002 ex. 2 read literally)",
     ),
     (
         "oscillating-cylinder",
@@ -664,6 +669,51 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
                 coupler: f.need("coupler", Dim::Length)?,
                 swing: f.need("swing", Dim::Angle)?,
                 lever: f.need("lever", Dim::Length)?,
+                pivot,
+                drive,
+                limits,
+            })
+        }
+        "knee-press-bell-crank" => {
+            let stroke = f.need("stroke", Dim::Length)?;
+            let k = f.need("k", Dim::Ratio)?;
+            let knee = f.need("knee", Dim::Length)?;
+            let link = f.need("link", Dim::Length)?;
+            let arm = f.need("arm", Dim::Length)?;
+            let chord = match f.one_of(&["chord", "arm_ratio"], false)? {
+                Some("arm_ratio") => {
+                    let q = f.need("arm_ratio", Dim::Ratio)?;
+                    if !(q > 0.0) {
+                        return Err(f.error("arm_ratio", "l_CB / l_BD must be > 0"));
+                    }
+                    arm / q
+                }
+                _ => f.need("chord", Dim::Length)?,
+            };
+            let delta = f.need("delta", Dim::Angle)?;
+            let keys = ["horizontal", "crank", "frame", "optimum"];
+            condition_key = f.one_of(&keys, swept_of(&keys).is_some())?;
+            let pivot = match condition_key {
+                Some("horizontal") => KneePivot::Horizontal(f.need("horizontal", Dim::Length)?),
+                Some("crank") => KneePivot::Crank(f.need("crank", Dim::Length)?),
+                Some("frame") => KneePivot::Frame(f.need("frame", Dim::Length)?),
+                None => {
+                    condition_key = swept_of(&keys);
+                    KneePivot::Optimum
+                }
+                _ => {
+                    f.flag("optimum")?;
+                    KneePivot::Optimum
+                }
+            };
+            Request::KneeBellCrank(BellKneeRequest {
+                stroke,
+                k,
+                knee,
+                link,
+                arm,
+                chord,
+                delta,
                 pivot,
                 drive,
                 limits,
