@@ -101,12 +101,12 @@ pub fn solutions(s0: f64, s1: f64, beta: f64, at: PressureAt, alpha: impl Fn(f64
     let b = p * (1.0 - delta.cos()) - q * delta.sin();
     let c = sg * sg - so * so;
     let disc = b * b - a * c;
-    if !(disc >= 0.0) || a <= 0.0 {
+    if disc.is_nan() || disc < 0.0 || a <= 0.0 {
         return vec![];
     }
     let mut out = Vec::new();
     for l1 in [(b - disc.sqrt()) / a, (b + disc.sqrt()) / a] {
-        if !(l1 > 0.0) || out.iter().any(|x: &Placed| x.l1 == l1) {
+        if l1.is_nan() || l1 <= 0.0 || out.iter().any(|x: &Placed| x.l1 == l1) {
             continue;
         }
         let dg = Vec2::new(l1 - p, -q);

@@ -97,7 +97,7 @@ fn closed_form(d: Vec2, l3: f64, g0: f64, g1: f64) -> (f64, f64, f64, f64, Vec2,
 /// extremes on one assembly branch).
 fn invalid(d: Vec2, l3: f64, g0: f64, g1: f64) -> Option<String> {
     let (l1, l2, _, _, c0, c1) = closed_form(d, l3, g0, g1);
-    if !(l1 > 0.0) {
+    if l1.is_nan() || l1 <= 0.0 {
         return Some(format!(
             "|AC_н| = {} m is not longer than |AC_к| = {} m, so the first position cannot be the extended one (l1 = (|AC_н| − |AC_к|)/2 ≤ 0)",
             show(l2 + l1),

@@ -69,7 +69,7 @@ pub fn closed_form(d: Vec2, l3: f64, gammas: [f64; 3], turns: [f64; 3]) -> Optio
     );
     let det = e1.x * e2.y - e1.y * e2.x;
     let scale = e1.hypot() * e2.hypot();
-    if !(det.abs() > 1e-12 * scale) {
+    if det.is_nan() || det.abs() <= 1e-12 * scale {
         return None;
     }
     let b1 = Vec2::new((r1 * e2.y - e1.y * r2) / det, (e1.x * r2 - e2.x * r1) / det);
@@ -113,7 +113,7 @@ pub fn synthesize(r: &ThreePositionsRequest) -> Result<Synthesis, SynthesisError
             None,
         ));
     };
-    if !(l1 > 1e-9 * l3 && l2.is_finite()) {
+    if l1.is_nan() || l1 <= 1e-9 * l3 || !l2.is_finite() {
         return Err(SynthesisError::infeasible(
             "gamma3",
             format!("the crank comes out of length {} m: the positions give no crank", show(l1)),

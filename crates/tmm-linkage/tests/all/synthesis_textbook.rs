@@ -54,10 +54,12 @@ fn newton(f: impl Fn(&[f64]) -> Vec<f64>, mut x: Vec<f64>) -> Vec<f64> {
         for c in 0..n {
             let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())).unwrap();
             a.swap(c, p);
-            for i in c + 1..n {
-                let m = a[i][c] / a[c][c];
-                for k in c..=n {
-                    a[i][k] -= m * a[c][k];
+            let (top, rest) = a.split_at_mut(c + 1);
+            let pivot = &top[c];
+            for row in rest.iter_mut() {
+                let m = row[c] / pivot[c];
+                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= m * p;
                 }
             }
         }
@@ -156,7 +158,7 @@ fn p1_2_request(x: f64) -> ExtremesRequest {
 }
 
 /// The book's four equations of П1.2/П1.3 with D = (xd, yd).
-fn extremes_eqs(l1: f64, l2: f64, p: f64, th: f64, d: Vec2, l3: f64, g0: f64, g1: f64) -> Vec<f64> {
+fn extremes_eqs((l1, l2, p, th): (f64, f64, f64, f64), d: Vec2, l3: f64, (g0, g1): (f64, f64)) -> Vec<f64> {
     vec![
         (l1 + l2) * p.cos() - d.x - l3 * g0.cos(),
         (l1 + l2) * p.sin() - d.y - l3 * g0.sin(),
@@ -170,7 +172,7 @@ fn p1_2_four_bar_by_extreme_positions_against_the_books_system() {
     let s = rocker_extremes::synthesize(&p1_2_request(0.8)).unwrap();
     let d = Vec2::new(0.8, -0.1);
     let x = newton(
-        |v| extremes_eqs(v[0], v[1], v[2], v[3], d, 0.5, rad(70.0), rad(130.0)),
+        |v| extremes_eqs((v[0], v[1], v[2], v[3]), d, 0.5, (rad(70.0), rad(130.0))),
         vec![0.2, 0.5, rad(30.0), rad(30.0)],
     );
     assert!((s.length("AB").unwrap() - x[0]).abs() < 1e-10);
@@ -215,7 +217,7 @@ fn p1_3_frame_abscissa_by_k_against_the_books_system() {
     .unwrap();
     // the book's system with unknowns (l1, l2, φ1н, X_D), guesses 0.2, 0.5, 30°, 0.5
     let x = newton(
-        |v| extremes_eqs(v[0], v[1], v[2], theta, Vec2::new(v[3], yd), l3, g0, g1),
+        |v| extremes_eqs((v[0], v[1], v[2], theta), Vec2::new(v[3], yd), l3, (g0, g1)),
         vec![0.2, 0.5, rad(30.0), 0.5],
     );
     assert!((coord(&s, "X_D") - x[3]).abs() < 1e-10, "{} vs {}", coord(&s, "X_D"), x[3]);

@@ -683,7 +683,7 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             let chord = match f.one_of(&["chord", "arm_ratio"], false)? {
                 Some("arm_ratio") => {
                     let q = f.need("arm_ratio", Dim::Ratio)?;
-                    if !(q > 0.0) {
+                    if q.is_nan() || q <= 0.0 {
                         return Err(f.error("arm_ratio", "l_CB / l_BD must be > 0"));
                     }
                     arm / q
