@@ -243,6 +243,74 @@ kind_args! {
     }
 }
 
+kind_args! {
+    /// Crank-knee press with a bell-crank rocker B–C–D driving the knee C–D–F (seed 002 ex. 2 read literally)
+    KneePressBellCrank {
+        stroke: "Stroke of the slide H_F",
+        k: "Time ratio K ≥ 1",
+        knee: "The knee's arm l_CD of the bell crank",
+        link: "The knee's link l_DF",
+        arm: "The bell crank's arm l_CB to the coupler",
+        chord: "The bell crank's side l_BD",
+        arm_ratio: "l_CB / l_BD instead of --chord (seed 002: 2)",
+        delta: "Angle δ of CD from the line CF at the bottom (> 0)",
+        horizontal: "Horizontal distance of the crank pivot from C (seed 002: 0.28 m)",
+        crank: "Crank length l_OA",
+        frame: "Distance of the crank pivot from C",
+    } flags {
+        optimum: "The pivot with the best margin",
+    }
+}
+
+kind_args! {
+    /// Crank-rocker by the two extreme positions of its rocker with its pivot D given (textbook П1.2)
+    RockerExtremes {
+        frame_x: "Abscissa X_D of the rocker's pivot (the crank's pivot A at the origin)",
+        frame_y: "Ordinate Y_D of the rocker's pivot",
+        rocker: "Rocker length l_DC",
+        gamma_start: "Rocker angle γн at the extended position (crank and coupler in line, B between A and C)",
+        gamma_end: "Rocker angle γк at the folded position",
+    } flags {}
+}
+
+kind_args! {
+    /// Crank-rocker by the rocker's extreme positions and K, the abscissa X_D found (textbook П1.3)
+    RockerExtremesK {
+        k: "Time ratio Kω > 1 (θ = 180°·(K − 1)/(K + 1))",
+        frame_y: "Ordinate Y_D of the rocker's pivot",
+        rocker: "Rocker length l_DC",
+        gamma_start: "Rocker angle γн at the extended position",
+        gamma_end: "Rocker angle γк at the folded position",
+    } flags {}
+}
+
+kind_args! {
+    /// Four-bar through three positions, the rocker's pivot D and length given, the crank's start found (textbook П1.4)
+    ThreePositions {
+        frame_x: "Abscissa X_D of the rocker's pivot (the crank's pivot A at the origin)",
+        frame_y: "Ordinate Y_D of the rocker's pivot",
+        rocker: "Rocker length l_DC",
+        gamma1: "Rocker angle γ1 in position 1",
+        gamma2: "Rocker angle γ2 in position 2",
+        gamma3: "Rocker angle γ3 in position 3",
+        phi12: "Crank rotation φ12 from position 1 to 2 (counter-clockwise positive)",
+        phi13: "Crank rotation φ13 from position 1 to 3",
+    } flags {}
+}
+
+kind_args! {
+    /// Lever OB driven by an oscillating cylinder pivoted at D, by the piston's travel and a pressure angle (textbook П1.5)
+    OscillatingCylinder {
+        h_min: "Distance h_min from D to the piston at the initial position",
+        h_max: "Distance h_max at the final position",
+        rod: "Piston rod l_шт (the book: 1.3·h_max)",
+        swing: "Lever's turn β from the initial position to the final one",
+        pressure_end: "Pressure angle θк at the final position (variants 1, 2)",
+        pressure_start: "Pressure angle θн at the initial position (variant 3)",
+        frame_y: "Ordinate Y_D of the cylinder's pivot: fixes the free turn about O (default: D on +x)",
+    } flags {}
+}
+
 /// The kinds.
 #[derive(clap::Subcommand)]
 pub enum SynthCommand {
@@ -262,6 +330,16 @@ pub enum SynthCommand {
     SixBarInversion(SixBarInversion),
     /// Six-bar by the pressure angle
     SixBarPressure(SixBarPressure),
+    /// Crank-knee press with a bell-crank rocker (seed 002 ex. 2 read literally)
+    KneePressBellCrank(KneePressBellCrank),
+    /// Crank-rocker by the rocker's extreme positions, its pivot D given (textbook П1.2)
+    RockerExtremes(RockerExtremes),
+    /// Crank-rocker by the rocker's extreme positions and K, X_D found (textbook П1.3)
+    RockerExtremesK(RockerExtremesK),
+    /// Four-bar through three positions, D and the rocker given (textbook П1.4)
+    ThreePositions(ThreePositions),
+    /// Lever driven by an oscillating cylinder (textbook П1.5)
+    OscillatingCylinder(OscillatingCylinder),
 }
 
 impl SynthCommand {
@@ -275,6 +353,11 @@ impl SynthCommand {
             SynthCommand::KneePress(a) => ("knee-press", a.fields(), &a.common),
             SynthCommand::SixBarInversion(a) => ("six-bar-inversion", a.fields(), &a.common),
             SynthCommand::SixBarPressure(a) => ("six-bar-pressure", a.fields(), &a.common),
+            SynthCommand::KneePressBellCrank(a) => ("knee-press-bell-crank", a.fields(), &a.common),
+            SynthCommand::RockerExtremes(a) => ("rocker-extremes", a.fields(), &a.common),
+            SynthCommand::RockerExtremesK(a) => ("rocker-extremes-k", a.fields(), &a.common),
+            SynthCommand::ThreePositions(a) => ("three-positions", a.fields(), &a.common),
+            SynthCommand::OscillatingCylinder(a) => ("oscillating-cylinder", a.fields(), &a.common),
         }
     }
 }

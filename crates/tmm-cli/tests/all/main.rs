@@ -19,4 +19,5 @@ mod planetary_cli;
 mod redundant;
 mod seed_003_direction;
 mod synth;
+mod textbook_synthesis;
 mod write_safety;

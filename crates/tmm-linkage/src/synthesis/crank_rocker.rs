@@ -256,5 +256,8 @@ pub fn synthesize(r: &CrankRockerRequest) -> Result<Synthesis, SynthesisError> {
         construction,
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }

@@ -385,6 +385,9 @@ fn build(
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }
 
@@ -524,6 +527,11 @@ pub fn by_two_positions(r: &TwoPositionsRequest) -> Result<Synthesis, SynthesisE
         },
         def,
         check,
+        // the book's unknowns φ2н, φ2к (rod angle at A from +x) and X_Cн
+        // (seed 000 § 1.2.2, system 1.4; GIVENS.md П1.1)
+        angles: vec![("phi2_start".into(), a0), ("phi2_end".into(), a1)],
+        coordinates: vec![("X_C_start".into(), l1 * p0.cos() + l2 * a0.cos())],
+        shown: vec![p0, p1],
     })
 }
 

@@ -268,5 +268,8 @@ pub fn synthesize(r: &FunctionRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }

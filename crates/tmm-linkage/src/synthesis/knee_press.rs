@@ -223,5 +223,8 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }

@@ -8,7 +8,8 @@
 //! linkage core over the whole cycle ([`check`]).
 //!
 //! Derivations: docs/synthesis.md. Sources: seed 000 § 1.2 (crank-slider),
-//! seed 002 examples 1–4, seed 003 §§ 3–4, Artobolevsky, ТММ, 1988, § 26.
+//! seed 002 examples 1–4, seed 003 §§ 3–4, Artobolevsky, ТММ, 1988, § 26;
+//! the BMSTU textbook's appendix П1 (Chernaya & Timofeev 2019).
 //!
 //! ```
 //! use tmm_linkage::synthesis::crank_slider::*;
@@ -25,8 +26,10 @@
 pub mod check;
 pub mod crank_rocker;
 pub mod crank_slider;
+pub mod cylinder;
 pub mod error;
 pub mod function_gen;
+pub mod knee_bell_crank;
 pub mod knee_press;
 pub mod limits;
 pub mod locus;
@@ -34,10 +37,12 @@ pub mod pivot;
 pub mod placement;
 pub mod request;
 pub mod result;
+pub mod rocker_extremes;
 pub mod search;
 pub mod six_bar;
 pub mod slotted;
 pub mod sweep;
+pub mod three_positions;
 pub mod time_ratio;
 
 pub use error::SynthesisError;

@@ -4,13 +4,17 @@
 
 use super::crank_rocker::{CrankRockerRequest, RockerCondition};
 use super::crank_slider::{CrankSliderRequest, SliderCondition, TwoPositionsRequest};
+use super::cylinder::{self, CylinderRequest, PressureAt};
 use super::error::SynthesisError;
 use super::function_gen::FunctionRequest;
+use super::knee_bell_crank::{self, BellKneeRequest};
 use super::knee_press::{KneePivot, KneeRequest};
 use super::pivot::PivotCondition;
 use super::result::Synthesis;
+use super::rocker_extremes::{self, Abscissa, ExtremesRequest};
 use super::six_bar::{InversionRequest, PressureRequest};
 use super::slotted::{Coupler, SlottedRequest};
+use super::three_positions::{self, ThreePositionsRequest};
 use super::{crank_rocker, crank_slider, function_gen, knee_press, six_bar, slotted};
 
 /// A synthesis request of any kind.
@@ -32,6 +36,17 @@ pub enum Request {
     SixBarInversion(InversionRequest),
     /// Six-bar by the pressure angle.
     SixBarPressure(PressureRequest),
+    /// Crank-rocker by the rocker's extreme positions with D given, or with
+    /// K given and X_D unknown (textbook П1.2, П1.3).
+    RockerExtremes(ExtremesRequest),
+    /// Four-bar through three positions with D and the rocker given
+    /// (textbook П1.4).
+    ThreePositions(ThreePositionsRequest),
+    /// Lever with an oscillating cylinder (textbook П1.5).
+    Cylinder(CylinderRequest),
+    /// Crank-knee press with a bell-crank rocker (seed 002 ex. 2 read
+    /// literally).
+    KneeBellCrank(BellKneeRequest),
 }
 
 /// Solve a request (each kind checks its result over the cycle). When no
@@ -77,6 +92,10 @@ pub fn solve(r: &Request) -> Result<Synthesis, SynthesisError> {
         Request::Knee(q) => knee_press::synthesize(q),
         Request::SixBarInversion(q) => six_bar::by_inversion(q),
         Request::SixBarPressure(q) => six_bar::by_pressure(q),
+        Request::RockerExtremes(q) => rocker_extremes::synthesize(q),
+        Request::ThreePositions(q) => three_positions::synthesize(q),
+        Request::Cylinder(q) => cylinder::synthesize(q),
+        Request::KneeBellCrank(q) => knee_bell_crank::synthesize(q),
     }
 }
 
@@ -106,6 +125,7 @@ fn is_angle(r: &Request, name: &str) -> bool {
     match name {
         "swing" | "frame_angle" | "max_pressure" | "delta" | "phi_start" | "phi_end" | "arm_angle" | "extreme_pressure"
         | "pivot_max_pressure" | "pressure_working" | "pressure_return" | "transmission_min" => true,
+        "gamma_start" | "gamma_end" | "gamma1" | "gamma2" | "gamma3" | "phi12" | "phi13" | "pressure_start" | "pressure_end" => true,
         "pivot" => matches!(
             r,
             Request::SixBarInversion(InversionRequest {
@@ -255,6 +275,10 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             Request::Knee(q) => &mut q.limits,
             Request::SixBarInversion(q) => &mut q.limits,
             Request::SixBarPressure(q) => &mut q.limits,
+            Request::RockerExtremes(q) => &mut q.limits,
+            Request::ThreePositions(q) => &mut q.limits,
+            Request::Cylinder(q) => &mut q.limits,
+            Request::KneeBellCrank(q) => &mut q.limits,
         };
         let l = match name {
             "pressure_working" => &mut limits.pressure_working,
@@ -354,6 +378,65 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             "pivot" => pivot_value(&mut q.pivot),
             n => pivot_named(&mut q.pivot, n, set).ok_or(())?,
         },
+        Request::RockerExtremes(q) => match name {
+            "frame_x" => match &mut q.abscissa {
+                Abscissa::Given(x) => Some(x),
+                Abscissa::ByK(_) => None,
+            },
+            "k" => match &mut q.abscissa {
+                Abscissa::ByK(k) => Some(k),
+                Abscissa::Given(_) => None,
+            },
+            "frame_y" => Some(&mut q.frame_y),
+            "rocker" => Some(&mut q.rocker),
+            "gamma_start" => Some(&mut q.gamma_start),
+            "gamma_end" => Some(&mut q.gamma_end),
+            _ => return Err(()),
+        },
+        Request::ThreePositions(q) => match name {
+            "frame_x" => Some(&mut q.frame.x),
+            "frame_y" => Some(&mut q.frame.y),
+            "rocker" => Some(&mut q.rocker),
+            "gamma1" => Some(&mut q.gammas[0]),
+            "gamma2" => Some(&mut q.gammas[1]),
+            "gamma3" => Some(&mut q.gammas[2]),
+            "phi12" => Some(&mut q.crank_turns[0]),
+            "phi13" => Some(&mut q.crank_turns[1]),
+            _ => return Err(()),
+        },
+        Request::Cylinder(q) => match name {
+            "h_min" => Some(&mut q.h_min),
+            "h_max" => Some(&mut q.h_max),
+            "rod" => Some(&mut q.rod),
+            "swing" => Some(&mut q.swing),
+            "pressure_start" => match &mut q.pressure {
+                PressureAt::Start(t) => Some(t),
+                PressureAt::End(_) => None,
+            },
+            "pressure_end" => match &mut q.pressure {
+                PressureAt::End(t) => Some(t),
+                PressureAt::Start(_) => None,
+            },
+            "frame_y" => q.frame_y.as_mut(),
+            _ => return Err(()),
+        },
+        Request::KneeBellCrank(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "knee" => Some(&mut q.knee),
+            "link" => Some(&mut q.link),
+            "arm" => Some(&mut q.arm),
+            "chord" => Some(&mut q.chord),
+            "delta" => Some(&mut q.delta),
+            "horizontal" => cond!(q.pivot, KneePivot::Horizontal),
+            "crank" => cond!(q.pivot, KneePivot::Crank),
+            "frame" => cond!(q.pivot, KneePivot::Frame),
+            "pivot" => match &mut q.pivot {
+                KneePivot::Horizontal(x) | KneePivot::Crank(x) | KneePivot::Frame(x) => Some(x),
+                KneePivot::Optimum => None,
+            },
+            _ => return Err(()),
+        },
     })
 }
 
@@ -397,6 +480,30 @@ impl Request {
                 "extreme_pressure",
                 "pivot",
             ],
+            Request::RockerExtremes(q) => match q.abscissa {
+                Abscissa::Given(_) => &["frame_x", "frame_y", "rocker", "gamma_start", "gamma_end"],
+                Abscissa::ByK(_) => &["k", "frame_y", "rocker", "gamma_start", "gamma_end"],
+            },
+            Request::ThreePositions(_) => &["frame_x", "frame_y", "rocker", "gamma1", "gamma2", "gamma3", "phi12", "phi13"],
+            Request::Cylinder(q) => match (q.pressure, q.frame_y) {
+                (PressureAt::Start(_), Some(_)) => &["h_min", "h_max", "rod", "swing", "pressure_start", "frame_y"],
+                (PressureAt::Start(_), None) => &["h_min", "h_max", "rod", "swing", "pressure_start"],
+                (PressureAt::End(_), Some(_)) => &["h_min", "h_max", "rod", "swing", "pressure_end", "frame_y"],
+                (PressureAt::End(_), None) => &["h_min", "h_max", "rod", "swing", "pressure_end"],
+            },
+            Request::KneeBellCrank(_) => &[
+                "stroke",
+                "k",
+                "knee",
+                "link",
+                "arm",
+                "chord",
+                "delta",
+                "horizontal",
+                "crank",
+                "frame",
+                "pivot",
+            ],
         }
     }
 
@@ -408,6 +515,7 @@ impl Request {
             (Request::CrankSlider(_), "lambda" | "offset" | "max_pressure")
                 | (Request::CrankRocker(_), "crank" | "frame" | "frame_angle")
                 | (Request::Knee(_), "horizontal" | "crank" | "frame")
+                | (Request::KneeBellCrank(_), "horizontal" | "crank" | "frame")
                 | (
                     Request::SixBarInversion(_) | Request::SixBarPressure(_),
                     "crank" | "frame" | "pivot_max_pressure" | "extreme_pressure"
@@ -430,6 +538,7 @@ impl Request {
         let f = field.strip_prefix("limits.").unwrap_or(field);
         let f = match (self, f) {
             (Request::Knee(_), p) => p.strip_prefix("pivot.").unwrap_or(p),
+            (Request::KneeBellCrank(_), p) => p.strip_prefix("pivot.").unwrap_or(p),
             (_, p) => p,
         };
         self.value(f).is_some().then_some(f)

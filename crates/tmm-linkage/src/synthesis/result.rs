@@ -24,6 +24,9 @@ pub enum Kind {
     KneePress,
     /// Six-bar in two stages (шестизвенный).
     SixBar,
+    /// Lever driven by an oscillating (rocking) cylinder (механизм с
+    /// качающимся гидро- или пневмоцилиндром).
+    OscillatingCylinder,
 }
 
 impl Kind {
@@ -36,6 +39,7 @@ impl Kind {
             Kind::SlottedLever => "slotted-lever",
             Kind::KneePress => "knee-press",
             Kind::SixBar => "six-bar",
+            Kind::OscillatingCylinder => "oscillating-cylinder",
         }
     }
 }
@@ -145,6 +149,14 @@ pub struct Synthesis {
     pub def: MechanismDef,
     /// The independent check by the linkage core.
     pub check: CheckReport,
+    /// Further unknowns found that are angles (φ1н, θ, φ2j, φ3н, …), rad,
+    /// by name; empty for the kinds whose lengths say everything.
+    pub angles: Vec<(String, f64)>,
+    /// Further unknowns found that are coordinates (X_D, X_Cн, …), m, by name.
+    pub coordinates: Vec<(String, f64)>,
+    /// Crank angles at which the drawing shows the mechanism (the given
+    /// positions of a problem by positions), rad; empty: the dead positions.
+    pub shown: Vec<f64>,
 }
 
 impl Synthesis {

@@ -241,6 +241,9 @@ pub fn by_inversion(r: &InversionRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }
 
@@ -404,6 +407,9 @@ pub fn by_pressure(r: &PressureRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }
 

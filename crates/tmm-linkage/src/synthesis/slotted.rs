@@ -244,5 +244,8 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
         },
         def,
         check,
+        angles: vec![],
+        coordinates: vec![],
+        shown: vec![],
     })
 }

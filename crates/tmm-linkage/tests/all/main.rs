@@ -16,3 +16,4 @@ mod synthesis_kinds;
 mod synthesis_nearest;
 mod synthesis_proptest;
 mod synthesis_seeds;
+mod synthesis_textbook;

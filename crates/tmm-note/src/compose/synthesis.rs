@@ -18,13 +18,48 @@ const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
     // the numbered angles of a function generator: phi1, psi2 …
     let stem = key.trim_end_matches(|c: char| c.is_ascii_digit());
-    if ANGLES.contains(&key) || ANGLES.contains(&stem) {
+    if ANGLES.contains(&key) || ANGLES.contains(&stem) || is_angle_name(key) {
         cx.q(v.to_degrees(), "u_deg")
-    } else if PURE.contains(&key) {
+    } else if PURE.contains(&key) || key == "lambda_e" {
         cx.q(v, "")
     } else {
         cx.q(v * 1000.0, "u_mm")
     }
+}
+
+/// Names of the textbook's angles (γн, φ12, θк, …): printed in degrees.
+fn is_angle_name(key: &str) -> bool {
+    ["gamma", "phi", "psi", "theta", "pressure_"].iter().any(|p| key.starts_with(p))
+}
+
+/// The kinds solved by positions and loop equations (the textbook's П1),
+/// stated without K as a given.
+const BY_POSITIONS: &[&str] = &[
+    "crank-slider-positions",
+    "rocker-extremes",
+    "rocker-extremes-k",
+    "three-positions",
+    "oscillating-cylinder",
+];
+
+/// The rows of the further unknowns found (angles in degrees, coordinates in mm).
+fn found_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
+    let mut rows = Vec::new();
+    for (ptr, angle) in [("/synthesis/angles", true), ("/synthesis/coordinates", false)] {
+        if let Some(g) = cx.report.pointer(ptr).and_then(Value::as_object) {
+            for (k, v) in g {
+                if let Some(x) = v.as_f64() {
+                    let value = if angle {
+                        cx.q(x.to_degrees(), "u_deg")?
+                    } else {
+                        cx.q(x * 1000.0, "u_mm")?
+                    };
+                    rows.push((k.clone(), value));
+                }
+            }
+        }
+    }
+    Ok(rows)
 }
 
 /// The name of a given value: the words' `given_<key>`, else the key.
@@ -50,6 +85,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(sy) = cx.report.get("synthesis") else { return Ok(None) };
     if cx.s("/synthesis/kind") == Some("function-generation") {
         return function_generation(cx, sy).map(Some);
+    }
+    let by_positions = cx.s("/synthesis/kind").is_some_and(|k| BY_POSITIONS.contains(&k));
+    if by_positions {
+        return section_by_positions(cx, sy).map(Some);
     }
     let k = cx.v("/synthesis/k")?;
     let statement = vec![
@@ -160,4 +199,67 @@ fn angle_checks(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
         q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
     }
     Ok(q)
+}
+
+/// The lengths of the synthesised mechanism as table rows.
+fn length_rows(sy: &Value) -> Vec<Vec<crate::model::Cell>> {
+    let mut rows = Vec::new();
+    if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
+        for (name, v) in l {
+            if let Some(x) = v.as_f64() {
+                rows.push(vec![text(format!("l_{name}")), num(x * 1000.0)]);
+            }
+        }
+    }
+    rows
+}
+
+/// The section of a synthesis by positions (the textbook's П1): the loop
+/// equations at the given positions, the unknowns found, the check by the
+/// kinematic analysis; K only where the crank turns fully.
+fn section_by_positions(cx: &Ctx, sy: &Value) -> Result<Section, NoteError> {
+    let statement = vec![
+        Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
+        cx.para("sy_given_positions", &[])?,
+        cx.quantities("tab_given", given_rows(cx)?)?,
+        cx.para("sy_method_positions", &[])?,
+        cx.para("sy_sought_positions", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("sy_f_pressure", &[])?,
+        formula("gamma = 90° - theta.alt, quad theta.alt_max <= [theta.alt]"),
+    ];
+    let mut results = vec![cx.table(
+        "tab_synth_lengths",
+        &[("col_length_name", ""), ("col_length", "u_mm")],
+        length_rows(sy),
+    )?];
+    let found = found_rows(cx)?;
+    if !found.is_empty() {
+        results.push(cx.quantities("tab_synth_found", found)?);
+    }
+    let mut q = Vec::new();
+    if let Some(k) = cx.opt("/synthesis/check/k") {
+        q.push((cx.w("q_k_check")?, cx.q(k, "")?));
+    }
+    if let Some(w) = cx.opt("/synthesis/pressure_angle_max/working") {
+        q.push((cx.w("q_pressure_working")?, cx.q(w.to_degrees(), "u_deg")?));
+    }
+    if let Some(r) = cx.opt("/synthesis/pressure_angle_max/return") {
+        q.push((cx.w("q_pressure_return")?, cx.q(r.to_degrees(), "u_deg")?));
+    }
+    if let Some(t) = cx.opt("/synthesis/transmission_angle_min") {
+        q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
+    }
+    results.push(cx.quantities("tab_synth_results", q)?);
+    for (path, key) in [
+        ("synthesis/construction.svg", "fig_synth_positions"),
+        ("synthesis/pressure.svg", "fig_synth_pressure"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            results.push(f);
+        }
+    }
+    let conclusions = vec![cx.para("sy_conclusion_positions", &[])?];
+    four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)
 }

@@ -69,6 +69,20 @@ fn clipped_arc(c: &mut Canvas, center: Vec2, r: f64, a0: f64, sweep: f64, b: Box
 /// function generator the given crank angles (solved by the linkage core).
 fn drawn_positions(s: &Solved) -> Vec<Vec<(String, Vec2)>> {
     let y = &s.syn;
+    // the given positions of a problem by positions (the textbook's П1)
+    if !y.shown.is_empty()
+        && let Ok(m) = Mechanism::new(&y.def)
+    {
+        let mut sol = m.solution();
+        return y
+            .shown
+            .iter()
+            .filter_map(|phi| {
+                m.solve(*phi, &mut sol).ok()?;
+                Some(m.points.iter().zip(&sol.points).map(|(p, q)| (p.name.clone(), q.p)).collect())
+            })
+            .collect();
+    }
     if y.kind != Kind::FunctionGeneration {
         // the first drawn (blue, ′) is the one whose driven point is the
         // construction's first extreme, so the colours, the primes and the

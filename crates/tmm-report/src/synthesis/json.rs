@@ -30,6 +30,10 @@ pub fn document(s: &Solved, variants: Option<&[Variant]>, cmp: Option<&Compariso
         "frame".into(),
         Value::Object(y.frame.iter().map(|(n, p)| (n.clone(), xy(*p))).collect()),
     );
+    // the further unknowns of the textbook's problems (φ1н, θ, X_D, …)
+    d.insert("angles".into(), named(&y.angles));
+    d.insert("coordinates".into(), named(&y.coordinates));
+    d.insert("shown_phi".into(), y.shown.iter().map(|&p| num(p)).collect());
     d.insert("k".into(), num(y.k));
     d.insert("theta".into(), num(y.theta));
     if let Some((v, _, word)) = stroke_of(y.stroke) {

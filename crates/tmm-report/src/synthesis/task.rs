@@ -24,11 +24,15 @@ use tmm_geom::Vec2;
 use tmm_geom::units::{self, Dim};
 use tmm_linkage::synthesis::crank_rocker::{CrankRockerRequest, RockerCondition};
 use tmm_linkage::synthesis::crank_slider::{CrankSliderRequest, SliderCondition, TwoPositionsRequest};
+use tmm_linkage::synthesis::cylinder::{CylinderRequest, PressureAt};
 use tmm_linkage::synthesis::function_gen::FunctionRequest;
+use tmm_linkage::synthesis::knee_bell_crank::BellKneeRequest;
 use tmm_linkage::synthesis::knee_press::{KneePivot, KneeRequest};
 use tmm_linkage::synthesis::pivot::PivotCondition;
+use tmm_linkage::synthesis::rocker_extremes::{Abscissa, ExtremesRequest};
 use tmm_linkage::synthesis::six_bar::{InversionRequest, PressureRequest};
 use tmm_linkage::synthesis::slotted::{Coupler, Lever, SlottedRequest};
+use tmm_linkage::synthesis::three_positions::ThreePositionsRequest;
 use tmm_linkage::synthesis::{Drive, Limits, Request, Rotation};
 
 use crate::{Error, TaskSource};
@@ -49,6 +53,26 @@ pub const KINDS: &[(&str, &str)] = &[
     ("knee-press", "crank-knee press (seed 002 ex. 2)"),
     ("six-bar-inversion", "six-bar by kinematic inversion (seed 002 ex. 4)"),
     ("six-bar-pressure", "six-bar by the pressure angle (seed 003)"),
+    (
+        "rocker-extremes",
+        "crank-rocker by the rocker's extreme positions, its pivot D given (textbook П1.2)",
+    ),
+    (
+        "rocker-extremes-k",
+        "crank-rocker by the rocker's extreme positions and K, the abscissa of D found (textbook П1.3)",
+    ),
+    (
+        "three-positions",
+        "four-bar through three positions, the rocker's pivot D and length given (textbook П1.4)",
+    ),
+    (
+        "knee-press-bell-crank",
+        "crank-knee press with a bell-crank rocker B–C–D (seed 002 ex. 2 read literally)",
+    ),
+    (
+        "oscillating-cylinder",
+        "lever driven by an oscillating cylinder by its stroke and a pressure angle (textbook П1.5)",
+    ),
 ];
 
 /// A field's value as written (a number, a text with a unit, a flag, a list).
@@ -368,6 +392,7 @@ pub fn param_dim(r: &Request, name: &str) -> Dim {
         "k" | "lambda" | "lambda_e" => Dim::Ratio,
         "swing" | "frame_angle" | "max_pressure" | "delta" | "phi_start" | "phi_end" | "arm_angle" | "extreme_pressure"
         | "pivot_max_pressure" | "pivot_angle" | "pressure_working" | "pressure_return" | "transmission_min" => Dim::Angle,
+        "gamma_start" | "gamma_end" | "gamma1" | "gamma2" | "gamma3" | "phi12" | "phi13" | "pressure_start" | "pressure_end" => Dim::Angle,
         "speed" => Dim::AngularVelocity,
         "mean_speed" => Dim::Velocity,
         "coupler" => match r {
@@ -689,6 +714,95 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
                 swing: f.need("swing", Dim::Angle)?,
                 lever: f.need("lever", Dim::Length)?,
                 pivot,
+                drive,
+                limits,
+            })
+        }
+        "knee-press-bell-crank" => {
+            let stroke = f.need("stroke", Dim::Length)?;
+            let k = f.need("k", Dim::Ratio)?;
+            let knee = f.need("knee", Dim::Length)?;
+            let link = f.need("link", Dim::Length)?;
+            let arm = f.need("arm", Dim::Length)?;
+            let chord = match f.one_of(&["chord", "arm_ratio"], false)? {
+                Some("arm_ratio") => {
+                    let q = f.need("arm_ratio", Dim::Ratio)?;
+                    if q.is_nan() || q <= 0.0 {
+                        return Err(f.error("arm_ratio", "l_CB / l_BD must be > 0"));
+                    }
+                    arm / q
+                }
+                _ => f.need("chord", Dim::Length)?,
+            };
+            let delta = f.need("delta", Dim::Angle)?;
+            let keys = ["horizontal", "crank", "frame", "optimum"];
+            condition_key = f.one_of(&keys, swept_of(&keys).is_some())?;
+            let pivot = match condition_key {
+                Some("horizontal") => KneePivot::Horizontal(f.need("horizontal", Dim::Length)?),
+                Some("crank") => KneePivot::Crank(f.need("crank", Dim::Length)?),
+                Some("frame") => KneePivot::Frame(f.need("frame", Dim::Length)?),
+                None => {
+                    condition_key = swept_of(&keys);
+                    KneePivot::Optimum
+                }
+                _ => {
+                    f.flag("optimum")?;
+                    KneePivot::Optimum
+                }
+            };
+            Request::KneeBellCrank(BellKneeRequest {
+                stroke,
+                k,
+                knee,
+                link,
+                arm,
+                chord,
+                delta,
+                pivot,
+                drive,
+                limits,
+            })
+        }
+        "rocker-extremes" | "rocker-extremes-k" => Request::RockerExtremes(ExtremesRequest {
+            abscissa: if kind == "rocker-extremes" {
+                Abscissa::Given(f.need("frame_x", Dim::Length)?)
+            } else {
+                Abscissa::ByK(f.need("k", Dim::Ratio)?)
+            },
+            frame_y: f.need("frame_y", Dim::Length)?,
+            rocker: f.need("rocker", Dim::Length)?,
+            gamma_start: f.need("gamma_start", Dim::Angle)?,
+            gamma_end: f.need("gamma_end", Dim::Angle)?,
+            drive,
+            limits,
+        }),
+        "three-positions" => Request::ThreePositions(ThreePositionsRequest {
+            frame: Vec2::new(f.need("frame_x", Dim::Length)?, f.need("frame_y", Dim::Length)?),
+            rocker: f.need("rocker", Dim::Length)?,
+            gammas: [
+                f.need("gamma1", Dim::Angle)?,
+                f.need("gamma2", Dim::Angle)?,
+                f.need("gamma3", Dim::Angle)?,
+            ],
+            crank_turns: [f.need("phi12", Dim::Angle)?, f.need("phi13", Dim::Angle)?],
+            drive,
+            limits,
+        }),
+        "oscillating-cylinder" => {
+            let (h_min, h_max) = (f.need("h_min", Dim::Length)?, f.need("h_max", Dim::Length)?);
+            let rod = f.need("rod", Dim::Length)?;
+            let swing = f.need("swing", Dim::Angle)?;
+            let pressure = match f.one_of(&["pressure_end", "pressure_start"], false)? {
+                Some("pressure_start") => PressureAt::Start(f.need("pressure_start", Dim::Angle)?),
+                _ => PressureAt::End(f.need("pressure_end", Dim::Angle)?),
+            };
+            Request::Cylinder(CylinderRequest {
+                h_min,
+                h_max,
+                rod,
+                swing,
+                pressure,
+                frame_y: f.qty("frame_y", Dim::Length)?,
                 drive,
                 limits,
             })

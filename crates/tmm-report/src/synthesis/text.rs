@@ -36,17 +36,33 @@ pub fn report(s: &Solved, vars: Option<&[Variant]>, cmp: Option<&Comparison>) ->
     for (n, v) in &y.lengths {
         let _ = writeln!(t, "  l_{n:<12} {:>12.3} mm", v * 1e3);
     }
+    if !y.angles.is_empty() {
+        t.push_str("Angles found:\n");
+        for (n, v) in &y.angles {
+            let _ = writeln!(t, "  {n:<14} {:>12.4}°", v.to_degrees());
+        }
+    }
+    if !y.coordinates.is_empty() {
+        t.push_str("Coordinates found:\n");
+        for (n, v) in &y.coordinates {
+            let _ = writeln!(t, "  {n:<14} {:>12.3} mm", v * 1e3);
+        }
+    }
     t.push_str("Frame (fixed points):\n");
     for (n, p) in &y.frame {
         let _ = writeln!(t, "  {n:<14} ({:.3}, {:.3}) mm", p.x * 1e3, p.y * 1e3);
     }
-    let _ = writeln!(
-        t,
-        "K requested {:.6}, found by the linkage core {}; θ = {}",
-        y.k,
-        c.k.map_or("— (the crank does not turn fully)".into(), |k| format!("{k:.9}")),
-        show(Dim::Angle, y.theta)
-    );
+    // a lever driven by a cylinder works over its turn β only: no K
+    let no_k = y.kind == tmm_linkage::synthesis::Kind::OscillatingCylinder;
+    if !no_k {
+        let _ = writeln!(
+            t,
+            "K requested {:.6}, found by the linkage core {}; θ = {}",
+            y.k,
+            c.k.map_or("— (the crank does not turn fully)".into(), |k| format!("{k:.9}")),
+            show(Dim::Angle, y.theta)
+        );
+    }
     if let Some((v, dim, word)) = stroke_of(y.stroke) {
         let found = stroke_of(c.stroke).map_or("—".into(), |(f, _, _)| show(dim, f));
         let _ = writeln!(t, "{word} of the construction {}, found by the linkage core {found}", show(dim, v));
