@@ -174,7 +174,10 @@ impl Dynamics {
         let omega_m = m.crank.omega.abs();
         let red = Reducer::new(m, loads, spec.working)?;
         let mut sol = red.solution();
-        let cycle = ReducedCycle::new(&red, spec.points, &mut sol)?;
+        let cycle = match spec.driving {
+            DrivingMoment::Engine => ReducedCycle::for_engine(&red, spec.points, &mut sol)?,
+            _ => ReducedCycle::new(&red, spec.points, &mut sol)?,
+        };
         let md = cycle.driving_moment;
         let ratio = spec.motor().map_or(1.0, |mo| mo.ratio);
         if let Some(mo) = spec.motor() {
@@ -238,7 +241,7 @@ impl Dynamics {
         let (simulated, runup) = {
             let mut sim = Simulator::new(&red, &mut sol, inertia_total, spec.driving, md, omega_m);
             match spec.driving {
-                DrivingMoment::Constant => (sim.cycle(motion.omega[0])?, None),
+                DrivingMoment::Constant | DrivingMoment::Engine => (sim.cycle(motion.omega[0])?, None),
                 DrivingMoment::Motor(_) => {
                     let r = sim.runup(simulate::MAX_RUNUP_CYCLES)?;
                     (r.steady, Some(r))

@@ -85,7 +85,7 @@ impl Motion {
     /// (`[forces] crank_motion = "dynamics"`). Evaluated exactly at `phi`,
     /// not interpolated.
     pub fn at(&self, red: &Reducer, cyc: &ReducedCycle, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
-        let psi = (red.dir * (phi - red.phi_start)).rem_euclid(2.0 * std::f64::consts::PI);
+        let psi = (red.dir * (phi - red.phi_start)).rem_euclid(red.period);
         let p = cyc.at(red, psi, sol)?;
         let i = self.inertia_constant + p.reduced.inertia;
         let w2 = 2.0 * (self.energy_start + p.energy) / i;

@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod dynamics;
+mod engine;
 mod forces;
 mod fourbar_closed_form;
 mod hardening;
