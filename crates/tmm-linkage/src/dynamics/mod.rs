@@ -278,6 +278,13 @@ impl Dynamics {
     pub fn crank_motion_at(&self, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
         self.motion.at(&self.reducer, &self.cycle, phi, sol)
     }
+
+    /// As [`Dynamics::crank_motion_at`] at cycle angle `psi` (rad from the
+    /// start of the machine's cycle, 0…period).
+    pub fn crank_motion_at_cycle(&self, psi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
+        let phi = self.reducer.crank_angle(psi);
+        self.motion.at_cycle(&self.reducer, &self.cycle, psi, phi, sol)
+    }
 }
 
 /// The mean crank speed at which an induction motor's linear characteristic,

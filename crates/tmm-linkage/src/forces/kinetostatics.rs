@@ -349,6 +349,12 @@ impl<'m> Kinetostatics<'m> {
         self.solve(sol, out)
     }
 
+    /// Take cycle angle `psi` (rad) for the next [`Kinetostatics::solve`]
+    /// (over a 720° cycle a crank angle alone does not tell which turn it is).
+    pub fn set_cycle_angle(&mut self, psi: f64) {
+        self.next_cycle_angle = Some(psi);
+    }
+
     /// The cycle angle of a crank angle, rad in [0, period): on the first
     /// turn of a 720° cycle.
     #[inline]
