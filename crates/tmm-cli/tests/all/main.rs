@@ -5,6 +5,7 @@
 mod cam;
 mod common;
 mod dynamics;
+mod engine;
 mod forces;
 mod fuzz;
 mod gear;
