@@ -187,11 +187,13 @@ fn solve_dense(a: &mut [Vec<f64>]) -> Vec<f64> {
         if piv == 0.0 {
             return vec![f64::NAN; n];
         }
-        for r in c + 1..n {
-            let f = a[r][c] / piv;
+        let (top, rest) = a.split_at_mut(c + 1);
+        let pivot_row = &top[c];
+        for row in rest.iter_mut() {
+            let f = row[c] / piv;
             if f != 0.0 {
-                for k in c..=n {
-                    a[r][k] -= f * a[c][k];
+                for (x, p) in row[c..=n].iter_mut().zip(&pivot_row[c..=n]) {
+                    *x -= f * p;
                 }
             }
         }

@@ -205,7 +205,7 @@ pub(crate) fn read(
         spans.insert(format!("{key}.link"), c.link.span());
         spans.insert(format!("{key}.bore"), c.bore.span());
         let bore = qty(task, &format!("{field}.bore"), &c.bore, Dim::Length)?;
-        if !(bore > 0.0) {
+        if !(bore.is_finite() && bore > 0.0) {
             return Err(Error::at(
                 task,
                 c.bore.span(),
@@ -230,7 +230,7 @@ pub(crate) fn read(
                     .with_help("p_max = \"1.1 MPa\"")
                 })?;
                 let p = qty(task, &format!("{field}.p_max"), q, Dim::Stress)?;
-                if !(p > 0.0) {
+                if !(p.is_finite() && p > 0.0) {
                     return Err(Error::at(
                         task,
                         q.span(),
@@ -439,7 +439,7 @@ pub(crate) fn read(
         spans.insert(format!("{key}.link"), f.link.span());
         spans.insert(format!("{key}.force"), f.force.span());
         let force = qty(task, &format!("{field}.force"), &f.force, Dim::Force)?;
-        if !(force >= 0.0) {
+        if !(force.is_finite() && force >= 0.0) {
             return Err(Error::at(
                 task,
                 f.force.span(),
