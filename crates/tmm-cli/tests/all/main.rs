@@ -6,6 +6,7 @@ mod cam;
 mod common;
 mod cost_bounds;
 mod dynamics;
+mod engine;
 mod every_example;
 mod fg_partial;
 mod forces;

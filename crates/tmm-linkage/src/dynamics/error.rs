@@ -27,6 +27,14 @@ pub enum DynamicsError {
         /// rounding: within 1e-9 of ∫|M_c|dφ).
         work: f64,
     },
+    /// An engine whose loads do no driving work over its cycle.
+    #[error(
+        "the loads do no driving work over the machine's cycle (work of the loads {work:.6e} J per cycle): an engine needs gas forces that drive (give the cylinders' indicator diagrams in [forces])"
+    )]
+    NoDrive {
+        /// The work of all loads over one cycle, J.
+        work: f64,
+    },
     /// The loads are wrong for the mechanism.
     #[error(transparent)]
     Force(#[from] ForceError),

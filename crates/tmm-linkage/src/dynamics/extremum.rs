@@ -70,8 +70,8 @@ pub fn maximize(
             what: "an extremum over the cycle".into(),
         });
     }
-    // report the angle in 0…2π
-    out.0.phi = out.0.phi.rem_euclid(2.0 * std::f64::consts::PI);
+    // report the angle in 0…period
+    out.0.phi = out.0.phi.rem_euclid(red.period);
     Ok(out)
 }
 

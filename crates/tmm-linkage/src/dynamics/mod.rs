@@ -174,7 +174,10 @@ impl Dynamics {
         let omega_m = m.crank.omega.abs();
         let red = Reducer::new(m, loads, spec.working)?;
         let mut sol = red.solution();
-        let cycle = ReducedCycle::new(&red, spec.points, &mut sol)?;
+        let cycle = match spec.driving {
+            DrivingMoment::Engine => ReducedCycle::for_engine(&red, spec.points, &mut sol)?,
+            _ => ReducedCycle::new(&red, spec.points, &mut sol)?,
+        };
         let md = cycle.driving_moment;
         let ratio = spec.motor().map_or(1.0, |mo| mo.ratio);
         if let Some(mo) = spec.motor() {
@@ -238,7 +241,7 @@ impl Dynamics {
         let (simulated, runup) = {
             let mut sim = Simulator::new(&red, &mut sol, inertia_total, spec.driving, md, omega_m);
             match spec.driving {
-                DrivingMoment::Constant => (sim.cycle(motion.omega[0])?, None),
+                DrivingMoment::Constant | DrivingMoment::Engine => (sim.cycle(motion.omega[0])?, None),
                 DrivingMoment::Motor(_) => {
                     let r = sim.runup(simulate::MAX_RUNUP_CYCLES)?;
                     (r.steady, Some(r))
@@ -274,6 +277,13 @@ impl Dynamics {
     /// angle `phi`, signed as the mechanism's input.
     pub fn crank_motion_at(&self, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
         self.motion.at(&self.reducer, &self.cycle, phi, sol)
+    }
+
+    /// As [`Dynamics::crank_motion_at`] at cycle angle `psi` (rad from the
+    /// start of the machine's cycle, 0…period).
+    pub fn crank_motion_at_cycle(&self, psi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
+        let phi = self.reducer.crank_angle(psi);
+        self.motion.at_cycle(&self.reducer, &self.cycle, psi, phi, sol)
     }
 }
 

@@ -85,7 +85,14 @@ impl Motion {
     /// (`[forces] crank_motion = "dynamics"`). Evaluated exactly at `phi`,
     /// not interpolated.
     pub fn at(&self, red: &Reducer, cyc: &ReducedCycle, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
-        let psi = (red.dir * (phi - red.phi_start)).rem_euclid(2.0 * std::f64::consts::PI);
+        let psi = (red.dir * (phi - red.phi_start)).rem_euclid(red.period);
+        self.at_cycle(red, cyc, psi, phi, sol)
+    }
+
+    /// As [`Motion::at`] at cycle angle `psi` (rad from the start of the
+    /// cycle, 0…period; over a 720° cycle the crank angle `phi` alone does
+    /// not tell which turn it is).
+    pub fn at_cycle(&self, red: &Reducer, cyc: &ReducedCycle, psi: f64, phi: f64, sol: &mut Solution) -> Result<(f64, f64), DynamicsError> {
         let p = cyc.at(red, psi, sol)?;
         let i = self.inertia_constant + p.reduced.inertia;
         let w2 = 2.0 * (self.energy_start + p.energy) / i;

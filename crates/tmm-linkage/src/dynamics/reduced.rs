@@ -28,7 +28,7 @@ use tmm_geom::Vec2;
 
 use super::error::DynamicsError;
 use crate::forces::stroke::{Stroke, Working};
-use crate::forces::{Kinetostatics, Loads};
+use crate::forces::{ActiveSliderLoad, Kinetostatics, Loads, MachineCycle};
 use crate::{Mechanism, Solution};
 
 /// The reduced quantities at one crank angle.
@@ -65,10 +65,14 @@ pub struct Reducer {
     pub dir: f64,
     /// The crank's own moment of inertia about its pivot, J_S1 + m₁·|AS₁|², kg·m².
     pub inertia_crank: f64,
+    /// The machine cycle's length, rad: 2π, or 4π for a four-stroke engine.
+    pub period: f64,
+    /// The slider loads (gas forces, forces on a stroke, friction), prepared.
+    pub sliders: Vec<ActiveSliderLoad>,
     /// Angles of the cycle where a load law may jump or kink (the dead
-    /// positions of the output), rad from the start of the cycle.
-    breaks: [f64; 2],
-    nbreaks: usize,
+    /// positions of the output and of every loaded slider, the changes of
+    /// process), rad from the start of the cycle, increasing, in [0, period).
+    breaks: Vec<f64>,
     /// Some resistance law needs the phase of the cycle.
     needs_phase: bool,
 }
@@ -87,10 +91,29 @@ impl Reducer {
         let mut unit = m.clone();
         unit.crank.omega = dir;
         unit.crank.eps = 0.0;
-        let (phi_start, breaks, nbreaks) = match &stroke {
-            Some(s) => (s.phi_start, [0.0, s.work_span], 2),
-            None => (0.0, [0.0, 0.0], 0),
+        let period = loads.cycle.period();
+        let (phi_start, mut breaks) = match &stroke {
+            Some(s) => (s.phi_start, vec![0.0, s.work_span]),
+            None => (0.0, Vec::new()),
         };
+        let plain = loads.cycle == MachineCycle::default() && k.sliders.is_empty();
+        let phi_start = if plain { phi_start } else { k.cycle_start };
+        if !plain {
+            // every dead position (the output's, each loaded slider's) on
+            // every turn of the cycle, and the changes of process
+            let turns = loads.cycle.turns;
+            let mut dead: Vec<f64> = stroke.iter().flat_map(|s| [s.phi_start, s.phi_end]).collect();
+            dead.extend(k.sliders.iter().flat_map(|a| a.dead_positions()));
+            breaks.clear();
+            for d in dead {
+                let first = (dir * (d - phi_start)).rem_euclid(2.0 * PI);
+                breaks.extend((0..turns).map(|t| first + 2.0 * PI * t as f64));
+            }
+            breaks.extend(k.sliders.iter().flat_map(|a| a.process_bounds()));
+            breaks.iter_mut().for_each(|b| *b = b.rem_euclid(period));
+            breaks.sort_by(f64::total_cmp);
+            breaks.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+        }
         let c = m.crank.link;
         let ld = &loads.links[c];
         let r = m.mass_centers[c] - m.crank.pivot_local;
@@ -101,8 +124,9 @@ impl Reducer {
             phi_start,
             dir,
             inertia_crank: ld.inertia + ld.mass * r.hypot2(),
+            period,
+            sliders: k.sliders.clone(),
             breaks,
-            nbreaks,
             needs_phase: loads.resistance.iter().any(|r| r.law.needs_stroke()),
         })
     }
@@ -122,12 +146,14 @@ impl Reducer {
     /// cycle in the direction of rotation). Allocates nothing.
     pub fn eval(&self, psi: f64, sol: &mut Solution) -> Result<Reduced, DynamicsError> {
         self.unit.solve(self.crank_angle(psi), sol)?;
-        Ok(self.reduce(sol))
+        Ok(self.reduce(psi, sol))
     }
 
-    /// The reduced quantities of a position solved at unit crank speed.
+    /// The reduced quantities of a position solved at unit crank speed, at
+    /// cycle angle `psi` (rad; it chooses the processes of the indicator
+    /// diagrams).
     #[inline]
-    pub fn reduce(&self, sol: &Solution) -> Reduced {
+    pub fn reduce(&self, psi: f64, sol: &Solution) -> Reduced {
         let m = &self.unit;
         let loads = &self.loads;
         let c = m.crank.link;
@@ -158,6 +184,13 @@ impl Reducer {
                 power += f.dot(st.kin_at(p).0) + cpl * st.omega;
             }
         }
+        if !self.sliders.is_empty() {
+            let psi = psi.rem_euclid(self.period);
+            for a in &self.sliders {
+                let (f, p) = a.force(sol, psi);
+                power += f.dot(sol.links[a.load.link].kin_at(p).0);
+            }
+        }
         // the crank turns at unit speed: the power is the moment
         Reduced {
             inertia,
@@ -172,23 +205,18 @@ impl Reducer {
     pub fn work(&self, a: f64, b: f64, sol: &mut Solution) -> Result<f64, DynamicsError> {
         let mut lo = a;
         let mut total = 0.0;
-        // cut points strictly inside (a, b), in increasing order, taken modulo the cycle
-        let mut cuts = [0.0f64; 6];
-        let mut nc = 0;
+        // cut points strictly inside (a, b), in increasing order, taken
+        // modulo the cycle: the breaks are sorted, and so is each shifted copy
         for k in -1..=1 {
-            for &br in &self.breaks[..self.nbreaks] {
-                let x = br + 2.0 * PI * k as f64;
-                if x > a + 1e-12 && x < b - 1e-12 && nc < cuts.len() {
-                    cuts[nc] = x;
-                    nc += 1;
+            for &br in &self.breaks {
+                let x = br + self.period * k as f64;
+                if x > a + 1e-12 && x < b - 1e-12 {
+                    total += self.gauss(lo, x, sol)?;
+                    lo = x;
                 }
             }
         }
-        cuts[..nc].sort_by(f64::total_cmp);
-        for &x in cuts[..nc].iter().chain(std::iter::once(&b)) {
-            total += self.gauss(lo, x, sol)?;
-            lo = x;
-        }
+        total += self.gauss(lo, b, sol)?;
         Ok(total)
     }
 

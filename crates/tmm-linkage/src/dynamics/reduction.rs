@@ -12,8 +12,6 @@
 //! seeds (docs/dynamics.md). Between grid nodes the model is evaluated
 //! exactly ([`ReducedCycle::at`]): the node's work plus the integral from it.
 
-use std::f64::consts::PI;
-
 use super::error::DynamicsError;
 use super::reduced::{Reduced, Reducer};
 use crate::Solution;
@@ -48,16 +46,31 @@ pub struct ReducedCycle {
     pub work_driving: Vec<f64>,
     /// ΔT(φ) = A_d + A_c, J (zero at both ends of the cycle).
     pub energy: Vec<f64>,
-    /// The constant driving moment M_d = −A_c(2π)/(2π), N·m.
+    /// The constant moment M_d = −A_c(period)/period, N·m: the driving
+    /// moment of a working machine (> 0), the resisting one of an engine (< 0).
     pub driving_moment: f64,
     /// Grid step, rad.
     pub step: f64,
 }
 
 impl ReducedCycle {
-    /// Evaluate the reduced model at `n + 1` nodes and integrate the work.
+    /// Evaluate the reduced model at `n + 1` nodes and integrate the work;
+    /// the loads must resist on the whole (a working machine), and the
+    /// constant moment is the driving one.
     pub fn new(red: &Reducer, n: usize, sol: &mut Solution) -> Result<Self, DynamicsError> {
-        let h = 2.0 * PI / n as f64;
+        Self::build(red, n, sol, false)
+    }
+
+    /// As [`ReducedCycle::new`] for an engine: the loads (gas forces) drive
+    /// on the whole, and the constant moment M = −A(cycle)/period is the
+    /// resistance of the driven machine (negative; Chernaya & Timofeev
+    /// 2019, П2: M_прC = −(1/4π)∫₀^{4π} M_прДВ dφ).
+    pub fn for_engine(red: &Reducer, n: usize, sol: &mut Solution) -> Result<Self, DynamicsError> {
+        Self::build(red, n, sol, true)
+    }
+
+    fn build(red: &Reducer, n: usize, sol: &mut Solution, engine: bool) -> Result<Self, DynamicsError> {
+        let h = red.period / n as f64;
         let mut c = ReducedCycle {
             phi: Vec::with_capacity(n + 1),
             inertia: Vec::with_capacity(n + 1),
@@ -71,7 +84,7 @@ impl ReducedCycle {
         };
         // one sweep solves every node without trigonometry per position
         red.unit.sweep(red.phi_start, red.dir * h, n + 1, sol, |k, s| {
-            let r = red.reduce(s);
+            let r = red.reduce(h * k as f64, s);
             c.phi.push(h * k as f64);
             c.inertia.push(r.inertia);
             c.inertia_derivative.push(r.inertia_derivative);
@@ -100,10 +113,14 @@ impl ReducedCycle {
         // work up to rounding: a cycle work within 1e-9 of the work of |M_c|
         // is no resistance
         let gross = c.moment.iter().map(|m| m.abs()).sum::<f64>() * h;
-        if a >= -1e-9 * gross {
+        if engine {
+            if a <= 1e-9 * gross {
+                return Err(DynamicsError::NoDrive { work: a });
+            }
+        } else if a >= -1e-9 * gross {
             return Err(DynamicsError::NoResistance { work: a });
         }
-        let md = -a / (2.0 * PI);
+        let md = -a / red.period;
         c.driving_moment = md;
         for k in 0..=n {
             let ad = md * c.phi[k];
@@ -127,8 +144,7 @@ impl ReducedCycle {
     /// The model at any cycle angle (taken modulo 2π): I_II, I_II′ and M_c
     /// solved exactly there, ΔT from the nearest node below plus the integral.
     pub fn at(&self, red: &Reducer, phi: f64, sol: &mut Solution) -> Result<EnergyPoint, DynamicsError> {
-        let two_pi = 2.0 * PI;
-        let p = phi.rem_euclid(two_pi);
+        let p = phi.rem_euclid(red.period);
         let n = self.len();
         let k = ((p / self.step) as usize).min(n - 1);
         let w = if p > self.phi[k] { red.work(self.phi[k], p, sol)? } else { 0.0 };

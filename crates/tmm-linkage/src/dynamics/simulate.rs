@@ -18,8 +18,6 @@
 //! zero whatever the speed, so the machine neither gains nor loses speed on
 //! average (the steady cycle is neutral, every T₀ is one).
 
-use std::f64::consts::PI;
-
 use super::error::DynamicsError;
 use super::ode::{Dopri, State};
 use super::reduced::Reducer;
@@ -124,10 +122,10 @@ impl<'a> Simulator<'a> {
         let (red, inertia, driving, md) = (self.red, self.inertia, self.driving, self.md);
         let sol = &mut *self.sol;
         let mut rhs = |_t: f64, y: &State| -> Result<State, DynamicsError> {
-            let r = red.eval(y[0].rem_euclid(2.0 * PI), sol)?;
+            let r = red.eval(y[0].rem_euclid(red.period), sol)?;
             let w = y[1];
             let d = match driving {
-                DrivingMoment::Constant => md,
+                DrivingMoment::Constant | DrivingMoment::Engine => md,
                 DrivingMoment::Motor(m) => m.crank_moment(w),
             };
             let i = inertia + r.inertia;
@@ -135,7 +133,7 @@ impl<'a> Simulator<'a> {
         };
         let y0 = [0.0, omega0];
         let f0 = rhs(0.0, &y0)?;
-        let period = 2.0 * PI / self.omega_ref;
+        let period = self.red.period / self.omega_ref;
         let h0 = if omega0 > 0.0 { period / 200.0 } else { period * 1e-3 };
         let mut d = Dopri::new(0.0, y0, f0, h0, period / 16.0, rtol, [rtol, rtol * self.omega_ref]);
         if omega0 <= 0.0 && f0[1] <= 0.0 {
@@ -161,14 +159,14 @@ impl<'a> Simulator<'a> {
             if d.y[1] <= 0.0 || d.accepted > 100_000 + 5_000 * (k + 1) {
                 return Err(DynamicsError::Stall {
                     time: d.t,
-                    phi_deg: d.y[0].rem_euclid(2.0 * PI).to_degrees(),
+                    phi_deg: d.y[0].rem_euclid(self.red.period).to_degrees(),
                 });
             }
             if let Some((t, w)) = trace.as_mut() {
                 t.push(d.t);
                 w.push(d.y[1]);
             }
-            let end = 2.0 * PI * (k + 1) as f64;
+            let end = self.red.period * (k + 1) as f64;
             // the cycle's end: the interpolant's estimate, then Newton steps
             // on exact Dormand–Prince steps from the step's start
             let mut tc = f64::INFINITY;
@@ -293,7 +291,7 @@ impl<'a> Simulator<'a> {
         };
         if let DrivingMoment::Motor(m) = self.driving {
             let k = m.ratio * m.ratio * m.nominal_torque / (m.synchronous_speed - m.nominal_speed);
-            let cycles = 1e7f64.ln() * (self.inertia / k) * self.omega_ref / (2.0 * PI);
+            let cycles = 1e7f64.ln() * (self.inertia / k) * self.omega_ref / self.red.period;
             if cycles.is_finite() && cycles > max_cycles as f64 {
                 return Err(too_long(Some(cycles)));
             }

@@ -64,6 +64,10 @@ pub enum DrivingMoment {
     /// with the constant moment it delivers on average; the motor drives the
     /// time integration: the run-up and the simulated steady cycle).
     Motor(Motor),
+    /// An engine: the loads (gas forces) drive, and the driven machine's
+    /// resistance is a constant moment from zero total work over the
+    /// machine's cycle (Chernaya & Timofeev 2019, П2).
+    Engine,
 }
 
 /// Which shaft carries the flywheel.
@@ -187,7 +191,7 @@ impl DynamicsSpec {
     pub fn motor(&self) -> Option<&Motor> {
         match &self.driving {
             DrivingMoment::Motor(m) => Some(m),
-            DrivingMoment::Constant => None,
+            DrivingMoment::Constant | DrivingMoment::Engine => None,
         }
     }
 

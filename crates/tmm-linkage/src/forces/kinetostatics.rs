@@ -19,6 +19,7 @@ use super::error::ForceError;
 use super::group::{GroupWork, PairForce, about_origin, is_ordered_dyad, solve_dyad, solve_group};
 use super::inertia::inertia_load;
 use super::loads::Loads;
+use super::slider_load::ActiveSliderLoad;
 use super::stroke::{Phase, Stroke, Working};
 use crate::mechanism::Pair;
 use crate::{Mechanism, Solution};
@@ -126,6 +127,11 @@ pub struct ForceSolution {
     pub resistance: Vec<f64>,
     /// Phase of the cycle (when a resistance law needs the stroke).
     pub phase: Option<Phase>,
+    /// Angle of the machine's cycle, rad from its start (see
+    /// [`crate::forces::MachineCycle`]).
+    pub cycle_angle: f64,
+    /// The force of each slider load ([`Loads::sliders`]) at this position, N.
+    pub slider_forces: Vec<Vec2>,
     /// Torque the drive applies to the input link, N·m, counter-clockwise positive.
     pub balancing_moment: f64,
     /// The equivalent force at the crank pin perpendicular to the crank,
@@ -183,6 +189,15 @@ pub struct Kinetostatics<'m> {
     work: GroupWork,
     /// Solve every group by the general Jᵀ·λ system (for cross-checks).
     pub general: bool,
+    /// The slider loads, prepared.
+    pub sliders: Vec<ActiveSliderLoad>,
+    /// Absolute crank angle of the start of the machine's cycle, rad.
+    pub cycle_start: f64,
+    /// The machine cycle's length, rad (2π or 4π).
+    pub period: f64,
+    /// The cycle angle of the next [`Kinetostatics::solve`], when set by
+    /// [`Kinetostatics::solve_at_cycle`].
+    next_cycle_angle: Option<f64>,
 }
 
 impl<'m> Kinetostatics<'m> {
@@ -255,6 +270,21 @@ impl<'m> Kinetostatics<'m> {
             })
             .collect();
         let max_links = m.groups.iter().map(|g| g.info.link_ids.len()).max().unwrap_or(1);
+        let period = loads.cycle.period();
+        let sliders = loads
+            .sliders
+            .iter()
+            .enumerate()
+            .map(|(k, s)| s.prepare(m, period, &format!("sliders[{k}]")))
+            .collect::<Result<Vec<_>, _>>()?;
+        let cycle_start = match loads.cycle.start {
+            Some(s) => s,
+            None => match &stroke {
+                Some(s) => s.phi_start,
+                None if loads.cycle.turns > 1 || !sliders.is_empty() => Stroke::find(m, m.output, working).map_or(0.0, |s| s.phi_start),
+                None => 0.0,
+            },
+        };
         Ok(Kinetostatics {
             m,
             stroke,
@@ -262,7 +292,7 @@ impl<'m> Kinetostatics<'m> {
             solver,
             plan,
             resisted: (0..m.link_names.len())
-                .map(|l| loads.resistance.iter().any(|r| r.link == l))
+                .map(|l| loads.resistance.iter().any(|r| r.link == l) || loads.sliders.iter().any(|r| r.link == l))
                 .collect(),
             pivot_pair,
             pivot_plan: PairPlan::new(m, pivot_pair, c, 0, false, false),
@@ -270,6 +300,10 @@ impl<'m> Kinetostatics<'m> {
             work: GroupWork::new(max_links),
             loads,
             general: false,
+            sliders,
+            cycle_start,
+            period,
+            next_cycle_angle: None,
         })
     }
 
@@ -284,6 +318,8 @@ impl<'m> Kinetostatics<'m> {
             reactions: vec![Reaction::default(); self.m.pairs.len()],
             resistance: vec![0.0; self.loads.resistance.len()],
             phase: None,
+            cycle_angle: 0.0,
+            slider_forces: vec![Vec2::ZERO; self.sliders.len()],
             balancing_moment: 0.0,
             balancing_force: 0.0,
             balancing_force_vec: Vec2::ZERO,
@@ -302,11 +338,41 @@ impl<'m> Kinetostatics<'m> {
         self.solve(sol, out)
     }
 
+    /// Solve at cycle angle `psi` (rad from the start of the machine's
+    /// cycle in the direction of rotation, 0…period): the crank angle follows,
+    /// and the processes of the indicator diagrams are those of `psi` (over a
+    /// 720° cycle a crank angle alone does not tell which turn it is).
+    pub fn solve_at_cycle(&mut self, psi: f64, sol: &mut Solution, out: &mut ForceSolution) -> Result<(), ForceError> {
+        let phi = self.cycle_start + self.m.crank.omega.signum() * psi;
+        self.m.solve(phi, sol)?;
+        self.next_cycle_angle = Some(psi);
+        self.solve(sol, out)
+    }
+
+    /// Take cycle angle `psi` (rad) for the next [`Kinetostatics::solve`]
+    /// (over a 720° cycle a crank angle alone does not tell which turn it is).
+    pub fn set_cycle_angle(&mut self, psi: f64) {
+        self.next_cycle_angle = Some(psi);
+    }
+
+    /// The cycle angle of a crank angle, rad in [0, period): on the first
+    /// turn of a 720° cycle.
+    #[inline]
+    pub fn cycle_angle_of(&self, phi: f64) -> f64 {
+        let dir = if self.m.crank.omega < 0.0 { -1.0 } else { 1.0 };
+        (dir * (phi - self.cycle_start)).rem_euclid(2.0 * std::f64::consts::PI)
+    }
+
     /// The forces of a solved position. Allocates nothing.
     pub fn solve(&mut self, sol: &Solution, out: &mut ForceSolution) -> Result<(), ForceError> {
         let m = self.m;
         let phi = sol.phi;
         out.phi = phi;
+        let psi = match self.next_cycle_angle.take() {
+            Some(p) => p,
+            None => self.cycle_angle_of(phi),
+        };
+        out.cycle_angle = psi;
         out.phase = self.stroke.as_ref().map(|s| s.phase(sol));
         let phase = out.phase.unwrap_or_default();
         for (k, r) in self.loads.resistance.iter().enumerate() {
@@ -348,6 +414,15 @@ impl<'m> Kinetostatics<'m> {
                     fe += f;
                     me += cross(p - s, f) + c;
                     power += f.dot(st.kin_at(p).0) + c * st.omega;
+                }
+            }
+            for (k, a) in self.sliders.iter().enumerate() {
+                if a.load.link == l {
+                    let (f, p) = a.force(sol, psi);
+                    out.slider_forces[k] = f;
+                    fe += f;
+                    me += cross(p - s, f);
+                    power += f.dot(st.kin_at(p).0);
                 }
             }
             let f = fi + w + fe;

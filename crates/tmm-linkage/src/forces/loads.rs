@@ -11,6 +11,7 @@ use tmm_geom::Vec2;
 
 use super::error::ForceError;
 use super::resistance::Resistance;
+use super::slider_load::SliderLoad;
 use crate::Mechanism;
 
 /// A force at a point of a link, fixed in direction in the global frame.
@@ -46,6 +47,42 @@ pub struct Loads {
     pub gravity: Vec2,
     /// The useful resistance (none, one, or several).
     pub resistance: Vec<Resistance>,
+    /// Loads on sliders: gas forces by indicator diagram, forces by travel
+    /// on one stroke, friction.
+    pub sliders: Vec<SliderLoad>,
+    /// The machine's cycle the loads repeat over.
+    pub cycle: MachineCycle,
+}
+
+/// The machine's cycle (цикл машины): one turn of the crank, or two for a
+/// four-stroke engine (Chernaya & Timofeev 2019, П2: "one working cycle =
+/// two revolutions"), and where it starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MachineCycle {
+    /// Turns of the crank per cycle: 1 or 2.
+    pub turns: u32,
+    /// Absolute crank angle where the cycle starts, rad; `None`: at the
+    /// start of the working stroke of the output (crank angle 0 when it has
+    /// none).
+    pub start: Option<f64>,
+}
+
+impl Default for MachineCycle {
+    fn default() -> Self {
+        MachineCycle { turns: 1, start: None }
+    }
+}
+
+impl MachineCycle {
+    /// The cycle's length in crank angle, rad: 2π·turns.
+    ///
+    /// ```
+    /// let c = tmm_linkage::forces::MachineCycle { turns: 2, start: None };
+    /// assert!((c.period() - 4.0 * std::f64::consts::PI).abs() < 1e-15);
+    /// ```
+    pub fn period(&self) -> f64 {
+        2.0 * std::f64::consts::PI * self.turns as f64
+    }
 }
 
 impl Loads {
@@ -55,6 +92,8 @@ impl Loads {
             links: vec![LinkLoad::default(); m.link_names.len()],
             gravity: Vec2::ZERO,
             resistance: Vec::new(),
+            sliders: Vec::new(),
+            cycle: MachineCycle::default(),
         }
     }
 
@@ -100,6 +139,28 @@ impl Loads {
                 ));
             }
             r.law.check(&format!("resistance[{k}]"))?;
+        }
+        if !(self.cycle.turns == 1 || self.cycle.turns == 2) {
+            return Err(ForceError::load(
+                "cycle.turns",
+                format!(
+                    "the machine's cycle is 1 turn of the crank (360°) or 2 (720°, a four-stroke engine), not {}",
+                    self.cycle.turns
+                ),
+            ));
+        }
+        if let Some(s) = self.cycle.start {
+            if !s.is_finite() {
+                return Err(ForceError::load("cycle.start", "must be finite"));
+            }
+        }
+        for (k, s) in self.sliders.iter().enumerate() {
+            if s.link == 0 || s.link >= m.link_names.len() {
+                return Err(ForceError::load(
+                    format!("sliders[{k}].link"),
+                    "a slider load must act on a moving link",
+                ));
+            }
         }
         Ok(())
     }

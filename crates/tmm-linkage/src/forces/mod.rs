@@ -14,6 +14,9 @@
 //! Module map, one concept per file:
 //! - [`loads`]: what the user gives (masses, inertia, gravity, forces, moments);
 //! - [`resistance`]: the useful resistance and its law over the cycle;
+//! - [`slider_load`]: gas forces, forces on one stroke and friction on sliders;
+//! - [`indicator`]: a cylinder's indicator diagram, a table per process;
+//! - [`spline`]: tables interpolated linearly or by a cubic spline;
 //! - [`stroke`]: dead positions and travel of the output link (for the law);
 //! - [`inertia`]: inertia force −m·a_S and torque −J_S·ε;
 //! - [`group`]: the reactions of one Assur group from its constraint Jacobian;
@@ -57,20 +60,26 @@ pub mod beam;
 pub mod dyads;
 pub mod error;
 pub mod group;
+pub mod indicator;
 pub mod inertia;
 pub mod kinetostatics;
 pub mod loads;
 pub mod polygon;
 pub mod resistance;
 pub mod section;
+pub mod slider_load;
+pub mod spline;
 pub mod stroke;
 pub mod zhukovsky;
 
 pub use beam::{Beam, BeamSample};
 pub use error::ForceError;
+pub use indicator::{Indicator, Process, TravelScale};
 pub use kinetostatics::{ForceSolution, Kinetostatics, LinkForces, Reaction};
-pub use loads::{LinkLoad, Loads, PointForce};
+pub use loads::{LinkLoad, Loads, MachineCycle, PointForce};
 pub use polygon::{ForcePolygon, PolygonForce, PolygonForceKind};
 pub use resistance::{Action, Law, Resistance};
 pub use section::{IBeam, SectionSizes, size_sections};
+pub use slider_load::{ActiveSliderLoad, SliderLoad, SliderLoadKind};
+pub use spline::{Curve, Interpolation};
 pub use stroke::Stroke;

@@ -6,6 +6,7 @@
 mod common;
 mod cost_bounds;
 mod dynamics;
+mod engine;
 mod forces;
 mod fourbar_closed_form;
 mod hardening;

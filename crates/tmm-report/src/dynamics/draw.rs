@@ -95,7 +95,8 @@ impl Axis {
 /// What the horizontal axis is.
 #[doc(hidden)]
 pub enum XKind {
-    /// The cycle angle φ over 0…360° at μ_φ, marked with the positions 0…12.
+    /// The cycle angle φ over the machine's cycle (0…360°, or 0…720° for a
+    /// four-stroke engine; the x range's end) at μ_φ, marked with the positions 0…12.
     Phi(Vec<f64>),
     /// Another quantity: its symbol and unit.
     Other(String, String),
@@ -151,11 +152,13 @@ impl Chart {
         let y = Axis::fit(ya, yb, h - TOP - BOTTOM);
         let x = match &xk {
             XKind::Phi(_) => {
-                let mu = round_mu(360.0 / (w - LEFT - RIGHT));
+                // the machine's cycle: 360°, or 720° for a four-stroke engine
+                let span = xr.1;
+                let mu = round_mu(span / (w - LEFT - RIGHT));
                 Axis {
                     lo: 0.0,
                     mu,
-                    len: 360.0 / mu,
+                    len: span / mu,
                 }
             }
             XKind::Other(..) => Axis::fit(xr.0, xr.1, w - LEFT - RIGHT),
@@ -203,10 +206,10 @@ impl Chart {
         }
         match &xk {
             XKind::Phi(marks) => {
-                for (i, phi) in marks.iter().chain(std::iter::once(&360.0)).enumerate() {
+                for (i, phi) in marks.iter().chain(std::iter::once(&xr.1)).enumerate() {
                     let (px, _) = ch.map(*phi, 0.0);
                     grid.push_str(&format!("M{px:.3},{fy:.3}V{y1:.3}"));
-                    let n = if *phi >= 360.0 - 1e-9 { marks.len() } else { i };
+                    let n = if *phi >= xr.1 - 1e-9 { marks.len() } else { i };
                     ch.c.rich_paper((px, y1 + 4.2), &n.to_string(), H_SMALL, Anchor::Middle, "#000");
                 }
                 ch.c.rich_paper((x1 + 3.0, y1 + 4.2), "φ", H_LABEL, Anchor::Start, "#000");
@@ -392,7 +395,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     let xy = |v: &[f64]| -> Vec<(f64, f64)> { deg.iter().copied().zip(v.iter().copied()).collect() };
     let marks: Vec<f64> = d.positions.iter().map(|p| p.phi.to_degrees()).collect();
     let phi = || XKind::Phi(marks.clone());
-    let xr = (0.0, 360.0);
+    let xr = (0.0, d.reducer.period.to_degrees());
     let (u_nm, u_j, u_i) = (wd("unit_nm"), wd("unit_j"), wd("unit_kgm2"));
     let (u_w, u_e) = (wd("unit_radps"), wd("unit_radps2"));
     let n3 = |v: f64| num(v, 3, lang);
@@ -409,7 +412,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
         true,
     );
     ch.curve(&xy(&c.moment), RED, &mc, None);
-    ch.curve(&[(0.0, md), (360.0, md)], BLUE, &format!("{mdn} = {} {u_nm}", n3(md)), None);
+    ch.curve(&[(0.0, md), (xr.1, md)], BLUE, &format!("{mdn} = {} {u_nm}", n3(md)), None);
     docs.add_text(format!("{prefix}moments.svg"), ch.finish())?;
 
     // the work and the change of kinetic energy

@@ -8,7 +8,7 @@
 //! ```toml
 //! [dynamics]
 //! delta = 0.02                    # 0 < δ < 1
-//! driving = "constant"            # or "motor" (needs [dynamics.motor])
+//! driving = "constant"            # or "motor" (needs [dynamics.motor]), or "engine"
 //! [dynamics.motor]
 //! synchronous_speed = "1500 rpm"
 //! nominal_speed = "1420 rpm"
@@ -114,7 +114,7 @@ pub fn help_for(field: &str) -> &'static str {
         "dynamics.delta" => "delta = 0.02 (0 < δ < 1; typically 0.01…0.1: 0.02–0.05 for presses and pumps, 0.01–0.02 for machine tools)",
         "dynamics.points" => "points = 3600 (intervals of the crank angle over the cycle, at least 360, a multiple of 12)",
         "dynamics.driving" => {
-            "driving = \"constant\" (the course's constant driving moment, the default) or \"motor\" (with [dynamics.motor])"
+            "driving = \"constant\" (the course's constant driving moment, the default), \"motor\" (with [dynamics.motor]) or \"engine\" (the gas forces of [forces] drive; the resistance is a constant moment)"
         }
         "dynamics.motor"
         | "dynamics.motor.synchronous_speed"
@@ -268,6 +268,19 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
                 )
                 .with_help(help_for("dynamics.driving")));
             }
+        }
+        Some(("engine", sp)) => {
+            spans.insert("dynamics.driving".to_string(), sp.clone());
+            if let Some(m) = &sec.motor {
+                return Err(Error::at(
+                    task,
+                    m.span(),
+                    "dynamics.motor",
+                    "an engine drives itself (its gas forces are the driving loads); remove [dynamics.motor] or say driving = \"motor\"",
+                )
+                .with_help(help_for("dynamics.driving")));
+            }
+            spec.driving = DrivingMoment::Engine;
         }
         Some((other, sp)) => {
             return Err(Error::at(task, sp, "dynamics.driving", format!("unknown driving moment `{other}`"))

@@ -24,6 +24,12 @@ fn sci(x: f64) -> String {
     }
 }
 
+/// An engine, or a cycle longer than one turn: the cycle's start and
+/// length are named.
+fn engine_or_long(d: &Dynamics) -> bool {
+    d.spec.driving == DrivingMoment::Engine || d.reducer.period > 1.5 * std::f64::consts::TAU
+}
+
 /// The whole report.
 pub fn report(l: &Loaded, d: &Dynamics) -> String {
     let mut o = String::new();
@@ -38,10 +44,12 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
         d.omega_nominal * 30.0 / std::f64::consts::PI,
         if d.reducer.dir > 0.0 { "counter-clockwise" } else { "clockwise" },
         d.reducer.phi_start.to_degrees(),
-        if d.reducer.stroke.is_some() {
-            " (the start of the working stroke)"
+        if engine_or_long(d) {
+            format!(" (the start of the machine's cycle of {:.0}°)", d.reducer.period.to_degrees())
+        } else if d.reducer.stroke.is_some() {
+            " (the start of the working stroke)".to_string()
         } else {
-            ""
+            String::new()
         }
     );
     let _ = writeln!(
@@ -72,12 +80,30 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
         );
     }
     let _ = writeln!(o, "\nSummary");
-    let _ = writeln!(
-        o,
-        "  work of the loads over the cycle A_c(2π) = {:.6} J; driving moment M_d = {:.6} N·m (constant, zero work over the steady cycle)",
-        c.work_loads[c.len()],
-        c.driving_moment
-    );
+    if sp.driving == DrivingMoment::Engine {
+        let _ = writeln!(
+            o,
+            "  an engine: the loads (gas forces, weights) drive, M_c above is their reduced moment; work of the loads over the cycle A_c({:.0}°) = {:.6} J; resistance moment of the driven machine M_d = {:.6} N·m (constant, zero work over the cycle)",
+            d.reducer.period.to_degrees(),
+            c.work_loads[c.len()],
+            c.driving_moment
+        );
+    } else if engine_or_long(d) {
+        let _ = writeln!(
+            o,
+            "  work of the loads over the cycle A_c({:.0}°) = {:.6} J; driving moment M_d = {:.6} N·m (constant, zero work over the steady cycle)",
+            d.reducer.period.to_degrees(),
+            c.work_loads[c.len()],
+            c.driving_moment
+        );
+    } else {
+        let _ = writeln!(
+            o,
+            "  work of the loads over the cycle A_c(2π) = {:.6} J; driving moment M_d = {:.6} N·m (constant, zero work over the steady cycle)",
+            c.work_loads[c.len()],
+            c.driving_moment
+        );
+    }
     let _ = writeln!(
         o,
         "  Merkalov: T_I = ΔT − I_II·ω_m²/2, max {:.4} J at φ = {:.2}°, min {:.4} J at φ = {:.2}°, ΔT_I = {:.4} J",
@@ -195,6 +221,12 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 r.cycles,
                 r.steady.omega_mean,
                 r.steady.delta
+            );
+        }
+        (_, DrivingMoment::Engine) => {
+            let _ = writeln!(
+                o,
+                "  run-up: none — with a constant resistance the engine's loads and the resistance do zero work over every cycle whatever the speed, so every speed is a steady one"
             );
         }
         _ => {

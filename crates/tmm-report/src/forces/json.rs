@@ -52,7 +52,7 @@ fn position(l: &Loaded, r: &Row) -> Value {
             })
         })
         .collect();
-    json!({
+    let mut v = json!({
         "label": r.label,
         "phi": num(r.phi),
         "omega1": num(r.sol.links[m.crank.link].omega),
@@ -67,7 +67,19 @@ fn position(l: &Loaded, r: &Row) -> Value {
         "balancing_force_vector": [num(f.balancing_force_vec.x), num(f.balancing_force_vec.y)],
         "zhukovsky_moment": num(f.zhukovsky_moment),
         "relative_difference": num(f.relative_difference()),
-    })
+    });
+    // the loads on sliders (gas forces, forces on a stroke, friction), N,
+    // and the angle of the machine's cycle, when there are any
+    if !f.slider_forces.is_empty() {
+        if let Some(o) = v.as_object_mut() {
+            o.insert("cycle_angle".into(), json!(num(f.cycle_angle)));
+            o.insert(
+                "slider_forces".into(),
+                json!(f.slider_forces.iter().map(|p| [num(p.x), num(p.y)]).collect::<Vec<_>>()),
+            );
+        }
+    }
+    v
 }
 
 /// The whole document.

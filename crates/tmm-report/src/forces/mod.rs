@@ -8,6 +8,7 @@
 
 mod draw;
 mod json;
+mod slider_task;
 pub mod task;
 mod text;
 
@@ -33,8 +34,11 @@ pub struct Row {
     pub label: String,
     /// Crank angle φ (absolute), rad.
     pub phi: f64,
-    /// Crank travel from the start of the working stroke, rad.
+    /// Crank travel from the start of the working stroke, rad; over a
+    /// cycle of several turns, the angle of the machine's cycle.
     pub psi: f64,
+    /// `psi` is the angle of the machine's cycle (a cycle of several turns).
+    pub machine_cycle: bool,
     /// Kinematics.
     pub sol: Solution,
     /// Forces.
@@ -80,15 +84,26 @@ pub fn locate(src: &TaskSource, l: &Loaded, t: &ForcesTask, e: &ForceError) -> E
     match e {
         ForceError::Kinematics(k) => linkage::locate(src, &l.task, k),
         ForceError::Load { field, message } => {
-            let key = field.split('.').take(2).collect::<Vec<_>>().join(".");
-            let key0 = field.split('.').next().unwrap_or("");
-            let span = t
-                .spans
-                .get(&key)
-                .or_else(|| t.spans.get(key0))
-                .cloned()
-                .unwrap_or(t.section.clone());
-            Error::at(src, span, &format!("forces.{field}"), message)
+            // the longest named prefix of the field
+            let mut f = field.as_str();
+            let span = loop {
+                if let Some(s) = t.spans.get(f) {
+                    break s.clone();
+                }
+                match f.rsplit_once('.') {
+                    Some((head, _)) => f = head,
+                    None => break t.section.clone(),
+                }
+            };
+            // a slider load is named as the task names it
+            let shown = match field.strip_prefix("sliders[").and_then(|r| r.split_once(']')) {
+                Some((i, rest)) => match i.parse::<usize>().ok().and_then(|i| t.slider_fields.get(i)) {
+                    Some(name) => format!("{name}{rest}"),
+                    None => field.clone(),
+                },
+                None => field.clone(),
+            };
+            Error::at(src, span, &format!("forces.{shown}"), message)
         }
         other => Error::at(src, t.section.clone(), "forces", other.to_string()),
     }
@@ -159,38 +174,69 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
     let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
     let mut sol = m.solution();
     let mut fs = k.result();
-    let mut solve = |label: String, phi: f64, k: &mut Kinetostatics| -> Result<Row, Error> {
+    // a cycle of several turns (a four-stroke engine) is walked by the
+    // machine's cycle angle: the crank angle alone does not tell the turn
+    let turns = t.loads.cycle.turns.max(1) as usize;
+    let mut solve = |label: String, phi: f64, cyc: Option<f64>, k: &mut Kinetostatics| -> Result<Row, Error> {
         match (&dynamics, sd.as_mut()) {
             (Some((dt, d)), Some(sd)) => {
                 let dloc = |e: DynamicsError| crate::dynamics::locate(src, l, t, dt, &e);
-                let (w, e) = d.crank_motion_at(phi, sd).map_err(dloc)?;
+                let (w, e) = match cyc {
+                    Some(psi) => d.crank_motion_at_cycle(psi, sd).map_err(dloc)?,
+                    None => d.crank_motion_at(phi, sd).map_err(dloc)?,
+                };
                 let mt = with_crank_motion(m, w, e).map_err(dloc)?;
                 mt.solve(phi, &mut sol).map_err(|e| linkage::locate(src, &l.task, &e))?;
+                if let Some(psi) = cyc {
+                    k.set_cycle_angle(psi);
+                }
                 k.solve(&sol, &mut fs).map_err(loc)?;
             }
-            _ => k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?,
+            _ => {
+                if let Some(psi) = cyc {
+                    k.set_cycle_angle(psi);
+                }
+                k.solve_at(phi, &mut sol, &mut fs).map_err(loc)?
+            }
         }
         Ok(Row {
             label,
-            phi,
-            psi: psi_of(phi),
+            phi: if cyc.is_some() { tmm_geom::angle::wrap_2pi(phi) } else { phi },
+            psi: cyc.unwrap_or_else(|| psi_of(phi)),
+            machine_cycle: cyc.is_some(),
             sol: sol.clone(),
             fs: fs.clone(),
         })
     };
-    let positions: Vec<Position> = c.positions(m, l.task.positions);
-    let mut rows = Vec::with_capacity(positions.len());
-    for p in positions {
-        rows.push(solve(p.label, p.phi, &mut k)?);
+    let mut rows = Vec::new();
+    if turns > 1 {
+        let n = l.task.positions * turns;
+        let period = TAU * turns as f64;
+        for i in 0..n {
+            let psi = period * i as f64 / n as f64;
+            rows.push(solve(i.to_string(), k.cycle_start + sg * psi, Some(psi), &mut k)?);
+        }
+    } else {
+        let positions: Vec<Position> = c.positions(m, l.task.positions);
+        for p in positions {
+            rows.push(solve(p.label, p.phi, None, &mut k)?);
+        }
     }
     let phi_d = at.or(t.at).or(l.task.at).unwrap_or_else(|| rows.get(1).map_or(c.start, |r| r.phi));
-    let detail = solve(if at.is_some() { "at".into() } else { "detail".into() }, phi_d, &mut k)?;
-    let mut curve = Vec::with_capacity(361);
-    for i in 0..=360 {
+    let cd = if turns > 1 { Some(k.cycle_angle_of(phi_d)) } else { None };
+    let detail = solve(if at.is_some() { "at".into() } else { "detail".into() }, phi_d, cd, &mut k)?;
+    let mut curve = Vec::with_capacity(360 * turns + 1);
+    for i in 0..=360 * turns {
         let psi = TAU * i as f64 / 360.0;
-        let phi = c.start + sg * psi;
-        let r = solve(String::new(), phi, &mut k)?;
-        curve.push([psi, tmm_geom::angle::wrap_2pi(phi), r.fs.balancing_moment, r.fs.zhukovsky_moment]);
+        if turns > 1 {
+            let phi = k.cycle_start + sg * psi;
+            let r = solve(String::new(), phi, Some(psi), &mut k)?;
+            curve.push([psi, tmm_geom::angle::wrap_2pi(phi), r.fs.balancing_moment, r.fs.zhukovsky_moment]);
+        } else {
+            let phi = c.start + sg * psi;
+            let r = solve(String::new(), phi, None, &mut k)?;
+            curve.push([psi, tmm_geom::angle::wrap_2pi(phi), r.fs.balancing_moment, r.fs.zhukovsky_moment]);
+        }
     }
     let lever = lever_forces(m, &k.loads, &detail.sol, &detail.fs);
     let beam = match &t.strength {

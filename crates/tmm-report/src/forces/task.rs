@@ -55,6 +55,10 @@ struct ForcesSec {
     links: Option<BTreeMap<String, S<LinkSec>>>,
     resistance: Option<Vec<S<ResistSec>>>,
     strength: Option<S<StrengthSec>>,
+    cycle: Option<S<super::slider_task::CycleSec>>,
+    cylinders: Option<Vec<S<super::slider_task::CylinderSec>>>,
+    stroke_forces: Option<Vec<S<super::slider_task::StrokeForceSec>>>,
+    friction: Option<Vec<S<super::slider_task::FrictionSec>>>,
 }
 
 #[derive(Deserialize)]
@@ -142,6 +146,9 @@ pub struct ForcesTask {
     pub spans: BTreeMap<String, Range<usize>>,
     /// Span of the whole section.
     pub section: Range<usize>,
+    /// The task's name of each slider load (`cylinders[0]`,
+    /// `stroke_forces[0]`, `friction[0]`), as [`Loads::sliders`].
+    pub slider_fields: Vec<String>,
 }
 
 fn link_index(task: &TaskSource, m: &Mechanism, field: &str, name: &S<String>) -> Result<usize, Error> {
@@ -326,6 +333,27 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         Some(s) => Some(strength(task, def, m, s)?),
         None => None,
     };
+    let (cyl, strk, fric) = (
+        sec.cylinders.as_deref().unwrap_or_default(),
+        sec.stroke_forces.as_deref().unwrap_or_default(),
+        sec.friction.as_deref().unwrap_or_default(),
+    );
+    super::slider_task::read(
+        task,
+        m,
+        sec.cycle.as_ref(),
+        cyl,
+        strk,
+        fric,
+        &mut loads.cycle,
+        &mut loads.sliders,
+        &mut spans,
+    )?;
+    let slider_fields = (0..cyl.len())
+        .map(|k| format!("cylinders[{k}]"))
+        .chain((0..strk.len()).map(|k| format!("stroke_forces[{k}]")))
+        .chain((0..fric.len()).map(|k| format!("friction[{k}]")))
+        .collect();
     Ok(Some(ForcesTask {
         crank_motion,
         crank_motion_span: sec.crank_motion.as_ref().map(|c| c.span()),
@@ -334,6 +362,7 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         strength,
         spans,
         section,
+        slider_fields,
     }))
 }
 

@@ -7,14 +7,86 @@ use super::task::ForcesTask;
 use super::{Analysis, Row};
 use crate::linkage::Loaded;
 
+/// Over a machine's cycle with loads on sliders (an engine, a compressor,
+/// a shaper): the slider loads along their guides and every reaction as
+/// magnitude and angle (atan2(R_y, R_x) in (−180°, 180°]) at the positions.
+fn cycle_tables(out: &mut String, l: &Loaded, t: &ForcesTask, a: &Analysis) {
+    let m = &l.mech;
+    if t.loads.sliders.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nLoads on sliders along their guides over the cycle (N; + along the guide's direction; ψ the angle of the machine's cycle):"
+    );
+    let mut head = format!("  {:>5} {:>9} {:>9}", "pos", "ψ, °", "φ, °");
+    for (k, s) in t.loads.sliders.iter().enumerate() {
+        let name = t.slider_fields.get(k).map_or("?", |s| s.as_str());
+        head.push_str(&format!(" {:>22}", format!("{name} on {}", m.link_names[s.link])));
+    }
+    let _ = writeln!(out, "{head}");
+    for r in &a.rows {
+        let mut line = format!(
+            "  {:>5} {:>9.3} {:>9.3}",
+            r.label,
+            r.fs.cycle_angle.to_degrees(),
+            r.phi.to_degrees()
+        );
+        for (k, s) in t.loads.sliders.iter().enumerate() {
+            let dir = slider_dir(m, s.link);
+            line.push_str(&format!(" {:>22.3}", r.fs.slider_forces.get(k).map_or(0.0, |f| f.dot(dir))));
+        }
+        let _ = writeln!(out, "{line}");
+    }
+    let _ = writeln!(
+        out,
+        "\nReactions over the cycle: |R|, N and its angle, ° (force of `from` on `on`):"
+    );
+    let mut head = format!("  {:>5} {:>9}", "pos", "ψ, °");
+    for x in &a.detail.fs.reactions {
+        // R_ij: the force on link i by link j, 0 the frame (the course's notation)
+        let n = |i: usize| if i == 0 { "0" } else { m.link_names[i].as_str() };
+        let name = format!("R{}{}", n(x.on), n(x.from));
+        head.push_str(&format!(" {:>10} {:>8}", format!("|{name}|"), "∠"));
+    }
+    let _ = writeln!(out, "{head}");
+    for r in &a.rows {
+        let mut line = format!("  {:>5} {:>9.3}", r.label, r.fs.cycle_angle.to_degrees());
+        for x in &r.fs.reactions {
+            line.push_str(&format!(
+                " {:>10.3} {:>8.2}",
+                x.force.hypot(),
+                x.force.y.atan2(x.force.x).to_degrees()
+            ));
+        }
+        let _ = writeln!(out, "{line}");
+    }
+}
+
+/// The unit direction of a slider's frame guide (x when it has none).
+fn slider_dir(m: &tmm_linkage::Mechanism, link: usize) -> tmm_geom::Vec2 {
+    m.pairs
+        .iter()
+        .find_map(|p| match *p {
+            tmm_linkage::mechanism::Pair::P { slider, guide: 0, d, .. } if slider == link => Some(d * (1.0 / d.hypot())),
+            _ => None,
+        })
+        .unwrap_or(tmm_geom::Vec2::new(1.0, 0.0))
+}
+
 fn position(out: &mut String, l: &Loaded, r: &Row) {
     let m = &l.mech;
     let f = &r.fs;
     let _ = writeln!(
         out,
-        "\nPosition {} — φ = {:.3}° (crank travel from the start of the working stroke {:.3}°); ω1 = {:.4} rad/s, ε1 = {:.3} rad/s²",
+        "\nPosition {} — φ = {:.3}° ({} {:.3}°); ω1 = {:.4} rad/s, ε1 = {:.3} rad/s²",
         r.label,
         r.phi.to_degrees(),
+        if r.machine_cycle {
+            "the angle of the machine's cycle"
+        } else {
+            "crank travel from the start of the working stroke"
+        },
         r.psi.to_degrees(),
         r.sol.links[m.crank.link].omega,
         r.sol.links[m.crank.link].eps
@@ -163,6 +235,7 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
             rmax
         );
     }
+    cycle_tables(&mut out, l, t, a);
     let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
     let (mn, mx) = a
         .curve

@@ -435,8 +435,10 @@ pub(crate) fn cycle_diagram(
     let (w, h) = slot_mm(Slot::Diagram, task.sheet);
     let mut c = Canvas::new(w, h);
     let (left, right, top, bottom) = (24.0, 16.0, 22.0, 14.0);
-    // x: 360° at a round μ_φ (° per mm)
-    let mu_phi = round_mu(360.0 / (w - left - right));
+    // x: the cycle (360°, or 720° for a four-stroke engine's data) at a
+    // round μ_φ (° per mm)
+    let span = if pts.iter().any(|p| p.0 > 360.0 + 1e-6) { 720.0 } else { 360.0 };
+    let mu_phi = round_mu(span / (w - left - right));
     let (mut ymin, mut ymax) = (0.0f64, 0.0f64);
     let dot_pts = dots.as_ref().map_or(&[][..], |d| d.points);
     for p in pts.iter().chain(dot_pts).filter(|p| p.1.is_finite()) {
@@ -472,7 +474,7 @@ pub(crate) fn cycle_diagram(
     c.rich_paper((0.5 * w, 13.5), &scales, H_SMALL + 0.5, Anchor::Middle, "#000");
     // axes
     let (x0, yz) = map(0.0, 0.0);
-    let (x1, _) = map(360.0, 0.0);
+    let (x1, _) = map(span, 0.0);
     c.arrow_paper((x0, yz), (x1 + 8.0, yz), Style::THIN, 3.0);
     let (_, ytop) = map(0.0, ymax);
     let (_, ybot) = map(0.0, ymin);
@@ -490,7 +492,7 @@ pub(crate) fn cycle_diagram(
         let (xp, _) = map(*x, 0.0);
         c.line_paper((xp, yz - 1.2), (xp, yz + 1.2), Style::THIN);
     }
-    let (xe, _) = map(360.0, 0.0);
+    let (xe, _) = map(span, 0.0);
     c.line_paper((xe, yz - 1.2), (xe, yz + 1.2), Style::THIN);
     // the y ticks: every 10 mm at the round μ
     for (k, v) in crate::paper::grid_values(ymin, ymax, 10.0 * mu_y) {

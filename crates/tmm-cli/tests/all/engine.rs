@@ -1,0 +1,119 @@
+//! The textbook's П2 engine as a task file: it runs, and each kind of bad
+//! input of the engine's loads is refused with exit code 2 and a message
+//! naming the field at its place in the file.
+
+use crate::common::{repo, tmm_in, tmp};
+
+fn p2() -> String {
+    std::fs::read_to_string(repo().join("examples/textbook/p2-engine.toml")).unwrap()
+}
+
+/// Run `text` as `task.toml`: (exit code, stdout, stderr).
+fn run_text(name: &str, text: &str) -> (i32, String, String) {
+    let d = tmp("engine", name);
+    std::fs::write(d.join("task.toml"), text).unwrap();
+    let o = tmm_in(&d, &["run", "--no-pdf", "task.toml", "-o", "out"]);
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// The 1-based line of the first occurrence of `needle` in `text`.
+fn line_of(text: &str, needle: &str) -> usize {
+    let at = text.find(needle).unwrap_or_else(|| panic!("`{needle}` not in the task"));
+    text[..at].matches('\n').count() + 1
+}
+
+/// Replace the first occurrence of `from` (which must be there).
+fn first(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "`{from}` not in the task");
+    text.replacen(from, to, 1)
+}
+
+fn refused(name: &str, text: &str, field: &str, line: usize, what: &str) {
+    let (code, _, err) = run_text(name, text);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains(field), "no `{field}` in: {err}");
+    assert!(err.contains(&format!("task.toml:{line}:")), "not located at line {line}: {err}");
+    assert!(err.contains(what), "no `{what}` in: {err}");
+}
+
+#[test]
+fn p2_runs_over_the_720_degree_cycle() {
+    let (code, out, err) = run_text("runs", &p2());
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("resistance moment of the driven machine M_d = -17.511"), "{out}");
+    assert!(out.contains("Balancing torque at the 24 positions"), "{out}");
+    assert!(out.contains("Reactions over the cycle"), "{out}");
+    // the mean balancing torque over the cycle is the constant resistance
+    assert!(out.contains("mean 17.5110 N·m"), "{out}");
+}
+
+#[test]
+fn a_bore_of_zero_is_refused() {
+    let t = first(&p2(), "bore = \"78 mm\"", "bore = \"0 mm\"");
+    refused(
+        "bore",
+        &t,
+        "forces.cylinders[0].bore",
+        line_of(&t, "bore = \"0 mm\""),
+        "must be > 0",
+    );
+}
+
+#[test]
+fn travel_that_does_not_increase_is_refused() {
+    let from = "travel = [0, 0.025, 0.05, 0.1, 0.2, 0.3, 0.4,";
+    let t = first(&p2(), from, "travel = [0, 0.025, 0.05, 0.1, 0.2, 0.3, 0.3,");
+    let line = line_of(&t, "travel = [0, 0.025, 0.05, 0.1, 0.2, 0.3, 0.3,");
+    refused(
+        "increase",
+        &t,
+        "forces.cylinders[0].tables.compression.travel[6]",
+        line,
+        "must increase",
+    );
+}
+
+#[test]
+fn a_table_short_of_the_stroke_is_refused() {
+    let t = first(&p2(), "travel = [0, 0.9, 1]", "travel = [0, 0.9, 0.95]");
+    let line = line_of(&t, "[forces.cylinders.tables.exhaust]");
+    refused("cover", &t, "forces.cylinders[0].tables.exhaust", line, "the whole stroke");
+}
+
+#[test]
+fn a_process_without_its_table_is_refused() {
+    let from = "processes = [\"intake\", \"compression\", \"expansion\", \"exhaust\"]";
+    let to = "processes = [\"intake\", \"compression\", \"expansion\", \"outlet\"]";
+    let t = first(&p2(), from, to);
+    refused(
+        "process",
+        &t,
+        "forces.cylinders[0].processes",
+        line_of(&t, to),
+        "`outlet` has no pressure table",
+    );
+}
+
+#[test]
+fn bounds_that_do_not_fit_the_cycle_are_refused() {
+    let from = "processes = [\"intake\", \"compression\", \"expansion\", \"exhaust\"]\n";
+    let bad = "bounds = [\"0 deg\", \"180 deg\", \"360 deg\", \"540 deg\", \"700 deg\"]\n";
+    let t = first(&p2(), from, &format!("{from}{bad}"));
+    refused("bounds", &t, "forces.cylinders[0].bounds", line_of(&t, bad), "to the cycle's 720°");
+}
+
+#[test]
+fn a_cycle_of_three_turns_is_refused() {
+    let t = first(&p2(), "turns = 2", "turns = 3");
+    refused(
+        "turns",
+        &t,
+        "forces.cycle.turns",
+        line_of(&t, "turns = 3"),
+        "1 turn of the crank (360°) or 2",
+    );
+}
