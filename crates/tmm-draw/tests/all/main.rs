@@ -1,0 +1,7 @@
+//! The tests of tmm-draw, one module per concept.
+
+mod dxf_file;
+mod lettering;
+mod lines;
+mod scales;
+mod svg_file;
