@@ -101,7 +101,12 @@ pub fn scene() -> Scene {
         "THIN",
         Shape::Stroke {
             line: LineType::Thin,
-            geom: Geom::Curve(vec![CubicBez::new(p(100.0, 90.0), p(120.0, 110.0), p(150.0, 70.0), p(180.0, 95.0))]),
+            geom: Geom::Curve(vec![CubicBez::new(
+                p(120.0, 100.0),
+                p(140.0, 115.0),
+                p(160.0, 85.0),
+                p(190.0, 105.0),
+            )]),
         },
     );
     let t = |x: f64, y: f64, h: TextHeight, m: &str| Text::new(p(x, y), h, m).ok();

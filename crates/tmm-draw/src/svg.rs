@@ -4,11 +4,13 @@
 //! text as `<text>` with `<tspan baseline-shift>` for indices. Output is
 //! deterministic: the same scene gives the same bytes.
 //!
-//! Lettering names osifont (an open ISO 3098 / GOST 2.304 type B face with
-//! Cyrillic, slanted by design) first, then KOMPAS's "GOST type B" and
-//! AutoCAD's ISOCPEUR, then common faces; no `font-style="italic"` is set,
-//! because the GOST faces are already slanted and a viewer would slant them
-//! twice (an upright fallback is GOST 2.304's upright variant).
+//! Lettering names osifont (an open ISO 3098 face, the letter shapes of
+//! GOST 2.304 type B, with Cyrillic and Greek; drawn upright) first, then
+//! upright common faces, and slants every text to GOST 2.304's 75° by an
+//! exact `skewX(-15)` about its anchor rather than `font-style="italic"`,
+//! whose synthetic oblique differs between viewers (and would slant an
+//! already slanted face twice). Slanted faces such as KOMPAS's "GOST type
+//! B" are therefore not listed.
 
 use std::fmt::Write;
 
@@ -17,7 +19,11 @@ use kurbo::Point;
 use crate::{Anchor, Geom, Hatch, Rich, Scene, Shape, Text, Thickness};
 
 /// The font-family list of every text.
-pub const FONT_FAMILY: &str = "osifont, 'GOST type B', 'GOST type BU', ISOCPEUR, 'DejaVu Sans', Arial, sans-serif";
+pub const FONT_FAMILY: &str = "osifont, 'DejaVu Sans', Arial, sans-serif";
+
+/// The slant of GOST 2.304's slanted type: letters lean 15° from upright
+/// (75° to the baseline).
+pub const SLANT_DEG: f64 = 15.0;
 
 /// The capital height of osifont as a fraction of its em (1510/2048 units:
 /// the height of "H"), so a font-size of h / CAP_EM gives capitals h mm high.
@@ -166,14 +172,17 @@ impl Svg {
             Anchor::End => "end",
         };
         let size = num(t.height.mm() / CAP_EM);
+        // the text is drawn at the origin of a frame moved to the anchor,
+        // turned, and sheared to the 75° slant
         let rot = if t.rotation_deg.abs() > 1e-9 {
-            format!(" transform=\"rotate({} {x} {y})\"", num(-t.rotation_deg))
+            format!(" rotate({})", num(-t.rotation_deg))
         } else {
             String::new()
         };
         let _ = write!(
             self.out,
-            "<text class=\"{layer}\" x=\"{x}\" y=\"{y}\" font-size=\"{size}\" font-family=\"{}\" text-anchor=\"{anchor}\" fill=\"#000\" xml:space=\"preserve\"{rot}>",
+            "<text class=\"{layer}\" transform=\"translate({x} {y}){rot} skewX({})\" font-size=\"{size}\" font-family=\"{}\" text-anchor=\"{anchor}\" fill=\"#000\" xml:space=\"preserve\">",
+            num(-SLANT_DEG),
             esc(FONT_FAMILY).replace("&quot;", "'")
         );
         self.out.push_str(&rich_tspans(&t.rich, t.height));

@@ -29,3 +29,14 @@ fn indices_are_tspans_with_a_baseline_shift() {
     assert!(a.contains("font-size=\"4.747\""));
     assert!((4.747 * svg::CAP_EM - 3.5).abs() < 1e-3);
 }
+
+/// With `TMM_DRAW_DUMP=DIR`, the sample scene is written there as SVG and
+/// DXF, to render and look at (`rsvg-convert`, `scripts/dxf-audit.py --png`).
+#[test]
+fn dump_the_sample_when_asked() {
+    let Ok(dir) = std::env::var("TMM_DRAW_DUMP") else { return };
+    let scene = sample::scene();
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(format!("{dir}/sample.svg"), svg::render(&scene)).unwrap();
+    std::fs::write(format!("{dir}/sample.dxf"), tmm_draw::dxf::render(&scene)).unwrap();
+}
