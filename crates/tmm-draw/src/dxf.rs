@@ -291,11 +291,13 @@ pub fn render(scene: &Scene) -> String {
     o.pair(0, "ENDTAB");
     // STYLE
     table(&mut o, "STYLE", &h_style_t, 2);
-    for (name, font) in [("Standard", FALLBACK_FONT), (TEXT_STYLE, TEXT_FONT)] {
+    // gost_bu.ttf is slanted by design; osifont is upright and gets
+    // GOST 2.304's 15° oblique angle from its style
+    for (name, font, oblique) in [("Standard", FALLBACK_FONT, 15.0), (TEXT_STYLE, TEXT_FONT, 0.0)] {
         record(&mut o, "STYLE", "AcDbTextStyleTableRecord", &h_style_t, name);
         o.f(40, 0.0);
         o.f(41, 1.0);
-        o.f(50, 0.0);
+        o.f(50, oblique);
         o.i(71, 0);
         o.f(42, 3.5);
         o.pair(3, font);

@@ -30,6 +30,7 @@
 mod arrow;
 mod dimension;
 mod error;
+pub mod eskd;
 mod hatch;
 mod line;
 pub mod sample;

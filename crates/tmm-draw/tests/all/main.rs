@@ -4,4 +4,5 @@ mod dxf_file;
 mod lettering;
 mod lines;
 mod scales;
+mod sheet_frame;
 mod svg_file;
