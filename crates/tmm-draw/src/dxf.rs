@@ -81,7 +81,7 @@ impl Out {
     /// notation (a literal `^` is `^ `, a control character `^` + its
     /// letter), so MTEXT's stacking `^` and line breaks survive reading.
     fn pair(&mut self, code: i32, v: &str) {
-        let _ = write!(self.s, "{code:>3}\n");
+        let _ = writeln!(self.s, "{code:>3}");
         for c in v.chars() {
             match c {
                 '^' => self.s.push_str("^ "),

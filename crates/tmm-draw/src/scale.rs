@@ -46,7 +46,7 @@ impl Scale {
 
     fn pick(n: f64, enlarge: bool) -> Result<Scale, DrawError> {
         let x10 = (n * 10.0).round();
-        if n.is_finite() && (n * 10.0 - x10).abs() < 1e-9 && x10 >= 10.0 && x10 <= 1e5 {
+        if n.is_finite() && (n * 10.0 - x10).abs() < 1e-9 && (10.0..=1e5).contains(&x10) {
             let k = x10 as u32;
             if k == 10 {
                 return Ok(Scale::NATURAL);
