@@ -1,5 +1,6 @@
 //! The tests of tmm-draw, one module per concept.
 
+mod annotations;
 mod dxf_file;
 mod lettering;
 mod lines;
