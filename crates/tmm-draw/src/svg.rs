@@ -43,10 +43,15 @@ pub fn num(v: f64) -> String {
     if s == "-0" { "0".to_string() } else { s }
 }
 
+/// XML-escaped text for the SVG. "ё" and "Ё" are written as "е" and "Е":
+/// osifont (Debian's 0.1.20220224) draws both as filled boxes, and Russian
+/// printing allows "е" for "ё" (the DXF keeps "ё").
 fn esc(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
+            'ё' => o.push('е'),
+            'Ё' => o.push('Е'),
             '&' => o.push_str("&amp;"),
             '<' => o.push_str("&lt;"),
             '>' => o.push_str("&gt;"),

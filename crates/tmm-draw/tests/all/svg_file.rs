@@ -40,3 +40,15 @@ fn dump_the_sample_when_asked() {
     std::fs::write(format!("{dir}/sample.svg"), svg::render(&scene)).unwrap();
     std::fs::write(format!("{dir}/sample.dxf"), tmm_draw::dxf::render(&scene)).unwrap();
 }
+
+#[test]
+fn yo_is_written_as_ye_for_osifont() {
+    use kurbo::Point;
+    use tmm_draw::{Scale, Scene, Text, TextHeight};
+    let mut s = Scene::new(50.0, 20.0, Scale::NATURAL, Thickness::A4).unwrap();
+    s.text("TEXT", Text::new(Point::new(1.0, 5.0), TextHeight::H3_5, "Расчёт Ёмкость").unwrap())
+        .unwrap();
+    let a = svg::render(&s);
+    assert!(a.contains("Расчет Емкость") && !a.contains('ё') && !a.contains('Ё'), "{a}");
+    assert!(tmm_draw::dxf::render(&s).contains("Расчёт Ёмкость"));
+}
