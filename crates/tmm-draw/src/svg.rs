@@ -1,0 +1,286 @@
+//! The SVG rendering of a scene (SVG-представление): one `<svg>` sized in
+//! millimetres with a viewBox in paper mm (y flipped to SVG's downward
+//! axis), every element drawn with its GOST 2.303 width and dash array,
+//! text as `<text>` with `<tspan baseline-shift>` for indices. Output is
+//! deterministic: the same scene gives the same bytes.
+//!
+//! Lettering names osifont (an open ISO 3098 face, the letter shapes of
+//! GOST 2.304 type B, with Cyrillic and Greek; drawn upright) first, then
+//! upright common faces, and slants every text to GOST 2.304's 75° by an
+//! exact `skewX(-15)` about its anchor rather than `font-style="italic"`,
+//! whose synthetic oblique differs between viewers (and would slant an
+//! already slanted face twice). Slanted faces such as KOMPAS's "GOST type
+//! B" are therefore not listed.
+
+use std::fmt::Write;
+
+use kurbo::Point;
+
+use crate::{Anchor, Geom, Hatch, Rich, Scene, Shape, Text, Thickness};
+
+/// The font-family list of every text.
+pub const FONT_FAMILY: &str = "osifont, 'DejaVu Sans', Arial, sans-serif";
+
+/// The slant of GOST 2.304's slanted type: letters lean 15° from upright
+/// (75° to the baseline).
+pub const SLANT_DEG: f64 = 15.0;
+
+/// The capital height of osifont as a fraction of its em (1510/2048 units:
+/// the height of "H"), so a font-size of h / CAP_EM gives capitals h mm high.
+pub const CAP_EM: f64 = 1510.0 / 2048.0;
+
+/// A number for SVG: at most three decimals, no trailing zeros, no "-0".
+pub fn num(v: f64) -> String {
+    let mut s = format!("{v:.3}");
+    if s.contains('.') {
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') {
+            s.pop();
+        }
+    }
+    if s == "-0" { "0".to_string() } else { s }
+}
+
+/// XML-escaped text for the SVG. "ё" and "Ё" are written as "е" and "Е":
+/// osifont (Debian's 0.1.20220224) draws both as filled boxes, and Russian
+/// printing allows "е" for "ё" (the DXF keeps "ё").
+fn esc(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            'ё' => o.push('е'),
+            'Ё' => o.push('Е'),
+            '&' => o.push_str("&amp;"),
+            '<' => o.push_str("&lt;"),
+            '>' => o.push_str("&gt;"),
+            '"' => o.push_str("&quot;"),
+            _ => o.push(c),
+        }
+    }
+    o
+}
+
+struct Svg {
+    out: String,
+    h: f64,
+    s: Thickness,
+}
+
+impl Svg {
+    fn p(&self, p: Point) -> (String, String) {
+        (num(p.x), num(self.h - p.y))
+    }
+
+    fn stroke_attrs(&self, line: crate::LineType) -> String {
+        let mut a = format!(
+            " fill=\"none\" stroke=\"#000\" stroke-width=\"{}\" stroke-linecap=\"butt\" stroke-linejoin=\"round\"",
+            num(line.width(self.s))
+        );
+        let d = line.dashes(self.s);
+        if !d.is_empty() {
+            let list: Vec<String> = d.iter().map(|&v| num(v)).collect();
+            let _ = write!(a, " stroke-dasharray=\"{}\"", list.join(" "));
+        }
+        a
+    }
+
+    fn geom(&mut self, layer: &str, line: crate::LineType, g: &Geom) {
+        let attrs = self.stroke_attrs(line);
+        match g {
+            Geom::Line(a, b) => {
+                let ((x1, y1), (x2, y2)) = (self.p(*a), self.p(*b));
+                let _ = writeln!(
+                    self.out,
+                    "<line class=\"{layer}\" x1=\"{x1}\" y1=\"{y1}\" x2=\"{x2}\" y2=\"{y2}\"{attrs}/>"
+                );
+            }
+            Geom::Polyline { points, closed } => {
+                let tag = if *closed { "polygon" } else { "polyline" };
+                let pts: Vec<String> = points
+                    .iter()
+                    .map(|&q| {
+                        let (x, y) = self.p(q);
+                        format!("{x},{y}")
+                    })
+                    .collect();
+                let _ = writeln!(self.out, "<{tag} class=\"{layer}\" points=\"{}\"{attrs}/>", pts.join(" "));
+            }
+            Geom::Circle { center, radius } => {
+                let (x, y) = self.p(*center);
+                let _ = writeln!(
+                    self.out,
+                    "<circle class=\"{layer}\" cx=\"{x}\" cy=\"{y}\" r=\"{}\"{attrs}/>",
+                    num(*radius)
+                );
+            }
+            Geom::Arc {
+                center,
+                radius,
+                start_deg,
+                end_deg,
+            } => {
+                let sweep = crate::scene::sweep_deg(*start_deg, *end_deg);
+                if sweep >= 360.0 - 1e-9 {
+                    return self.geom(
+                        layer,
+                        line,
+                        &Geom::Circle {
+                            center: *center,
+                            radius: *radius,
+                        },
+                    );
+                }
+                let at = |deg: f64| {
+                    let (s, c) = deg.to_radians().sin_cos();
+                    Point::new(center.x + radius * c, center.y + radius * s)
+                };
+                let ((x0, y0), (x1, y1)) = (self.p(at(*start_deg)), self.p(at(*end_deg)));
+                let large = if sweep > 180.0 { 1 } else { 0 };
+                // counter-clockwise with y up is sweep-flag 0 with y down
+                let r = num(*radius);
+                let _ = writeln!(
+                    self.out,
+                    "<path class=\"{layer}\" d=\"M{x0} {y0}A{r} {r} 0 {large} 0 {x1} {y1}\"{attrs}/>"
+                );
+            }
+            Geom::Curve(c) => {
+                let (x, y) = self.p(c[0].p0);
+                let mut d = format!("M{x} {y}");
+                for b in c {
+                    let (a1, b1) = self.p(b.p1);
+                    let (a2, b2) = self.p(b.p2);
+                    let (a3, b3) = self.p(b.p3);
+                    let _ = write!(d, "C{a1} {b1} {a2} {b2} {a3} {b3}");
+                }
+                let _ = writeln!(self.out, "<path class=\"{layer}\" d=\"{d}\"{attrs}/>");
+            }
+        }
+    }
+
+    fn hatch(&mut self, layer: &str, h: &Hatch) {
+        let attrs = self.stroke_attrs(crate::LineType::Thin);
+        let _ = writeln!(self.out, "<g class=\"{layer}\"{attrs}>");
+        for (a, b) in h.lines() {
+            let ((x1, y1), (x2, y2)) = (self.p(a), self.p(b));
+            let _ = writeln!(self.out, "<line x1=\"{x1}\" y1=\"{y1}\" x2=\"{x2}\" y2=\"{y2}\"/>");
+        }
+        self.out.push_str("</g>\n");
+    }
+
+    fn text(&mut self, layer: &str, t: &Text) {
+        let (x, y) = self.p(t.at);
+        let anchor = match t.anchor {
+            Anchor::Start => "start",
+            Anchor::Middle => "middle",
+            Anchor::End => "end",
+        };
+        let size = num(t.height.mm() / CAP_EM);
+        // the text is drawn at the origin of a frame moved to the anchor,
+        // turned, and sheared to the 75° slant
+        let rot = if t.rotation_deg.abs() > 1e-9 {
+            format!(" rotate({})", num(-t.rotation_deg))
+        } else {
+            String::new()
+        };
+        let _ = write!(
+            self.out,
+            "<text class=\"{layer}\" transform=\"translate({x} {y}){rot} skewX({})\" font-size=\"{size}\" font-family=\"{}\" text-anchor=\"{anchor}\" fill=\"#000\" xml:space=\"preserve\">",
+            num(-SLANT_DEG),
+            esc(FONT_FAMILY).replace("&quot;", "'")
+        );
+        self.out.push_str(&rich_tspans(&t.rich, t.height));
+        self.out.push_str("</text>\n");
+    }
+}
+
+/// The tspans of rich text at height `h`: base text plain, a superscript
+/// raised by half the capital height, a subscript lowered by a third of
+/// it, both at the index height ([`crate::TextHeight::index`]); when a
+/// span has both, the subscript is moved back under the superscript.
+pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
+    let ih = h.index();
+    let isize = num(ih.mm() / CAP_EM);
+    let mut o = String::new();
+    for sp in &r.spans {
+        let _ = write!(o, "<tspan>{}</tspan>", esc(&sp.base));
+        if let Some(sup) = &sp.sup {
+            let _ = write!(
+                o,
+                "<tspan font-size=\"{isize}\" baseline-shift=\"{}\">{}</tspan>",
+                num(0.5 * h.mm()),
+                esc(sup)
+            );
+        }
+        if let Some(sub) = &sp.sub {
+            let back = match &sp.sup {
+                Some(sup) => format!(" dx=\"{}\"", num(-sup.chars().map(|c| ih.advance(c)).sum::<f64>())),
+                None => String::new(),
+            };
+            let _ = write!(
+                o,
+                "<tspan font-size=\"{isize}\"{back} baseline-shift=\"{}\">{}</tspan>",
+                num(-h.mm() / 3.0),
+                esc(sub)
+            );
+        }
+    }
+    o
+}
+
+/// The scene as an SVG document: `width`/`height` in mm, viewBox in mm.
+///
+/// ```
+/// use tmm_draw::{Scale, Scene, Thickness};
+/// let s = Scene::new(210.0, 297.0, Scale::NATURAL, Thickness::A4).unwrap();
+/// let svg = tmm_draw::svg::render(&s);
+/// assert!(svg.starts_with("<svg") && svg.contains("width=\"210mm\""));
+/// ```
+pub fn render(scene: &Scene) -> String {
+    let mut g = Svg {
+        out: String::new(),
+        h: scene.height,
+        s: scene.s,
+    };
+    let (w, h) = (num(scene.width), num(scene.height));
+    let _ = writeln!(
+        g.out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\" data-scale=\"{}\">",
+        scene.scale.caption('.')
+    );
+    for item in scene.items() {
+        let layer = scene.layers()[item.layer].name.clone();
+        draw(&mut g, &layer, &item.shape);
+    }
+    g.out.push_str("</svg>\n");
+    g.out
+}
+
+fn draw(g: &mut Svg, layer: &str, shape: &Shape) {
+    match shape {
+        Shape::Stroke { line, geom } => g.geom(layer, *line, geom),
+        Shape::Arrow(a) => {
+            let c = a.corners(g.s);
+            let pts: Vec<String> = c
+                .iter()
+                .map(|&q| {
+                    let (x, y) = g.p(q);
+                    format!("{x},{y}")
+                })
+                .collect();
+            let _ = writeln!(
+                g.out,
+                "<polygon class=\"{layer}\" points=\"{}\" fill=\"#000\" stroke=\"none\"/>",
+                pts.join(" ")
+            );
+        }
+        Shape::Hatch(h) => g.hatch(layer, h),
+        Shape::Text(t) => g.text(layer, t),
+        Shape::Dimension(d) => {
+            for part in d.parts(g.s) {
+                draw(g, layer, &part);
+            }
+        }
+    }
+}

@@ -1,0 +1,54 @@
+//! The SVG rendering: widths, dash arrays, indices as tspans, determinism.
+
+use tmm_draw::{LineType, Thickness, sample, svg};
+
+#[test]
+fn svg_is_deterministic_and_carries_gost_lines() {
+    let scene = sample::scene();
+    let a = svg::render(&scene);
+    assert_eq!(a, svg::render(&scene));
+    let s = Thickness::A1;
+    let axis: Vec<String> = LineType::Axis.dashes(s).iter().map(|&v| svg::num(v)).collect();
+    assert!(a.contains(&format!("stroke-dasharray=\"{}\"", axis.join(" "))));
+    assert!(a.contains("stroke-width=\"0.7\"") && a.contains("stroke-width=\"0.25\""));
+    assert!(a.contains("width=\"200mm\"") && a.contains("viewBox=\"0 0 200 120\""));
+    assert!(a.contains("font-family=\"osifont"));
+    assert!(!a.contains("NaN") && !a.contains("inf"));
+}
+
+#[test]
+fn indices_are_tspans_with_a_baseline_shift() {
+    let a = svg::render(&sample::scene());
+    // K_v at 3.5 mm: "v" is a 2.5 mm index lowered by a third of 3.5 mm
+    assert!(
+        a.contains("<tspan>K</tspan><tspan font-size=\"3.391\" baseline-shift=\"-1.167\">v</tspan>"),
+        "{a}"
+    );
+    assert!(a.contains(">ур</tspan>"));
+    // the capital height of a 3.5 mm text: font-size × osifont's cap/em
+    assert!(a.contains("font-size=\"4.747\""));
+    assert!((4.747 * svg::CAP_EM - 3.5).abs() < 1e-3);
+}
+
+/// With `TMM_DRAW_DUMP=DIR`, the sample scene is written there as SVG and
+/// DXF, to render and look at (`rsvg-convert`, `scripts/dxf-audit.py --png`).
+#[test]
+fn dump_the_sample_when_asked() {
+    let Ok(dir) = std::env::var("TMM_DRAW_DUMP") else { return };
+    let scene = sample::scene();
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(format!("{dir}/sample.svg"), svg::render(&scene)).unwrap();
+    std::fs::write(format!("{dir}/sample.dxf"), tmm_draw::dxf::render(&scene)).unwrap();
+}
+
+#[test]
+fn yo_is_written_as_ye_for_osifont() {
+    use kurbo::Point;
+    use tmm_draw::{Scale, Scene, Text, TextHeight};
+    let mut s = Scene::new(50.0, 20.0, Scale::NATURAL, Thickness::A4).unwrap();
+    s.text("TEXT", Text::new(Point::new(1.0, 5.0), TextHeight::H3_5, "Расчёт Ёмкость").unwrap())
+        .unwrap();
+    let a = svg::render(&s);
+    assert!(a.contains("Расчет Емкость") && !a.contains('ё') && !a.contains('Ё'), "{a}");
+    assert!(tmm_draw::dxf::render(&s).contains("Расчёт Ёмкость"));
+}
