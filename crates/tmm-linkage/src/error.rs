@@ -14,9 +14,7 @@ pub enum LinkageError {
         message: String,
     },
     /// The degree of freedom is not 1.
-    #[error(
-        "the mechanism has {dof} degrees of freedom (W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {w}); a mechanism driven by one crank needs 1{detail}"
-    )]
+    #[error("{}", mobility_message(*dof, *w, *n, *p5, *p4, detail))]
     Mobility {
         /// DOF from the rank of the constraint equations.
         dof: i64,
@@ -117,5 +115,29 @@ impl LinkageError {
             field: field.into(),
             message: message.into(),
         }
+    }
+}
+
+/// The text of [`LinkageError::Mobility`]: Chebyshev's count, and the rank's
+/// mobility where it differs from it, so the message never states one number
+/// and computes another.
+///
+/// ```
+/// use tmm_linkage::LinkageError;
+/// let e = LinkageError::Mobility { dof: 0, w: 0, n: 4, p5: 6, p4: 0, detail: String::new() };
+/// assert!(e.to_string().starts_with("the mechanism has 0 degrees of freedom (W = 3n − 2p5 − p4 = 3·4 − 2·6 − 0 = 0)"));
+/// let e = LinkageError::Mobility { dof: 8, w: 1, n: 3, p5: 4, p4: 0, detail: String::new() };
+/// let t = e.to_string();
+/// assert!(t.contains("W = 3n − 2p5 − p4 = 3·3 − 2·4 − 0 = 1") && t.contains("mobility 8"), "{t}");
+/// assert!(!t.contains("has 8 degrees"), "{t}");
+/// ```
+fn mobility_message(dof: i64, w: i64, n: usize, p5: usize, p4: usize, detail: &str) -> String {
+    let count = format!("W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − {p4} = {w}");
+    if dof == w {
+        format!("the mechanism has {dof} degrees of freedom ({count}); a mechanism driven by one crank needs 1{detail}")
+    } else {
+        format!(
+            "Chebyshev's {count}, but the rank of the constraint equations at the assembled position gives mobility {dof}; a mechanism driven by one crank needs 1 — with W = 1 this means the links are too short against the mechanism's extent for their pairs to be told apart (a length under a millionth of the largest?){detail}"
+        )
     }
 }

@@ -463,10 +463,11 @@ impl Mechanism {
                 };
                 // the rank of the whole mechanism at an assembled position:
                 // at a special crank angle (a parallelogram with every link
-                // on the frame line, φ = 0) the rank drops or the assembly
-                // fails, so it is counted at up to two assembled angles of
-                // several and the larger rank (the smaller mobility) is the
-                // mechanism's
+                // on the frame line, φ = 0) the rank drops, the assembly
+                // fails or the solve lands on an isolated locked
+                // configuration, so it is counted at five crank angles and the
+                // count met most often is the mechanism's (a tie goes to the
+                // smaller mobility)
                 let size = scale_of(def, radius);
                 let piv = PointState {
                     p: pivot,
@@ -500,22 +501,22 @@ impl Mechanism {
                     .collect();
                 let fixed: Vec<Vec2> = def.fixed.iter().map(|(_, p)| *p).collect();
                 let centre = fixed.iter().fold(Vec2::ZERO, |a, b| a + *b) * (1.0 / fixed.len().max(1) as f64);
-                let mut count: Option<crate::whole::RankCount> = None;
-                let mut counted = 0;
+                let mut counts: Vec<(crate::whole::RankCount, usize)> = Vec::new();
                 for shift in [0.0, 0.7, 1.9, 3.4, 4.6] {
-                    if counted == 2 {
-                        break;
-                    }
                     let st = crank_at(def.assembly_angle + shift);
                     let Some(asm) = crate::whole::assemble_all(&pairs, &st, cl, &near, centre, size, 64) else {
                         continue;
                     };
-                    counted += 1;
                     let rc = crate::whole::rank_count(&pairs, nl, cl, &asm, size);
-                    if count.is_none_or(|c| rc.dof < c.dof) {
-                        count = Some(rc);
+                    match counts.iter_mut().find(|(c, _)| *c == rc) {
+                        Some((_, k)) => *k += 1,
+                        None => counts.push((rc, 1)),
                     }
                 }
+                let count = counts
+                    .iter()
+                    .max_by(|(a, ka), (b, kb)| ka.cmp(kb).then(b.dof.cmp(&a.dof)))
+                    .map(|(c, _)| *c);
                 return Err(match count {
                     Some(rc) if rc.redundant > 0 || rc.dof != w => LinkageError::Redundant {
                         w,
@@ -525,9 +526,20 @@ impl Mechanism {
                         redundant: rc.redundant,
                         passive: rc.passive,
                         detail: format!(
-                            "links {} do not form Assur groups on the crank `{}`{lone_text}",
-                            names.join(", "),
-                            inp.link
+                            "the Assur groups on the crank `{}` leave {} over, whose pairs repeat constraints the groups already impose{lone_text}",
+                            inp.link,
+                            left.iter()
+                                .map(|&l| {
+                                    let joints: Vec<&str> = def.links[l - 1]
+                                        .points
+                                        .iter()
+                                        .filter(|(p, _)| pidx.get(p).is_some_and(|&k| occ[k].len() > 1))
+                                        .map(|(p, _)| p.as_str())
+                                        .collect();
+                                    format!("link `{}` ({})", link_names[l], joints.join("–"))
+                                })
+                                .collect::<Vec<_>>()
+                                .join(", ")
                         ),
                     },
                     _ if w != 1 => LinkageError::Mobility {

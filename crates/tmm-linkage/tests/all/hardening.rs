@@ -564,3 +564,55 @@ fn block_centres_of_mass_are_exposed() {
         assert!((sc.a - s.points[joint].a).hypot() < 1e-12);
     }
 }
+
+#[test]
+fn double_parallelogram_assembled_flat_is_still_counted_by_rank() {
+    // the task file's double parallelogram: frame A(0,0), D(0.3,0), E(0.15,0);
+    // cranks AB, DC, EF of 0.1 m, coupler B–F–C of 0.3 m with F its middle.
+    // The assembly angle φ = 0 lays every link on the frame line, where the
+    // solve of all pairs can land on a locked configuration of full rank; the
+    // count met at most crank angles is the mechanism's: W = 0, mobility 1, q = 1
+    let coupler = LinkDef {
+        name: "2".into(),
+        points: vec![("B".into(), v(0.0, 0.0)), ("C".into(), v(0.3, 0.0)), ("F".into(), v(0.15, 0.0))],
+        mass_center: v(0.15, 0.0),
+    };
+    for phi in [0.0, 0.5] {
+        let def = MechanismDef {
+            fixed: vec![("A".into(), v(0.0, 0.0)), ("D".into(), v(0.3, 0.0)), ("E".into(), v(0.15, 0.0))],
+            links: vec![
+                LinkDef::bar("1", "A", "B", 0.1),
+                coupler.clone(),
+                LinkDef::bar("3", "D", "C", 0.1),
+                LinkDef::bar("4", "E", "F", 0.1),
+            ],
+            input: Some(InputDef {
+                link: "1".into(),
+                pivot: "A".into(),
+                pin: "B".into(),
+                omega: 10.0,
+                epsilon: 0.0,
+            }),
+            hints: vec![AssemblyHint {
+                point: "C".into(),
+                kind: HintKind::Above("A".into(), "D".into()),
+            }],
+            assembly_angle: phi,
+            ..Default::default()
+        };
+        match Mechanism::new(&def).unwrap_err() {
+            LinkageError::Redundant {
+                w,
+                dof,
+                redundant,
+                passive,
+                detail,
+                ..
+            } => {
+                assert_eq!((w, dof, redundant, passive), (0, 1, 1, 0), "φ = {phi}");
+                assert!(detail.contains("link `4` (E–F)"), "{detail}");
+            }
+            other => panic!("φ = {phi}: {other}"),
+        }
+    }
+}
