@@ -23,16 +23,27 @@ use tmm_geom::units::{self, Dim};
 /// let q = tmm_cams::spec::parse_phases("rise 90 cosine 20 mm; return 90 deg sine 20mm; dwell 180").unwrap();
 /// assert_eq!(q[0].stroke, Some(tmm_cams::program::Stroke::Length(0.020)));
 /// assert!(tmm_cams::spec::parse_phases("rise 90 cosine 20; return 90 sine 20mm; dwell 180").is_err());
+/// // 10 000 table values in all: two tables of 6000 are refused together
+/// let t = format!("table({})", vec!["1"; 3000].into_iter().chain(vec!["-1"; 3000]).collect::<Vec<_>>().join(","));
+/// assert!(tmm_cams::spec::parse_phases(&format!("rise 90 {t}; return 90 {t}; dwell 180")).is_err());
+/// assert!(tmm_cams::spec::parse_phases(&format!("rise 90 {t}; return 90 cosine; dwell 180")).is_ok());
 /// ```
 pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
     let mut out = Vec::new();
+    let mut table_values = 0usize;
     for piece in split_top(text, ';') {
         let piece = piece.trim();
         if piece.is_empty() {
             continue;
         }
+        // a phase is echoed in its message, cut to 80 characters (a table
+        // law can be thousands of values long)
+        let shown: String = match piece.char_indices().nth(80) {
+            Some((i, _)) => format!("{}…", &piece[..i]),
+            None => piece.to_string(),
+        };
         let err = |reason: String| CamError::Phase {
-            text: piece.to_string(),
+            text: shown.clone(),
             reason,
         };
         let (kw, rest) = piece
@@ -78,6 +89,17 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
             (words[..at].join(" "), Some(law), stroke)
         };
         let angle = units::parse(&angle_txt, Dim::Angle).map_err(|e| err(e.to_string()))?;
+        // the cost is in the table values of all phases together (each
+        // value a piece searched on its own), so the limit is on their sum
+        if let Some(LawKind::Table(v)) = law.as_ref().map(Law::kind) {
+            table_values += v.len();
+            if table_values > crate::law::MAX_TABLE {
+                return Err(err(format!(
+                    "the table laws of all phases together take at most {} values; with this one they have {table_values}",
+                    crate::law::MAX_TABLE
+                )));
+            }
+        }
         out.push(Phase { kind, angle, law, stroke });
     }
     if out.is_empty() {

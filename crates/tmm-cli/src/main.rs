@@ -49,7 +49,21 @@ enum Command {
 fn main() -> ExitCode {
     // Messages are read in terminals and in logs: never break a field name.
     let _ = miette::set_hook(Box::new(|_| Box::new(miette::MietteHandlerOpts::new().wrap_lines(false).build())));
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // --help and --version go to standard output: a failed write
+            // (>/dev/full) exits 1 like every failed write; a usage error goes
+            // to standard error with exit code 2, dropped if it cannot be written
+            use std::io::Write;
+            let printed = e.print().and_then(|()| std::io::stdout().flush());
+            return match (e.use_stderr(), printed) {
+                (true, _) => ExitCode::from(2),
+                (false, Ok(())) => ExitCode::SUCCESS,
+                (false, Err(_)) => ExitCode::from(1),
+            };
+        }
+    };
     write::clean_up_on_signals();
     let result = match &cli.command {
         Command::Run(a) => cmd::run::run(a),

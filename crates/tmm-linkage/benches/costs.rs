@@ -44,7 +44,7 @@ fn fan(n: usize) -> MechanismDef {
     }
 }
 
-#[divan::bench(args = [16, 64, 100], sample_count = 5, sample_size = 1)]
+#[divan::bench(args = [16, 64, 74], sample_count = 5, sample_size = 1)]
 fn assembly_of_n_dyads(n: usize) {
     let def = fan(n);
     black_box(Mechanism::new(black_box(&def)).unwrap());

@@ -31,9 +31,11 @@ pub const MAX_OMEGA: f64 = 1e5;
 /// Largest crank angular acceleration |ε₁|, rad/s².
 pub const MAX_EPSILON: f64 = 1e10;
 /// The most moving links of a mechanism: the rank check of the constraints
-/// (`constraints::rank`) costs the cube of their number (250 links about
-/// 2 s; a textbook mechanism has fewer than 10).
-pub const MAX_LINKS: usize = 250;
+/// (`constraints::rank`) costs the cube of their number, and a whole run
+/// with [forces], [dynamics] and the note grows with them (249 links took
+/// 14 s of CPU, 101 links 5 s; a textbook mechanism has fewer than 10), so
+/// 150 keeps a whole run under 10 s on one core.
+pub const MAX_LINKS: usize = 150;
 /// Largest crank angle |φ| (input and assembly angles, guide angles), rad.
 pub const MAX_ANGLE: f64 = 1e5;
 

@@ -98,8 +98,42 @@ impl TaskSource {
         let msg = plain_message(e.message().trim());
         match e.span() {
             Some(span) => Error::at(self, span, section, msg),
+            // the parser's nesting limit comes without a place: point at the
+            // line nested deepest (dotted keys and headers, brackets, braces)
+            None if msg.contains("recursion limit") => {
+                let span = self.deepest_line();
+                Error::at(
+                    self,
+                    span,
+                    section,
+                    "tables or arrays nested too deep for the reader (its recursion limit); a task file nests them a few levels at most",
+                )
+            }
             None => Error::input(&format!("{}: {section}", self.name), msg),
         }
+    }
+
+    /// The byte range of the line nested deepest: the most dots, brackets
+    /// and braces outside quotes (a rough depth, enough to point at it).
+    fn deepest_line(&self) -> std::ops::Range<usize> {
+        let mut best = (0usize, 0..0);
+        let mut start = 0;
+        for line in self.text.split_inclusive('\n') {
+            let mut depth = 0;
+            let mut quoted = false;
+            for c in line.chars() {
+                match c {
+                    '"' | '\'' => quoted = !quoted,
+                    '.' | '[' | '{' if !quoted => depth += 1,
+                    _ => {}
+                }
+            }
+            if depth > best.0 {
+                best = (depth, start..start + line.trim_end().len());
+            }
+            start += line.len();
+        }
+        best.1
     }
 
     /// An error about a section the file lacks, located at the file's end,

@@ -335,3 +335,20 @@ fn flywheel_ratios_are_range_checked() {
         );
     }
 }
+
+/// A header nested past the TOML reader's recursion limit came without a
+/// place (`dotted.toml: task file: recursion limit`); it is located at the
+/// line nested deepest and said in words.
+#[test]
+fn a_header_nested_too_deep_is_located() {
+    let header = format!("[linkage{}]", ".a".repeat(99));
+    let text = format!("{PLANETARY}\n{header}\nx = 1\n");
+    let (d, f) = task("deep", "dotted.toml", text.as_bytes());
+    for args in [vec!["run", "--no-pdf", f.as_str(), "-o", "o"], vec!["linkage", f.as_str()]] {
+        let (code, _, err) = run_in(&d, &args);
+        assert_eq!(code, 2, "{err}");
+        // the header is on line 6 (the planetary section takes four lines and a blank one)
+        assert!(err.contains("dotted.toml:6:1"), "{err}");
+        assert!(err.contains("nested too deep"), "{err}");
+    }
+}

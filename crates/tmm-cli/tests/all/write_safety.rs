@@ -560,3 +560,21 @@ fn an_unwritable_stderr_is_not_a_panic() {
     let o = tmm().args(["linkage", "nonexist.toml"]).stderr(w).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// `--help` and `--version` written to a full device are failed writes
+/// (exit 1), not a success; a usage error whose message cannot be written
+/// keeps its exit code 2.
+#[test]
+fn help_on_a_full_device_is_a_failed_write() {
+    for args in [&["--help"][..], &["--version"], &["run", "--help"]] {
+        let full = std::fs::File::create("/dev/full").unwrap();
+        let o = tmm().args(args).stdout(full).output().unwrap();
+        assert_eq!(o.status.code(), Some(1), "{args:?}");
+        let o = tmm().args(args).output().unwrap();
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        assert!(!o.stdout.is_empty());
+    }
+    let full = std::fs::File::create("/dev/full").unwrap();
+    let o = tmm().args(["--no-such-option"]).stderr(full).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+}
