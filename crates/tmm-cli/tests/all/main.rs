@@ -4,6 +4,7 @@
 
 mod cam;
 mod common;
+mod compressor;
 mod cost_bounds;
 mod dynamics;
 mod engine;
