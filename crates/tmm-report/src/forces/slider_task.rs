@@ -25,6 +25,7 @@
 //! link = "5"
 //! stroke = "working"             # working (the slower) | increasing | decreasing
 //! window = [0.05, 0.95]          # fractions of the stroke where it acts
+//! arm = "0.09 m"                 # the couple F·arm about the slider's point (П3's l_p)
 //! travel_unit = "m"
 //! travel = [0, 0.3]
 //! force = [400, 600]             # N, against the motion on that stroke
@@ -87,6 +88,7 @@ pub(crate) struct StrokeForceSec {
     link: S<String>,
     stroke: Option<S<String>>,
     window: Option<S<Vec<f64>>>,
+    arm: Option<Qty>,
     travel_unit: Option<S<String>>,
     interpolation: Option<S<String>>,
     travel: S<Vec<f64>>,
@@ -411,6 +413,13 @@ pub(crate) fn read(
                 (v[0], v[1])
             }
         };
+        let arm = match &s.arm {
+            None => 0.0,
+            Some(a) => {
+                spans.insert(format!("{key}.arm"), a.span());
+                qty(task, &format!("{field}.arm"), a, Dim::Length)?
+            }
+        };
         let (travel, xs) = travel_unit(task, &format!("{field}.travel_unit"), s.travel_unit.as_ref())?;
         let ip = interpolation(
             task,
@@ -427,6 +436,7 @@ pub(crate) fn read(
                 travel,
                 working,
                 window,
+                arm,
             },
         });
     }
