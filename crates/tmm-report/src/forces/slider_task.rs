@@ -55,6 +55,67 @@ type S<T> = toml::Spanned<T>;
 pub(crate) struct CycleSec {
     turns: Option<S<i64>>,
     start: Option<Qty>,
+    step: Option<Qty>,
+    diagrams: Option<S<Vec<S<String>>>>,
+    hodographs: Option<S<Vec<S<String>>>>,
+}
+
+/// The reactions over the whole cycle (`[forces.cycle] step`, `diagrams`,
+/// `hodographs`): every reaction at every `step` of the machine's cycle,
+/// the chosen ones drawn against the cycle angle and as hodographs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReactionCycleSpec {
+    /// The step of the cycle angle, rad (it divides the cycle).
+    pub step: f64,
+    /// The reactions (`R50`) and guide couples (`M50`) to draw over the cycle, with their spans.
+    pub diagrams: Vec<(String, Range<usize>)>,
+    /// The reactions whose hodographs to draw, with their spans.
+    pub hodographs: Vec<(String, Range<usize>)>,
+}
+
+/// The most steps of the reaction table over a cycle (0.1° on a 720° cycle).
+pub const MAX_REACTION_STEPS: usize = 7200;
+
+/// Read `step`, `diagrams` and `hodographs` of `[forces.cycle]`: `None`
+/// when none is given; the step defaults to 1°.
+pub(crate) fn reaction_cycle(task: &TaskSource, cycle_sec: Option<&S<CycleSec>>, turns: u32) -> Result<Option<ReactionCycleSpec>, Error> {
+    let Some(c) = cycle_sec else { return Ok(None) };
+    let cr = c.get_ref();
+    if cr.step.is_none() && cr.diagrams.is_none() && cr.hodographs.is_none() {
+        return Ok(None);
+    }
+    let period = std::f64::consts::TAU * f64::from(turns.max(1));
+    let step = match &cr.step {
+        None => 1f64.to_radians(),
+        Some(q) => {
+            let v = qty(task, "forces.cycle.step", q, Dim::Angle)?;
+            let n = period / v;
+            if !(v.is_finite() && v > 0.0 && (n - n.round()).abs() <= 1e-6 * n && n.round() >= 12.0 && n.round() <= MAX_REACTION_STEPS as f64) {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    "forces.cycle.step",
+                    format!(
+                        "the step must divide the cycle of {}° into 12 to {MAX_REACTION_STEPS} equal parts, not {}°",
+                        period.to_degrees(),
+                        v.to_degrees()
+                    ),
+                )
+                .with_help("step = \"1 deg\" (or 0.5, 2, 5, 10, 15, 30 deg)"));
+            }
+            period / n.round()
+        }
+    };
+    let names = |v: &Option<S<Vec<S<String>>>>| -> Vec<(String, Range<usize>)> {
+        v.as_ref()
+            .map(|v| v.get_ref().iter().map(|s| (s.get_ref().clone(), s.span())).collect())
+            .unwrap_or_default()
+    };
+    Ok(Some(ReactionCycleSpec {
+        step,
+        diagrams: names(&cr.diagrams),
+        hodographs: names(&cr.hodographs),
+    }))
 }
 
 /// One `[[forces.cylinders]]`.
