@@ -70,6 +70,7 @@ mod tests {
                 width_ratio: 0.15,
                 thickness_ratio: 0.08,
             },
+            speed_ratio: 1.0,
         };
         let s = size(3.5, &spec);
         let d_in = s.diameter - 2.0 * s.thickness;

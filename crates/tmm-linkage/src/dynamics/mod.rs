@@ -179,7 +179,7 @@ impl Dynamics {
             _ => ReducedCycle::new(&red, spec.points, &mut sol)?,
         };
         let md = cycle.driving_moment;
-        let ratio = spec.motor().map_or(1.0, |mo| mo.ratio);
+        let ratio = spec.motor_ratio(omega_m);
         if let Some(mo) = spec.motor() {
             check_motor(mo, md, omega_m, spec.delta)?;
         }
@@ -204,6 +204,8 @@ impl Dynamics {
             let on = match spec.flywheel.place {
                 FlywheelPlace::Crank => fw_crank,
                 FlywheelPlace::Motor => fw_crank / (ratio * ratio),
+                // equal kinetic energy through a speed ratio i: J_shaft = J_crank/i²
+                FlywheelPlace::Shaft => fw_crank / (spec.flywheel.speed_ratio * spec.flywheel.speed_ratio),
             };
             (on, Some(flywheel::size(on, &spec.flywheel)))
         } else {

@@ -77,6 +77,10 @@ pub enum FlywheelPlace {
     Crank,
     /// On the motor shaft (its inertia is the crank-shaft value / u²).
     Motor,
+    /// On another shaft turning [`FlywheelSpec::speed_ratio`] times as fast
+    /// as the crank (its inertia is the crank-shaft value / ratio²; the
+    /// book's П3 puts it on a shaft of the reducer, I_M = I_прM·(12/22)²).
+    Shaft,
 }
 
 /// The flywheel's shape, in proportions of its outer diameter D.
@@ -106,6 +110,8 @@ pub struct FlywheelSpec {
     pub density: f64,
     /// Its shape.
     pub shape: FlywheelShape,
+    /// With [`FlywheelPlace::Shaft`]: ω_shaft/ω_crank (> 0); else unused.
+    pub speed_ratio: f64,
 }
 
 impl Default for FlywheelSpec {
@@ -114,6 +120,7 @@ impl Default for FlywheelSpec {
             place: FlywheelPlace::Crank,
             density: STEEL_DENSITY,
             shape: FlywheelShape::Disc { width_ratio: 0.2 },
+            speed_ratio: 1.0,
         }
     }
 }
@@ -157,8 +164,14 @@ pub struct DynamicsSpec {
     /// wheel, a coupling), kg·m².
     pub inertia_crank_shaft: f64,
     /// Constant inertia on the motor shaft (rotor, gearbox reduced to the motor
-    /// shaft), kg·m²; needs a motor (for its ratio).
+    /// shaft), kg·m²; needs a motor or [`DynamicsSpec::motor_speed`] (for its ratio).
     pub inertia_motor_shaft: f64,
+    /// The motor shaft's speed when the driving moment is not a motor's
+    /// characteristic (rad/s, > 0): the motor shaft then turns
+    /// u = motor_speed/ω_m times as fast as the crank (П3: the rotor's
+    /// I₀ reduced to the crank as I₀·(ω_рот/ω_cp)², Chernaya & Timofeev
+    /// 2019, p. 133).
+    pub motor_speed: Option<f64>,
     /// The flywheel.
     pub flywheel: FlywheelSpec,
     /// Which stroke of the output is the working one (for resistance laws).
@@ -182,6 +195,7 @@ impl DynamicsSpec {
             driving: DrivingMoment::Constant,
             inertia_crank_shaft: 0.0,
             inertia_motor_shaft: 0.0,
+            motor_speed: None,
             flywheel: FlywheelSpec::default(),
             working: Working::Slower,
         }
@@ -192,6 +206,23 @@ impl DynamicsSpec {
         match &self.driving {
             DrivingMoment::Motor(m) => Some(m),
             DrivingMoment::Constant | DrivingMoment::Engine => None,
+        }
+    }
+
+    /// The motor shaft's speed ratio u = ω_motor/ω_crank at the crank's
+    /// nominal speed `omega_m`: the motor's gear ratio, else
+    /// `motor_speed/ω_m`, else 1 (no motor shaft).
+    ///
+    /// ```
+    /// let mut s = tmm_linkage::dynamics::DynamicsSpec::new(0.05);
+    /// s.motor_speed = Some(100.0);
+    /// assert!((s.motor_ratio(4.0) - 25.0).abs() < 1e-12);
+    /// ```
+    pub fn motor_ratio(&self, omega_m: f64) -> f64 {
+        match (self.motor(), self.motor_speed) {
+            (Some(m), _) => m.ratio,
+            (None, Some(w)) => w / omega_m.abs(),
+            (None, None) => 1.0,
         }
     }
 
@@ -270,21 +301,41 @@ impl DynamicsSpec {
                     ),
                 ));
             }
+        } else if let Some(w) = self.motor_speed {
+            if !(w.is_finite() && w > 0.0 && w <= MAX_MOTOR_SPEED) {
+                return Err(e(
+                    "dynamics.inertia.motor_speed",
+                    format!(
+                        "the motor shaft's speed must be > 0 and at most {MAX_MOTOR_SPEED:e} rad/s (about 1e7 rpm), not {} rad/s",
+                        show(w)
+                    ),
+                ));
+            }
         } else {
             if self.inertia_motor_shaft > 0.0 {
                 return Err(e(
                     "dynamics.inertia.motor_shaft",
-                    "an inertia on the motor shaft needs a motor (its gear ratio reduces it to the crank)".into(),
+                    "an inertia on the motor shaft needs a motor or the motor shaft's speed (inertia.motor_speed): its speed ratio reduces it to the crank".into(),
                 ));
             }
             if self.flywheel.place == FlywheelPlace::Motor {
                 return Err(e(
                     "dynamics.flywheel.place",
-                    "a flywheel on the motor shaft needs a motor (its gear ratio); put it on the crank shaft or give the motor".into(),
+                    "a flywheel on the motor shaft needs a motor or the motor shaft's speed (inertia.motor_speed); put it on the crank shaft or give one".into(),
                 ));
             }
         }
         let f = &self.flywheel;
+        if f.place == FlywheelPlace::Shaft && !(f.speed_ratio.is_finite() && (1.0 / MAX_RATIO..=MAX_RATIO).contains(&f.speed_ratio)) {
+            return Err(e(
+                "dynamics.flywheel.speed_ratio",
+                format!(
+                    "the flywheel shaft's speed ratio ω_shaft/ω_crank must be from {:e} to {MAX_RATIO:e}, not {}",
+                    1.0 / MAX_RATIO,
+                    show(f.speed_ratio)
+                ),
+            ));
+        }
         if !(f.density.is_finite() && f.density > 0.0) {
             return Err(e(
                 "dynamics.flywheel.density",

@@ -50,6 +50,14 @@ pub enum SliderLoadKind {
         working: Working,
         /// The window of the stroke where it acts, fractions of H: from, to.
         window: (f64, f64),
+        /// The arm l_p of the force's line of action (m): the line is
+        /// parallel to the guide, placed so that the force's moment about
+        /// the slider's point is F·l_p, F the force's component along the
+        /// guide's direction (П3: the cutting force's couple
+        /// M_5 = F_резX·l_p about S₅, Chernaya & Timofeev 2019, p. 131).
+        /// The line is the guide's line shifted by −l_p along the guide's
+        /// normal n (the direction turned +90°): (−l_p·n) × F·d = F·l_p.
+        arm: f64,
     },
     /// Friction of constant magnitude (N, ≥ 0) against the velocity.
     Friction {
@@ -139,7 +147,14 @@ impl SliderLoad {
                 travel,
                 working,
                 window,
+                arm,
             } => {
+                if !(arm.is_finite() && arm.abs() <= crate::limits::MAX_LENGTH) {
+                    return Err(ForceError::load(
+                        format!("{field}.arm"),
+                        format!("the arm must be a length within ±{} m, not {arm}", crate::limits::MAX_LENGTH),
+                    ));
+                }
                 let s = Stroke::find(m, self.link, *working)?;
                 let end = travel.end(s.travel);
                 let tol = 1e-9 * end;
@@ -195,13 +210,18 @@ impl ActiveSliderLoad {
     pub fn force(&self, sol: &Solution, psi: f64) -> (Vec2, Vec2) {
         let st = &sol.links[self.load.link];
         let p = st.pos(self.local);
+        let mut at = p;
         let f = match &self.load.kind {
             SliderLoadKind::Gas { indicator, .. } => {
                 let h = self.stroke.travel;
                 let s = self.stroke.travel_at(st).clamp(0.0, h);
                 self.push * (self.area * indicator.pressure(psi, s, h))
             }
-            SliderLoadKind::StrokeForce { table, travel, window, .. } => {
+            SliderLoadKind::StrokeForce {
+                table, travel, window, arm, ..
+            } => {
+                // the line of action l_p off the guide (see `arm`)
+                at = p - Vec2::new(-self.dir.y, self.dir.x) * *arm;
                 let ph = self.stroke.phase(sol);
                 let h = self.stroke.travel;
                 let s = ph.travel.clamp(0.0, h);
@@ -221,7 +241,7 @@ impl ActiveSliderLoad {
                 }
             }
         };
-        (f, p)
+        (f, at)
     }
 
     /// The crank angles (absolute, rad) where the load may jump or kink:

@@ -164,6 +164,57 @@ impl Stroke {
         coord_delta(self.coord, &self.start, s).abs()
     }
 
+    /// The crank angle from the start of the working stroke (rad, in the
+    /// direction of rotation) where the output's travel from the start of the
+    /// working stroke is `target` (0…H): on the working stroke when `working`,
+    /// else on the return. The travel is monotonic on each stroke between the
+    /// two dead positions, so bisection on the angle brackets it (derived
+    /// here; П3's φ′ and φ″, the crank angles where the cutting starts and
+    /// where the returning ram passes the overrun, Chernaya & Timofeev 2019,
+    /// p. 131).
+    ///
+    /// ```
+    /// use tmm_geom::Vec2;
+    /// use tmm_linkage::forces::stroke::{Stroke, Working};
+    /// use tmm_linkage::{AssemblyHint, HintKind, InputDef, LinkDef, Mechanism, MechanismDef, SliderDef};
+    /// // an axial crank-slider, r = 0.1, l = 0.4: the slider's x is r·cos φ + √(l² − r²·sin² φ);
+    /// // its decreasing stroke starts at the outer dead centre φ = 0
+    /// let def = MechanismDef {
+    ///     fixed: vec![("O".into(), Vec2::new(0.0, 0.0))],
+    ///     links: vec![LinkDef::bar("1", "O", "A", 0.1), LinkDef::bar("2", "A", "B", 0.4), LinkDef::block("3", "B")],
+    ///     sliders: vec![SliderDef { slider: "3".into(), point: "B".into(), guide_link: "frame".into(),
+    ///                               through: Vec2::new(0.0, 0.0), angle: 0.0, angle_on_slider: 0.0 }],
+    ///     input: Some(InputDef { link: "1".into(), pivot: "O".into(), pin: "A".into(), omega: 1.0, epsilon: 0.0 }),
+    ///     hints: vec![AssemblyHint { point: "B".into(), kind: HintKind::Near(Vec2::new(0.5, 0.0)) }],
+    ///     ..Default::default()
+    /// };
+    /// let m = Mechanism::new(&def).unwrap();
+    /// let s = Stroke::find(&m, m.link("3").unwrap(), Working::Decreasing).unwrap();
+    /// let mut sol = m.solution();
+    /// let a = s.angle_at_travel(&m, &mut sol, 0.05, true).unwrap();
+    /// let (r, l) = (0.1f64, 0.4f64);
+    /// let x = |f: f64| r * f.cos() + (l * l - (r * f.sin()).powi(2)).sqrt();
+    /// assert!((x(0.0) - x(a) - 0.05).abs() < 1e-9);
+    /// ```
+    pub fn angle_at_travel(&self, m: &Mechanism, sol: &mut Solution, target: f64, working: bool) -> Result<f64, ForceError> {
+        let (mut lo, mut hi) = if working { (0.0, self.work_span) } else { (self.work_span, 2.0 * PI) };
+        // g(angle) = travel − target grows on the working stroke and falls on the return
+        let sign = if working { 1.0 } else { -1.0 };
+        let mut g = |a: f64| -> Result<f64, ForceError> {
+            m.solve(self.phi_start + self.dir * a, sol)?;
+            Ok(sign * (self.travel_at(&sol.links[self.output]) - target))
+        };
+        for _ in 0..64 {
+            let mid = 0.5 * (lo + hi);
+            if g(mid)? < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(0.5 * (lo + hi))
+    }
+
     /// The phase of the cycle of a solved position.
     #[inline]
     pub fn phase(&self, sol: &Solution) -> Phase {

@@ -55,7 +55,8 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
     };
     let flywheel = d.flywheel.map(|f| {
         json!({
-            "place": match sp.flywheel.place { FlywheelPlace::Crank => "crank", FlywheelPlace::Motor => "motor" },
+            "place": match sp.flywheel.place { FlywheelPlace::Crank => "crank", FlywheelPlace::Motor => "motor", FlywheelPlace::Shaft => "shaft" },
+            "speed_ratio": num(match sp.flywheel.place { FlywheelPlace::Crank => 1.0, FlywheelPlace::Motor => d.flywheel_inertia_crank / d.flywheel_inertia, FlywheelPlace::Shaft => sp.flywheel.speed_ratio }),
             "shape": match sp.flywheel.shape { FlywheelShape::Disc { .. } => "disc", FlywheelShape::Rim { .. } => "rim" },
             "density": num(sp.flywheel.density),
             "inertia": num(d.flywheel_inertia),

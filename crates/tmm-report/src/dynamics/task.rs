@@ -67,6 +67,7 @@ struct MotorSec {
 struct InertiaSec {
     crank_shaft: Option<Qty>,
     motor_shaft: Option<Qty>,
+    motor_speed: Option<Qty>,
 }
 
 #[derive(Deserialize)]
@@ -77,6 +78,8 @@ struct FlywheelSec {
     shape: Option<S<String>>,
     width_ratio: Option<Qty>,
     thickness_ratio: Option<Qty>,
+    inner_ratio: Option<Qty>,
+    speed_ratio: Option<Qty>,
 }
 
 /// The `[dynamics]` section, read and checked field by field.
@@ -123,10 +126,14 @@ pub fn help_for(field: &str) -> &'static str {
         | "dynamics.motor.ratio" => {
             "[dynamics.motor] synchronous_speed = \"1500 rpm\", nominal_speed = \"1420 rpm\" (below the synchronous), nominal_torque = \"40 N m\", ratio = 1.6 (ω_motor/ω_crank: about nominal_speed / the crank's speed, so that the motor under the machine's mean moment turns the crank at its [linkage] speed)"
         }
-        "dynamics.inertia" | "dynamics.inertia.crank_shaft" | "dynamics.inertia.motor_shaft" => {
-            "[dynamics.inertia] crank_shaft = \"0.05 kg m^2\", motor_shaft = \"0.01 kg m^2\" (0 to 1e12 kg·m²; the motor shaft's needs a motor)"
+        "dynamics.inertia" | "dynamics.inertia.crank_shaft" | "dynamics.inertia.motor_shaft" | "dynamics.inertia.motor_speed" => {
+            "[dynamics.inertia] crank_shaft = \"0.05 kg m^2\", motor_shaft = \"0.01 kg m^2\" (0 to 1e12 kg·m²; the motor shaft's needs a motor or motor_speed = \"950 rpm\", the rotor's speed with a constant driving moment, > 0)"
         }
-        "dynamics.flywheel.place" => "place = \"crank\" (the default) or \"motor\" (needs a motor)",
+        "dynamics.flywheel.place" => {
+            "place = \"crank\" (the default), \"motor\" (needs a motor or inertia.motor_speed) or \"shaft\" (with speed_ratio = ω_shaft/ω_crank)"
+        }
+        "dynamics.flywheel.speed_ratio" => "speed_ratio = 1.8333 (ω_shaft/ω_crank of the flywheel's shaft, 1e-6 … 1e6; only with place = \"shaft\")",
+        "dynamics.flywheel.inner_ratio" => "inner_ratio = 0.8 (a rim's inner diameter over its outer, D₁/D₂, 0.001 … 0.998; only with shape = \"rim\", instead of thickness_ratio)",
         "dynamics.flywheel.density" => {
             "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³; 10 … 100 000 kg/m³"
         }
@@ -300,6 +307,20 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
                 *slot = qty(task, &field, q, Dim::Inertia).map_err(|e| e.with_help(help_for(&field)))?;
             }
         }
+        if let Some(q) = &ir.motor_speed {
+            let field = "dynamics.inertia.motor_speed";
+            spans.insert(field.to_string(), q.span());
+            if spec.motor().is_some() {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    field,
+                    "the motor's speed ratio is [dynamics.motor] ratio; motor_speed is for a drive of constant moment",
+                )
+                .with_help(help_for(field)));
+            }
+            spec.motor_speed = Some(qty(task, field, q, Dim::AngularVelocity).map_err(|e| e.with_help(help_for(field)))?);
+        }
     }
     if let Some(fw) = &sec.flywheel {
         spans.insert("dynamics.flywheel".to_string(), fw.span());
@@ -310,6 +331,7 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
             fs.place = match p.get_ref().as_str() {
                 "crank" => FlywheelPlace::Crank,
                 "motor" => FlywheelPlace::Motor,
+                "shaft" => FlywheelPlace::Shaft,
                 other => {
                     return Err(
                         Error::at(task, p.span(), "dynamics.flywheel.place", format!("unknown place `{other}`"))
@@ -336,7 +358,52 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
             }
         };
         let width_ratio = ratio("width_ratio", &fr.width_ratio, 0.2)?;
-        let thickness_ratio = ratio("thickness_ratio", &fr.thickness_ratio, 0.0)?;
+        let mut thickness_ratio = ratio("thickness_ratio", &fr.thickness_ratio, 0.0)?;
+        let inner_ratio = ratio("inner_ratio", &fr.inner_ratio, 0.0)?;
+        fs.speed_ratio = ratio("speed_ratio", &fr.speed_ratio, 1.0)?;
+        match (&fr.speed_ratio, fs.place) {
+            (Some(q), p) if p != FlywheelPlace::Shaft => {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    "dynamics.flywheel.speed_ratio",
+                    "a speed ratio needs place = \"shaft\" (the crank's ratio is 1, the motor's comes from the motor)",
+                )
+                .with_help(help_for("dynamics.flywheel.speed_ratio")));
+            }
+            (None, FlywheelPlace::Shaft) => {
+                return Err(Error::at(
+                    task,
+                    fr.place.as_ref().map_or(fw.span(), |p| p.span()),
+                    "dynamics.flywheel.speed_ratio",
+                    "a flywheel on another shaft needs that shaft's speed ratio ω_shaft/ω_crank",
+                )
+                .with_help(help_for("dynamics.flywheel.speed_ratio")));
+            }
+            _ => {}
+        }
+        if let Some(q) = &fr.inner_ratio {
+            // a rim of outer diameter D₂ and inner D₁ = r·D₂: h = (D₂ − D₁)/2 = (1 − r)/2·D₂
+            if fr.thickness_ratio.is_some() {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    "dynamics.flywheel.inner_ratio",
+                    "give the rim's inner_ratio (D₁/D₂) or its thickness_ratio (h/D), not both",
+                )
+                .with_help(help_for("dynamics.flywheel.inner_ratio")));
+            }
+            if !(1e-3..=0.998).contains(&inner_ratio) {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    "dynamics.flywheel.inner_ratio",
+                    format!("{inner_ratio:e} is outside the accepted range 0.001 … 0.998 (D₁ < D₂)"),
+                )
+                .with_help(help_for("dynamics.flywheel.inner_ratio")));
+            }
+            thickness_ratio = 0.5 * (1.0 - inner_ratio);
+        }
         // the sizes go as (I/(ρ·ratio))^(1/5): a ratio or density near zero
         // gives a flywheel of infinite size, so each is held to a range that
         // covers every real flywheel (a thin ring to a drum; cork to tungsten)
@@ -376,19 +443,19 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
         spans.insert("dynamics.flywheel.shape".to_string(), shape_span.clone());
         fs.shape = match shape {
             "disc" => {
-                if let Some(t) = &fr.thickness_ratio {
+                if let Some(t) = fr.thickness_ratio.as_ref().or(fr.inner_ratio.as_ref()) {
                     return Err(Error::at(
                         task,
                         t.span(),
                         "dynamics.flywheel.thickness_ratio",
-                        "a disc has no rim thickness; say shape = \"rim\" or remove thickness_ratio",
+                        "a disc has no rim thickness; say shape = \"rim\" or remove thickness_ratio and inner_ratio",
                     )
                     .with_help(help_for("dynamics.flywheel.shape")));
                 }
                 FlywheelShape::Disc { width_ratio }
             }
             "rim" => {
-                if fr.thickness_ratio.is_none() {
+                if fr.thickness_ratio.is_none() && fr.inner_ratio.is_none() {
                     return Err(Error::at(
                         task,
                         shape_span,

@@ -148,6 +148,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
             let place = match sp.flywheel.place {
                 FlywheelPlace::Crank => "crank shaft",
                 FlywheelPlace::Motor => "motor shaft",
+                FlywheelPlace::Shaft => "shaft",
             };
             let shape = match sp.flywheel.shape {
                 FlywheelShape::Disc { width_ratio } => format!("disc, b/D = {}", sci(width_ratio)),
@@ -163,7 +164,15 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
                 if sp.flywheel.place == FlywheelPlace::Motor {
                     format!(
                         "on the {place}, ÷ u² = {:.4}: J = {:.6} kg·m²",
-                        sp.motor().map_or(1.0, |m| m.ratio * m.ratio),
+                        d.flywheel_inertia_crank / d.flywheel_inertia,
+                        d.flywheel_inertia
+                    )
+                } else if sp.flywheel.place == FlywheelPlace::Shaft {
+                    format!(
+                        "on the {place} turning {} times as fast as the crank, ÷ {}² = {:.6}: J = {:.6} kg·m²",
+                        sci(sp.flywheel.speed_ratio),
+                        sci(sp.flywheel.speed_ratio),
+                        sp.flywheel.speed_ratio * sp.flywheel.speed_ratio,
                         d.flywheel_inertia
                     )
                 } else {

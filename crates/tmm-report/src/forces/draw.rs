@@ -447,6 +447,21 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
         }),
     );
     docs.add_text(format!("{dir}balancing-torque.svg"), svg)?;
+    // the chosen reactions over the cycle and their hodographs
+    if let Some(rc) = &a.reaction_cycle {
+        for name in &rc.diagrams {
+            if let Some(svg) = rc.diagram(lang, name) {
+                docs.add_text(format!("{dir}reaction-{name}.svg"), svg)?;
+            }
+        }
+        for name in &rc.hodographs {
+            for (polar, suffix) in [(false, ""), (true, "-polar")] {
+                if let Some(svg) = rc.hodograph(lang, name, polar) {
+                    docs.add_text(format!("{dir}hodograph-{name}{suffix}.svg"), svg)?;
+                }
+            }
+        }
+    }
     if let Some(b) = &a.beam {
         let link = &m.link_names[b.beam.link];
         for (key, name, unit, idx) in [

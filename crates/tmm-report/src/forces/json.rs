@@ -115,6 +115,18 @@ pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
         "max_relative_difference": num(max_diff),
         "lever": a.lever.iter().map(|x| json!({"label": x.label, "image": [num(x.image.x), num(x.image.y)], "force": [num(x.force.x), num(x.force.y)]})).collect::<Vec<_>>(),
     });
+    if let Some(rc) = &a.reaction_cycle {
+        doc["reaction_cycle"] = rc.json();
+    }
+    if !a.windows.is_empty() {
+        doc["stroke_windows"] = json!(a.windows.iter().map(|w| json!({
+            "load": t.slider_fields.get(w.load),
+            "window": [num(w.window.0), num(w.window.1)],
+            "stroke": num(w.stroke),
+            "phi_start": num(w.phi_start),
+            "start": num(w.on), "end": num(w.off), "return": num(w.back), "overrun": num(w.overrun),
+        })).collect::<Vec<_>>());
+    }
     if let Some(b) = &a.beam {
         let s = &b.sizes;
         let at = |i: usize| b.samples.get(i).map_or(Value::Null, |x| num(x.z));

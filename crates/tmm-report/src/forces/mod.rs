@@ -8,6 +8,7 @@
 
 mod draw;
 mod json;
+pub mod reaction_cycle;
 mod slider_task;
 pub mod task;
 mod text;
@@ -77,6 +78,33 @@ pub struct Analysis {
     pub curve: Vec<[f64; 4]>,
     /// The strength of a link, if asked.
     pub beam: Option<BeamResult>,
+    /// The reactions at every step of the cycle, if asked (`[forces.cycle] step`).
+    pub reaction_cycle: Option<reaction_cycle::ReactionCycle>,
+    /// Each windowed stroke force's angles, if any.
+    pub windows: Vec<WindowAngles>,
+}
+
+/// Where a force on one stroke with a window (the shaper's overrun) starts
+/// and stops acting, as cycle angles from the start of its acting stroke
+/// (rad, in the direction of rotation): the book's φ′ and φ″ (П3, p. 131).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WindowAngles {
+    /// The load's index in [`tmm_linkage::forces::Loads::sliders`].
+    pub load: usize,
+    /// The window, fractions of the stroke.
+    pub window: (f64, f64),
+    /// The stroke H, m.
+    pub stroke: f64,
+    /// The acting stroke's start, absolute crank angle, rad.
+    pub phi_start: f64,
+    /// Where the slider enters the window on the acting stroke (φ′).
+    pub on: f64,
+    /// Where it leaves the window on the acting stroke.
+    pub off: f64,
+    /// Where, returning, it passes the window's start again (φ″).
+    pub back: f64,
+    /// The crank's turn with the slider within the first overrun, φ′ + (2π − φ″).
+    pub overrun: f64,
 }
 
 /// Turn a core force error into a located input error.
@@ -238,6 +266,80 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
             curve.push([psi, tmm_geom::angle::wrap_2pi(phi), r.fs.balancing_moment, r.fs.zhukovsky_moment]);
         }
     }
+    let reaction_cycle = match &t.reaction_cycle {
+        None => None,
+        Some(spec) => {
+            let lumped = dynamics.as_ref().map(|(_, d)| reaction_cycle::Lumped {
+                inertia: d.motion.inertia_constant - d.inertia_given.crank,
+                moment: sg * d.cycle.driving_moment,
+            });
+            let mut rc = reaction_cycle::ReactionCycle::new(
+                spec.step,
+                &m.link_names,
+                &detail.fs,
+                spec.diagrams.iter().map(|d| d.0.clone()).collect(),
+                spec.hodographs.iter().map(|d| d.0.clone()).collect(),
+                lumped,
+            );
+            let drawable = rc.drawable();
+            for (key, list) in [("diagrams", &spec.diagrams), ("hodographs", &spec.hodographs)] {
+                for (i, (name, span)) in list.iter().enumerate() {
+                    let ok = if key == "hodographs" {
+                        rc.names.contains(name)
+                    } else {
+                        drawable.contains(name)
+                    };
+                    if !ok {
+                        return Err(Error::at(
+                            src,
+                            span.clone(),
+                            &format!("forces.cycle.{key}[{i}]"),
+                            format!("no reaction `{name}` in this mechanism"),
+                        )
+                        .with_help(format!(
+                            "name one of {} (R_ij: the force on link i by link j, 0 the frame{})",
+                            if key == "hodographs" { rc.names.join(", ") } else { drawable.join(", ") },
+                            if key == "hodographs" { "" } else { "; M_ij: a guide's reaction couple" }
+                        )));
+                    }
+                }
+            }
+            let period = TAU * turns as f64;
+            let n = (period / spec.step).round() as usize;
+            for i in 0..=n {
+                let psi = period * i as f64 / n as f64;
+                let start = if turns > 1 { k.cycle_start } else { c.start };
+                let phi = start + sg * psi;
+                let r = solve(String::new(), phi, if turns > 1 { Some(psi) } else { None }, &mut k)?;
+                rc.push(psi, tmm_geom::angle::wrap_2pi(phi), r.sol.links[m.crank.link].eps, &r.fs);
+            }
+            Some(rc)
+        }
+    };
+    let mut windows = Vec::new();
+    for (j, a) in k.sliders.iter().enumerate() {
+        if let tmm_linkage::forces::SliderLoadKind::StrokeForce { window, .. } = a.load.kind {
+            if window == (0.0, 1.0) {
+                continue;
+            }
+            let st = &a.stroke;
+            let mut s2 = m.solution();
+            let h = st.travel;
+            let on = st.angle_at_travel(m, &mut s2, window.0 * h, true).map_err(loc)?;
+            let off = st.angle_at_travel(m, &mut s2, window.1 * h, true).map_err(loc)?;
+            let back = st.angle_at_travel(m, &mut s2, window.0 * h, false).map_err(loc)?;
+            windows.push(WindowAngles {
+                load: j,
+                window,
+                stroke: h,
+                phi_start: st.phi_start,
+                on,
+                off,
+                back,
+                overrun: on + (TAU - back),
+            });
+        }
+    }
     let lever = lever_forces(m, &k.loads, &detail.sol, &detail.fs);
     let beam = match &t.strength {
         Some(s) => {
@@ -262,6 +364,8 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
         lever,
         curve,
         beam,
+        reaction_cycle,
+        windows,
     })
 }
 

@@ -25,6 +25,7 @@
 //! link = "5"
 //! stroke = "working"             # working (the slower) | increasing | decreasing
 //! window = [0.05, 0.95]          # fractions of the stroke where it acts
+//! arm = "0.09 m"                 # the couple F·arm about the slider's point (П3's l_p)
 //! travel_unit = "m"
 //! travel = [0, 0.3]
 //! force = [400, 600]             # N, against the motion on that stroke
@@ -54,6 +55,67 @@ type S<T> = toml::Spanned<T>;
 pub(crate) struct CycleSec {
     turns: Option<S<i64>>,
     start: Option<Qty>,
+    step: Option<Qty>,
+    diagrams: Option<S<Vec<S<String>>>>,
+    hodographs: Option<S<Vec<S<String>>>>,
+}
+
+/// The reactions over the whole cycle (`[forces.cycle] step`, `diagrams`,
+/// `hodographs`): every reaction at every `step` of the machine's cycle,
+/// the chosen ones drawn against the cycle angle and as hodographs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReactionCycleSpec {
+    /// The step of the cycle angle, rad (it divides the cycle).
+    pub step: f64,
+    /// The reactions (`R50`) and guide couples (`M50`) to draw over the cycle, with their spans.
+    pub diagrams: Vec<(String, Range<usize>)>,
+    /// The reactions whose hodographs to draw, with their spans.
+    pub hodographs: Vec<(String, Range<usize>)>,
+}
+
+/// The most steps of the reaction table over a cycle (0.1° on a 720° cycle).
+pub const MAX_REACTION_STEPS: usize = 7200;
+
+/// Read `step`, `diagrams` and `hodographs` of `[forces.cycle]`: `None`
+/// when none is given; the step defaults to 1°.
+pub(crate) fn reaction_cycle(task: &TaskSource, cycle_sec: Option<&S<CycleSec>>, turns: u32) -> Result<Option<ReactionCycleSpec>, Error> {
+    let Some(c) = cycle_sec else { return Ok(None) };
+    let cr = c.get_ref();
+    if cr.step.is_none() && cr.diagrams.is_none() && cr.hodographs.is_none() {
+        return Ok(None);
+    }
+    let period = std::f64::consts::TAU * f64::from(turns.max(1));
+    let step = match &cr.step {
+        None => 1f64.to_radians(),
+        Some(q) => {
+            let v = qty(task, "forces.cycle.step", q, Dim::Angle)?;
+            let n = period / v;
+            if !(v.is_finite() && v > 0.0 && (n - n.round()).abs() <= 1e-6 * n && n.round() >= 12.0 && n.round() <= MAX_REACTION_STEPS as f64) {
+                return Err(Error::at(
+                    task,
+                    q.span(),
+                    "forces.cycle.step",
+                    format!(
+                        "the step must divide the cycle of {}° into 12 to {MAX_REACTION_STEPS} equal parts, not {}°",
+                        period.to_degrees(),
+                        v.to_degrees()
+                    ),
+                )
+                .with_help("step = \"1 deg\" (or 0.5, 2, 5, 10, 15, 30 deg)"));
+            }
+            period / n.round()
+        }
+    };
+    let names = |v: &Option<S<Vec<S<String>>>>| -> Vec<(String, Range<usize>)> {
+        v.as_ref()
+            .map(|v| v.get_ref().iter().map(|s| (s.get_ref().clone(), s.span())).collect())
+            .unwrap_or_default()
+    };
+    Ok(Some(ReactionCycleSpec {
+        step,
+        diagrams: names(&cr.diagrams),
+        hodographs: names(&cr.hodographs),
+    }))
 }
 
 /// One `[[forces.cylinders]]`.
@@ -87,6 +149,7 @@ pub(crate) struct StrokeForceSec {
     link: S<String>,
     stroke: Option<S<String>>,
     window: Option<S<Vec<f64>>>,
+    arm: Option<Qty>,
     travel_unit: Option<S<String>>,
     interpolation: Option<S<String>>,
     travel: S<Vec<f64>>,
@@ -411,6 +474,13 @@ pub(crate) fn read(
                 (v[0], v[1])
             }
         };
+        let arm = match &s.arm {
+            None => 0.0,
+            Some(a) => {
+                spans.insert(format!("{key}.arm"), a.span());
+                qty(task, &format!("{field}.arm"), a, Dim::Length)?
+            }
+        };
         let (travel, xs) = travel_unit(task, &format!("{field}.travel_unit"), s.travel_unit.as_ref())?;
         let ip = interpolation(
             task,
@@ -427,6 +497,7 @@ pub(crate) fn read(
                 travel,
                 working,
                 window,
+                arm,
             },
         });
     }

@@ -149,6 +149,8 @@ pub struct ForcesTask {
     /// The task's name of each slider load (`cylinders[0]`,
     /// `stroke_forces[0]`, `friction[0]`), as [`Loads::sliders`].
     pub slider_fields: Vec<String>,
+    /// The reactions over the whole cycle, when asked (`[forces.cycle] step`).
+    pub reaction_cycle: Option<super::slider_task::ReactionCycleSpec>,
 }
 
 fn link_index(task: &TaskSource, m: &Mechanism, field: &str, name: &S<String>) -> Result<usize, Error> {
@@ -349,6 +351,7 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         &mut loads.sliders,
         &mut spans,
     )?;
+    let reaction_cycle = super::slider_task::reaction_cycle(task, sec.cycle.as_ref(), loads.cycle.turns)?;
     let slider_fields = (0..cyl.len())
         .map(|k| format!("cylinders[{k}]"))
         .chain((0..strk.len()).map(|k| format!("stroke_forces[{k}]")))
@@ -363,6 +366,7 @@ pub fn read(task: &TaskSource, def: &MechanismDef, m: &Mechanism) -> Result<Opti
         spans,
         section,
         slider_fields,
+        reaction_cycle,
     }))
 }
 

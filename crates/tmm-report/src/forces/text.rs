@@ -63,6 +63,32 @@ fn cycle_tables(out: &mut String, l: &Loaded, t: &ForcesTask, a: &Analysis) {
     }
 }
 
+/// Where each windowed stroke force starts and stops acting (the shaper's
+/// overrun: the book's φ′, φ″ and Δφ_пер).
+fn windows(out: &mut String, l: &Loaded, t: &ForcesTask, a: &Analysis) {
+    let m = &l.mech;
+    for w in &a.windows {
+        let name = t.slider_fields.get(w.load).map_or("?", |s| s.as_str());
+        let link = t.loads.sliders.get(w.load).map_or("?", |s| m.link_names[s.link].as_str());
+        let _ = writeln!(
+            out,
+            "\n{name} on {link}: acts within {:.4}…{:.4} of the stroke H = {:.6} m ({:.6}…{:.6} m), the acting stroke starting at crank angle {:.4}°. Crank angles from that start, in the direction of rotation: it starts acting at φ′ = {:.4}°, stops at {:.4}°; returning, the slider passes {:.6} m again at φ″ = {:.4}°; the crank turns Δφ = φ′ + (360° − φ″) = {:.4}° with the slider within the first {:.6} m",
+            w.window.0,
+            w.window.1,
+            w.stroke,
+            w.window.0 * w.stroke,
+            w.window.1 * w.stroke,
+            tmm_geom::angle::wrap_2pi(w.phi_start).to_degrees(),
+            w.on.to_degrees(),
+            w.off.to_degrees(),
+            w.window.0 * w.stroke,
+            w.back.to_degrees(),
+            w.overrun.to_degrees(),
+            w.window.0 * w.stroke,
+        );
+    }
+}
+
 /// The unit direction of a slider's frame guide (x when it has none).
 fn slider_dir(m: &tmm_linkage::Mechanism, link: usize) -> tmm_geom::Vec2 {
     m.pairs
@@ -236,6 +262,10 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
         );
     }
     cycle_tables(&mut out, l, t, a);
+    windows(&mut out, l, t, a);
+    if let Some(rc) = &a.reaction_cycle {
+        rc.text(&mut out);
+    }
     let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
     let (mn, mx) = a
         .curve
