@@ -44,13 +44,21 @@ use crate::{Mechanism, Solution};
 use super::single_stroke_energy::EnergyStroke;
 
 /// Relative tolerance of the stroke's time integration.
-pub const STROKE_RTOL: f64 = 1e-10;
+pub const STROKE_RTOL: f64 = 1e-12;
 
 /// The most output intervals over the cycle.
 pub const MAX_STROKE_POINTS: usize = 36_000;
 
 /// The largest time constant of the motor's dynamic characteristic, s.
 pub const MAX_TIME_CONSTANT: f64 = 10.0;
+
+/// The least nonzero one, s: a shorter lag changes nothing a course
+/// project sees, and would make the explicit integration take a step per
+/// fraction of it (stiff); 0 is the static characteristic.
+pub const MIN_TIME_CONSTANT: f64 = 1e-3;
+
+/// The most steps of the check by RK4 in the crank angle.
+pub const MAX_CHECK_STEPS: usize = 200_000;
 
 /// The most accepted steps of one stroke: a crank creeping towards a
 /// standstill without reaching it is reported as a stall there.
@@ -186,12 +194,13 @@ impl StrokeSpec {
                 ),
             );
         }
-        if !(self.time_constant.is_finite() && (0.0..=MAX_TIME_CONSTANT).contains(&self.time_constant)) {
+        let tau = self.time_constant;
+        if !(tau.is_finite() && (tau == 0.0 || (MIN_TIME_CONSTANT..=MAX_TIME_CONSTANT).contains(&tau))) {
             return e(
                 "dynamics.stroke.time_constant",
                 format!(
-                    "the motor's time constant τ must be from 0 (the static characteristic) to {MAX_TIME_CONSTANT} s, not {} s",
-                    show(self.time_constant)
+                    "the motor's time constant τ must be 0 (the static characteristic) or from {MIN_TIME_CONSTANT} to {MAX_TIME_CONSTANT} s (induction motors have some 0.01…0.1 s), not {} s",
+                    show(tau)
                 ),
             );
         }
@@ -263,9 +272,9 @@ pub struct BreakdownCrossing {
 pub struct EnergyBalance {
     /// The motor's work at the crank, ∫u·M·ω dt along the integration, J.
     pub motor_work: f64,
-    /// The loads' work ∫M_c dφ over the cycle, by 3-point Gauss–Legendre
-    /// quadrature on every interval of the output angles (independent of
-    /// the time integration), J.
+    /// The loads' work ∫M_c dφ over the cycle, by [`work`] on every
+    /// interval of the output angles (independent of the time
+    /// integration), J.
     pub loads_work: f64,
     /// Kinetic energy at the start, ½·I_Σ(0)·ω(0)², J.
     pub kinetic_start: f64,
@@ -331,8 +340,10 @@ pub struct SingleStroke {
     pub motor: MotorStroke,
     /// The constant-moment stroke by the energy equation.
     pub energy: EnergyStroke,
-    /// The motor-driven stroke again by RK4 in the angle.
-    pub check: AngleCheck,
+    /// The motor-driven stroke again by RK4 in the angle (`None` when the
+    /// motor's lag is so short against the slowest crank travel that the
+    /// fixed steps would be more than [`MAX_CHECK_STEPS`]).
+    pub check: Option<AngleCheck>,
 }
 
 impl SingleStroke {
@@ -343,7 +354,17 @@ impl SingleStroke {
         let mut sol = red.solution();
         let motor = integrate(&red, spec, &mut sol)?;
         let energy = EnergyStroke::compute(&red, spec, &mut sol)?;
-        let check = by_angle(&red, spec, 20_000, &mut sol)?;
+        // with the lag, RK4 in φ is stable for steps below some τ·ω
+        let n = if spec.time_constant > 0.0 {
+            (red.period / (spec.time_constant * motor.omega_min)).ceil().max(20_000.0)
+        } else {
+            20_000.0
+        };
+        let check = if n <= MAX_CHECK_STEPS as f64 {
+            Some(by_angle(&red, spec, n as usize, &mut sol)?)
+        } else {
+            None
+        };
         Ok(SingleStroke {
             spec: spec.clone(),
             inertia_constant: red.inertia_crank + spec.inertia_constant,
@@ -420,6 +441,25 @@ fn show_short(x: f64) -> String {
     } else {
         format!("{x:.4e}")
     }
+}
+
+/// ∫ M_c dφ from `a` to `b` (a short interval, a ≤ b): 3-point
+/// Gauss–Legendre ([`Reducer::work`], cut at the output's dead positions),
+/// the interval halved until the whole and its halves agree to 1e-10 — a
+/// load table's knots (where M_c kinks inside an interval) are so resolved
+/// without knowing where they are (at most 24 halvings).
+pub fn work(red: &Reducer, a: f64, b: f64, sol: &mut Solution) -> Result<f64, DynamicsError> {
+    fn go(red: &Reducer, a: f64, b: f64, whole: f64, depth: u32, sol: &mut Solution) -> Result<f64, DynamicsError> {
+        let m = 0.5 * (a + b);
+        let (l, r) = (red.work(a, m, sol)?, red.work(m, b, sol)?);
+        let halves = l + r;
+        if depth == 0 || (halves - whole).abs() <= 1e-10 * halves.abs().max(whole.abs()) {
+            return Ok(halves);
+        }
+        Ok(go(red, a, m, l, depth - 1, sol)? + go(red, m, b, r, depth - 1, sol)?)
+    }
+    let whole = red.work(a, b, sol)?;
+    go(red, a, b, whole, 24, sol)
 }
 
 /// The motor-driven stroke, integrated in time.
@@ -553,7 +593,7 @@ pub fn integrate(red: &Reducer, spec: &StrokeSpec, sol: &mut Solution) -> Result
     // ∫M_c dφ piecewise over the output angles (Gauss–Legendre on each)
     let mut loads_work = 0.0;
     for w in targets.windows(2) {
-        loads_work += red.work(w[0], w[1], &mut s)?;
+        loads_work += work(red, w[0], w[1], &mut s)?;
     }
     let kinetic_start = 0.5 * rows[0].inertia_total * w0 * w0;
     let kinetic_end = 0.5 * end.inertia_total * end.omega * end.omega;

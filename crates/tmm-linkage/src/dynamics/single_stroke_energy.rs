@@ -11,14 +11,15 @@
 //!   t(φ) = ∫₀^φ dφ/ω.
 //!
 //! The work of the loads is Gauss–Legendre quadrature between the nodes,
-//! cut at the output's dead positions ([`Reducer::work`]); the time is the
+//! cut at the output's dead positions and halved where a load table kinks
+//! ([`super::single_stroke::work`]); the time is the
 //! trapezoid rule with its Euler–Maclaurin end correction, exact to the
 //! fourth order: with g = 1/ω, g′ = −ε/ω³ (since dω/dφ = ε/ω),
 //! ∫ g ≈ h·(g₀ + g₁)/2 − h²·(g₁′ − g₀′)/12 (derived in docs/dynamics.md).
 
 use super::error::DynamicsError;
 use super::reduced::Reducer;
-use super::single_stroke::{StrokeSpec, angles, stall, travel};
+use super::single_stroke::{StrokeSpec, angles, stall, travel, work as work_between};
 use crate::Solution;
 
 /// One row of the constant-moment stroke.
@@ -76,7 +77,7 @@ impl EnergyStroke {
         let mut work = 0.0;
         for (k, &phi) in phis.iter().enumerate() {
             if k > 0 {
-                work += red.work(phis[k - 1], phi, sol)?;
+                work += work_between(red, phis[k - 1], phi, sol)?;
             }
             let r = red.eval(phi, sol)?;
             let i = i_const + r.inertia;
@@ -92,7 +93,7 @@ impl EnergyStroke {
                 let base = rows.last().map_or(0.0, |r| r.work_loads);
                 for _ in 0..60 {
                     let m = 0.5 * (a_ + b_);
-                    let e = md * m + base + red.work(lo, m, sol)? + t0_energy;
+                    let e = md * m + base + work_between(red, lo, m, sol)? + t0_energy;
                     if e > 0.0 {
                         a_ = m;
                     } else {

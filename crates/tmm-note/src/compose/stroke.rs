@@ -56,12 +56,16 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         (cx.w("st_q_omega_k")?, cx.qv("/dynamics/motor/crank_breakdown_speed", 1.0, "u_rad_s")?),
         (cx.w("st_q_motor_work")?, cx.qv("/dynamics/motor_driven/energy_balance/motor_work", 1.0, "u_j")?),
         (cx.w("st_q_loads_work")?, cx.qv("/dynamics/motor_driven/energy_balance/loads_work", 1.0, "u_j")?),
-        (cx.w("st_q_check_time")?, cx.qv("/dynamics/motor_driven/check/cycle_time", 1.0, "st_u_s")?),
+    ];
+    if cx.opt("/dynamics/motor_driven/check/cycle_time").is_some() {
+        given.push((cx.w("st_q_check_time")?, cx.qv("/dynamics/motor_driven/check/cycle_time", 1.0, "st_u_s")?));
+    }
+    given.extend([
         (cx.w("st_q_md2")?, cx.qv("/dynamics/constant_moment/driving_moment", 1.0, "u_nm")?),
         (cx.w("st_q_a_end")?, cx.qv("/dynamics/constant_moment/work_end", 1.0, "u_j")?),
         (cx.w("st_q_omega_end2")?, cx.qv("/dynamics/constant_moment/omega_end", 1.0, "u_rad_s")?),
         (cx.w("st_q_time_end2")?, cx.qv("/dynamics/constant_moment/time_end", 1.0, "st_u_s")?),
-    ];
+    ]);
     if cx.report.pointer("/dynamics/constant_moment/design").is_some_and(|v| !v.is_null()) {
         given.push((cx.w("st_q_eps_f2")?, cx.qv("/dynamics/constant_moment/design/epsilon", 1.0, "u_rad_s2")?));
         given.push((cx.w("st_q_travel_f")?, cx.qv("/dynamics/motor_driven/design/travel", 1.0, "st_u_m")?));
@@ -92,7 +96,13 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             continue;
         }
         let mut row = vec![num(deg)];
-        row.extend(cols.iter().map(|c| num(c.get(k).copied().unwrap_or(0.0))));
+        // the rounding noise of an exact zero (M_c at the dead positions)
+        // relative to the column's largest value prints as 0
+        row.extend(cols.iter().map(|c| {
+            let big = c.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+            let v = c.get(k).copied().unwrap_or(0.0);
+            num(if v.abs() < 1e-9 * big { 0.0 } else { v })
+        }));
         rows.push(row);
     }
     results.push(cx.table(

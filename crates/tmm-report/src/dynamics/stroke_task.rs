@@ -127,7 +127,7 @@ pub fn help_for(field: &str) -> &'static str {
         }
         "dynamics.stroke.start_speed" => "start_speed = \"synchronous\" (the motor's synchronous speed seen at the crank, the default) or a crank speed such as \"5 rad/s\"",
         "dynamics.stroke.constant_torque" => "constant_torque = \"breakdown\" (the motor's breakdown torque M_K, the default) or a torque on the motor shaft such as \"5 kN m\"",
-        "dynamics.stroke.time_constant" => "time_constant = \"0.02 s\" (τ of the dynamic characteristic τ·dM/dt + M = M_st; 0, the default, is the static characteristic; at most 10 s)",
+        "dynamics.stroke.time_constant" => "time_constant = \"0.02 s\" (τ of the dynamic characteristic τ·dM/dt + M = M_st; 0, the default, is the static characteristic; else 0.001 … 10 s)",
         "dynamics.stroke.design_angle" => "design_angle = \"120 deg\" (the design position, a cycle angle from 0° to 360°)",
         "dynamics" => {
             "a larger constant inertia ([dynamics.inertia] crank_shaft), a motor of larger breakdown torque, a higher start speed or smaller loads carry the machine through the cycle"

@@ -28,7 +28,7 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
         o,
         "φ is the crank angle turned {} from the start of the cycle at crank angle {:.3}°{}; the cycle ends at φ = 360°.",
         if red.dir > 0.0 { "counter-clockwise" } else { "clockwise" },
-        red.phi_start.to_degrees(),
+        red.phi_start.to_degrees().rem_euclid(360.0),
         if red.stroke.is_some() { " (the start of the working stroke)" } else { "" }
     );
     let _ = writeln!(
@@ -54,7 +54,7 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
             "static characteristic".to_string()
         }
     );
-    let _ = writeln!(o, "\nModel 1, the motor's characteristic (time integration, Dormand–Prince 5(4), rtol 1e-10):");
+    let _ = writeln!(o, "\nModel 1, the motor's characteristic (time integration, Dormand–Prince 5(4), rtol 1e-12):");
     let _ = writeln!(o, "  cycle time t_ц = {:.6} s (the event φ = 360°)", m.cycle_time);
     let _ = writeln!(o, "  ω at the end = {:.6} rad/s", m.omega_end);
     let _ = writeln!(
@@ -97,15 +97,17 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
         b.kinetic_end,
         b.residual
     );
-    let _ = writeln!(
-        o,
-        "  check by RK4 in the crank angle ({} steps): t_ц = {:.6} s ({:+.2e}), ω(360°) = {:.6} rad/s ({:+.2e})",
-        s.check.steps,
-        s.check.cycle_time,
-        (s.check.cycle_time - m.cycle_time) / m.cycle_time,
-        s.check.omega_end,
-        (s.check.omega_end - m.omega_end) / m.omega_end
-    );
+    if let Some(c) = &s.check {
+        let _ = writeln!(
+            o,
+            "  check by RK4 in the crank angle ({} steps): t_ц = {:.6} s ({:+.2e}), ω(360°) = {:.6} rad/s ({:+.2e})",
+            c.steps,
+            c.cycle_time,
+            (c.cycle_time - m.cycle_time) / m.cycle_time,
+            c.omega_end,
+            (c.omega_end - m.omega_end) / m.omega_end
+        );
+    }
     let _ = writeln!(o, "  steps: {} accepted, {} rejected", m.steps.0, m.steps.1);
     let _ = writeln!(
         o,
@@ -117,7 +119,7 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
     let _ = writeln!(o, "  t(360°) = {:.6} s", e.time_end);
     let _ = writeln!(o, "  least speed {:.6} rad/s", e.omega_min);
     if let (Some(d), Some(de)) = (&m.design, &e.design) {
-        let _ = writeln!(o, "\nDesign position φ = {:.3}° (crank angle {:.3}°), travel h = {:.5} m:", d.phi.to_degrees(), d.crank_angle.to_degrees(), d.travel);
+        let _ = writeln!(o, "\nDesign position φ = {:.3}° (crank angle {:.3}°), travel h = {:.5} m:", d.phi.to_degrees(), d.crank_angle.to_degrees().rem_euclid(360.0), d.travel);
         let _ = writeln!(
             o,
             "  I_II = {:.3} kg·m², I_Σ = {:.3} kg·m², M_c = {:.3} N·m",
