@@ -2,7 +2,9 @@
 //! `[linkage]` under the loads of `[forces]` reduced to its crank, the
 //! flywheel for the coefficient of speed fluctuation of `[dynamics]` by
 //! Merkalov's method, Wittenbauer's diagram and exactly, its size, the true
-//! ω1(φ), ε1(φ) and, with a motor, the run-up.
+//! ω1(φ), ε1(φ) and, with a motor, the run-up; with `motion =
+//! "single-stroke"` the unsteady single stroke driven by a motor by Kloss's
+//! formula and the constant-moment stroke beside it.
 
 use std::path::PathBuf;
 
@@ -32,6 +34,9 @@ pub fn run(a: &Args) -> Result<(), Error> {
         .as_ref()
         .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm dynamics examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
+    if tmm_report::dynamics::stroke_task::is_single_stroke(&task)? {
+        return single_stroke(a, &task);
+    }
     let (l, ft, dt) = load(&task)?.ok_or_else(|| {
         task.missing("dynamics", "the file has no [dynamics] section")
             .with_help("add [dynamics] with delta = 0.02 (the coefficient of speed fluctuation); see examples/seed-001-fourbar.toml")
@@ -44,6 +49,23 @@ pub fn run(a: &Args) -> Result<(), Error> {
     };
     let files = match &a.svg {
         Some(dir) => write_dir(dir, &drawings(&d, task.lang, task.sheet)?)?,
+        None => Vec::new(),
+    };
+    print(&if a.json { out } else { out + &written(&files) })
+}
+
+/// `motion = "single-stroke"`: the unsteady single stroke.
+fn single_stroke(a: &Args, task: &tmm_report::TaskSource) -> Result<(), Error> {
+    use tmm_report::dynamics::stroke;
+    let (l, ft, st) = stroke::load(task)?;
+    let s = stroke::analyse(task, &l, &ft, &st)?;
+    let out = if a.json {
+        json_text(&stroke::json_document(&l, &s))?
+    } else {
+        checked(stroke::text_report(&l, &s))?
+    };
+    let files = match &a.svg {
+        Some(dir) => write_dir(dir, &stroke::drawings(&s, task.lang, task.sheet)?)?,
         None => Vec::new(),
     };
     print(&if a.json { out } else { out + &written(&files) })

@@ -16,6 +16,11 @@
 //! - [`motion`]: ω(φ), ε(φ), t(φ) over the steady cycle;
 //! - [`ode`]: the Dormand–Prince 5(4) integrator;
 //! - [`simulate`]: the time integration: steady cycle and run-up;
+//! - [`kloss`]: an induction motor by Kloss's formula;
+//! - [`rk`]: Runge–Kutta integrators of any number of components;
+//! - [`single_stroke`], [`single_stroke_energy`]: the unsteady single
+//!   stroke driven by the motor, and under a constant moment by the energy
+//!   method;
 //! - [`error`]: what can go wrong.
 //!
 //! Derivations and the seed-001 flywheel: docs/dynamics.md.
@@ -50,12 +55,16 @@ pub mod error;
 pub mod exact;
 pub mod extremum;
 pub mod flywheel;
+pub mod kloss;
 pub mod merkalov;
 pub mod motion;
 pub mod ode;
 pub mod reduced;
 pub mod reduction;
+pub mod rk;
 pub mod simulate;
+pub mod single_stroke;
+pub mod single_stroke_energy;
 pub mod spec;
 pub mod wittenbauer;
 
@@ -63,11 +72,14 @@ pub use error::DynamicsError;
 use error::show;
 pub use exact::{Steady, Target};
 pub use flywheel::FlywheelSize;
+pub use kloss::KlossMotor;
 pub use merkalov::Merkalov;
 pub use motion::Motion;
 pub use reduced::{Reduced, Reducer, kinetic_energy, with_crank_motion};
 pub use reduction::{EnergyPoint, ReducedCycle};
 pub use simulate::{Runup, SimulatedCycle, Simulator};
+pub use single_stroke::{AngleCheck, BreakdownCrossing, EnergyBalance, MotorStroke, SingleStroke, StrokeRow, StrokeSpec};
+pub use single_stroke_energy::{EnergyRow, EnergyStroke};
 pub use spec::{DrivingMoment, DynamicsSpec, FlywheelPlace, FlywheelShape, FlywheelSpec, Motor, STEEL_DENSITY};
 pub use wittenbauer::{Tangent, Wittenbauer};
 

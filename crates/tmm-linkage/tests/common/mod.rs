@@ -255,3 +255,54 @@ pub fn random_loads(m: &Mechanism, rng: &mut Rng) -> Loads {
     }
     l
 }
+
+/// The textbook's П4 press (Chernaya & Timofeev 2019, p. 137–142;
+/// examples/textbook/p4-press.toml): crank OA = H/2 = 0.2 m, rod
+/// AB = 4.7·OA, S₂ at 2/3 of AB from A, the ram 3 at B on the vertical guide
+/// through O below it; the crank turns clockwise, assembled up (the ram at
+/// its top).
+pub fn press_def() -> MechanismDef {
+    let (r, l) = (0.2, 0.94);
+    let mut rod = LinkDef::bar("2", "A", "B", l);
+    rod.mass_center = v(2.0 * l / 3.0, 0.0);
+    MechanismDef {
+        fixed: vec![("O".into(), v(0.0, 0.0))],
+        links: vec![LinkDef::bar("1", "O", "A", r), rod, LinkDef::block("3", "B")],
+        sliders: vec![slider("3", "B", v(0.0, 0.0), 90.0)],
+        input: input("1", "O", "A", -2.0 * std::f64::consts::PI * 16.7 / 18.6),
+        hints: vec![near("B", 0.0, -0.74)],
+        assembly_angle: 90f64.to_radians(),
+        ..Default::default()
+    }
+}
+
+pub fn press() -> Mechanism {
+    Mechanism::new(&press_def()).unwrap()
+}
+
+/// П4's loads: rod 30 t, 5000 kg·m²; ram 50 t; gravity; the deformation
+/// force F/F_max = 0, 0, 0.1, 0.2, 1 at h/H = 0, 0.6, 0.62, 0.75, 1 (linear)
+/// with F_max = `f_max`, against the ram's motion on the down-stroke only.
+pub fn press_loads(m: &Mechanism, f_max: f64) -> Loads {
+    use tmm_linkage::forces::stroke::Working;
+    use tmm_linkage::forces::{Curve, Interpolation, SliderLoad, SliderLoadKind, TravelScale};
+    let mut l = Loads::new(m);
+    l.gravity = v(0.0, -9.81);
+    l.links[2].mass = 30e3;
+    l.links[2].inertia = 5e3;
+    l.links[3].mass = 50e3;
+    let pts: Vec<(f64, f64)> = [(0.0, 0.0), (0.6, 0.0), (0.62, 0.1), (0.75, 0.2), (1.0, 1.0)]
+        .iter()
+        .map(|&(h, f)| (h, f * f_max))
+        .collect();
+    l.sliders.push(SliderLoad {
+        link: 3,
+        kind: SliderLoadKind::StrokeForce {
+            table: Curve::new(&pts, Interpolation::Linear, "press").unwrap(),
+            travel: TravelScale::Stroke,
+            working: Working::Decreasing,
+            window: (0.0, 1.0),
+        },
+    });
+    l
+}

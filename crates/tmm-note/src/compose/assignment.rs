@@ -42,7 +42,7 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             rows,
         )?);
     }
-    if cx.report.get("dynamics").is_some() {
+    if cx.report.get("dynamics").is_some() && cx.s("/dynamics/motion") != Some("single-stroke") {
         b.push(cx.quantities(
             "assign_dynamics",
             vec![

@@ -8,7 +8,8 @@ use crate::model::{Block, Section};
 
 /// The section, if the report has `dynamics`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
-    if cx.report.get("dynamics").is_none() {
+    // the single stroke has its own section (stroke.rs)
+    if cx.report.get("dynamics").is_none() || cx.s("/dynamics/motion") == Some("single-stroke") {
         return Ok(None);
     }
     let statement = vec![

@@ -21,6 +21,7 @@ mod assignment;
 mod cam;
 mod context;
 mod dynamics;
+mod stroke;
 mod forces;
 mod gear;
 mod linkage;
@@ -102,11 +103,12 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         designation,
     };
     let mut sections = Vec::new();
-    let builders: [SectionBuilder; 7] = [
+    let builders: [SectionBuilder; 8] = [
         synthesis::section,
         linkage::section,
         forces::section,
         dynamics::section,
+        stroke::section,
         gear::section,
         planetary::section,
         cam::section,

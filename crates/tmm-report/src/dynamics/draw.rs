@@ -12,6 +12,8 @@
 
 use tmm_linkage::dynamics::Dynamics;
 
+pub(crate) mod stroke;
+
 use crate::Error;
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm};

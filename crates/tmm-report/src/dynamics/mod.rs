@@ -4,12 +4,18 @@
 //! coefficient of speed fluctuation δ by Merkalov's method, by Wittenbauer's
 //! energy–mass diagram and exactly, its size, the true ω₁(φ), ε₁(φ) and,
 //! with a motor, the run-up — as tables, one JSON document and SVG
-//! diagrams. The computation is `tmm_linkage::dynamics` (docs/dynamics.md).
+//! diagrams; with `motion = "single-stroke"` the unsteady single stroke
+//! ([`stroke`]). The computation is `tmm_linkage::dynamics` (docs/dynamics.md).
 
 #[doc(hidden)]
 pub mod draw;
 #[doc(hidden)]
 pub mod json;
+pub mod stroke;
+#[doc(hidden)]
+pub mod stroke_json;
+pub mod stroke_task;
+mod stroke_text;
 pub mod task;
 mod text;
 
@@ -60,6 +66,9 @@ pub fn analyse(src: &TaskSource, l: &Loaded, ft: &ForcesTask, dt: &DynamicsTask)
 
 /// Run the `[dynamics]` section of a task: documents under `dynamics/`.
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
+    if stroke_task::is_single_stroke(task)? {
+        return stroke::run_section(task).map(Some);
+    }
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
     let mut docs = Documents::for_task(task);
@@ -80,6 +89,9 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
 /// drawings when [`crate::run::Staged::drawings`] is called (the same
 /// documents as [`run_section`]'s).
 pub fn run_staged(task: &TaskSource) -> Result<Option<crate::run::Staged>, Error> {
+    if stroke_task::is_single_stroke(task)? {
+        return stroke::run_staged(task).map(Some);
+    }
     let Some((l, ft, dt)) = load(task)? else { return Ok(None) };
     let d = analyse(task, &l, &ft, &dt)?;
     let (lang, sheet) = (task.lang, task.sheet);

@@ -45,6 +45,7 @@ struct File {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct DynamicsSec {
+    motion: Option<S<String>>,
     delta: Option<Qty>,
     points: Option<S<i64>>,
     driving: Option<S<String>>,
@@ -201,6 +202,17 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
     let section = sec.span();
     let sec = sec.into_inner();
     let mut spans = BTreeMap::new();
+    // the single stroke (`motion = "single-stroke"`) is read by stroke_task
+    if let Some(m) = &sec.motion
+        && m.get_ref() != "steady"
+    {
+        let msg = if m.get_ref() == super::stroke_task::SINGLE_STROKE {
+            "a single stroke has no steady cycle: the kinetostatics cannot take its crank motion from it (say crank_motion = \"constant\" in [forces])".to_string()
+        } else {
+            format!("unknown motion `{}`", m.get_ref())
+        };
+        return Err(Error::at(task, m.span(), "dynamics.motion", msg).with_help(super::stroke_task::help_for("dynamics.motion")));
+    }
     let delta_q = sec.delta.as_ref().ok_or_else(|| {
         Error::at(
             task,
