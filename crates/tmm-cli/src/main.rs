@@ -35,7 +35,7 @@ enum Command {
     Linkage(cmd::linkage::Args),
     /// Kinetostatics: inertia loads, reactions, balancing torque, Zhukovsky's lever, strength of a link
     Forces(cmd::forces::Args),
-    /// Dynamics of the machine: reduced inertia and moments, the flywheel (Merkalov, Wittenbauer, exact), true ω1(φ), run-up; the unsteady single stroke with a Kloss motor
+    /// Dynamics of the machine: reduced inertia and moments, the flywheel (Mertsalov, Wittenbauer, exact), true ω1(φ), run-up; the unsteady single stroke with a Kloss motor
     Dynamics(cmd::dynamics::Args),
     /// Involute spur gear pair with profile shift: geometry, checks, blocking contour, meshing drawing
     #[command(subcommand)]

@@ -38,6 +38,7 @@ pub const KEYS: &[&str] = &[
     "tb_norm_control",
     "tb_approved",
     "tb_letter",
+    "tb_letter_value",
     "tb_sheets",
     "tb_document",
 ];

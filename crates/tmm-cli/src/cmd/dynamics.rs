@@ -1,7 +1,7 @@
 //! `tmm dynamics FILE.toml`: the dynamics of the machine — the mechanism of
 //! `[linkage]` under the loads of `[forces]` reduced to its crank, the
 //! flywheel for the coefficient of speed fluctuation of `[dynamics]` by
-//! Merkalov's method, Wittenbauer's diagram and exactly, its size, the true
+//! Mertsalov's method, Wittenbauer's diagram and exactly, its size, the true
 //! ω1(φ), ε1(φ) and, with a motor, the run-up; with `motion =
 //! "single-stroke"` the unsteady single stroke driven by a motor by Kloss's
 //! formula and the constant-moment stroke beside it.

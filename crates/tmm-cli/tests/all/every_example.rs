@@ -168,3 +168,48 @@ fn doc_blocks_are_found_and_excerpts_skipped() {
     assert_eq!(b[1], (7, "[x]\nb = 2\n".to_string()));
     assert!(b[0].1.starts_with("# an excerpt"));
 }
+
+/// The language a task's note is written in: `[project] lang`, else ru.
+fn note_language(task: &toml::Table) -> String {
+    task.get("project")
+        .and_then(|p| p.get("lang"))
+        .and_then(|l| l.as_str())
+        .unwrap_or("ru")
+        .to_string()
+}
+
+/// No example's title is in another language than its note: a Russian or
+/// Ukrainian note is not headed by an English title (a teacher returned
+/// "Seed 003: six-bar…" on a Russian note), nor an English note by a
+/// Cyrillic one. The book's appendix numbers (П2) are names and pass.
+#[test]
+fn every_examples_title_is_in_its_notes_language() {
+    let mut files = Vec::new();
+    files_under(&repo().join("examples"), &mut files);
+    let mut wrong = Vec::new();
+    for f in &files {
+        let text = std::fs::read_to_string(f).unwrap();
+        let task: toml::Table = toml::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        let Some(title) = task.get("title").and_then(|t| t.as_str()) else {
+            continue;
+        };
+        // the words of the title, its appendix numbers (П1.1, П2) left out
+        let words: String = title
+            .split_whitespace()
+            .filter(|w| !(w.starts_with('П') && w[2..].starts_with(|c: char| c.is_ascii_digit())))
+            .collect::<Vec<_>>()
+            .join(" ");
+        let cyrillic = words.chars().filter(|c| ('\u{400}'..='\u{4ff}').contains(c)).count();
+        let latin = words.chars().filter(|c| c.is_ascii_alphabetic()).count();
+        let lang = note_language(&task);
+        let ok = match lang.as_str() {
+            "en" => cyrillic == 0,
+            // symbols such as m, a_w or K may stand in a Russian title
+            _ => cyrillic > 0 && cyrillic >= 2 * latin,
+        };
+        if !ok {
+            wrong.push(format!("{}: title \"{title}\" on a note in `{lang}`", f.display()));
+        }
+    }
+    assert!(wrong.is_empty(), "titles in another language than the note:\n{}", wrong.join("\n"));
+}

@@ -52,7 +52,7 @@ fn omega2(p: &EnergyPoint, inertia: f64, t0: f64) -> f64 {
 }
 
 /// Solve the steady motion for mean speed `omega_m` (rad/s), starting from
-/// the constant inertia `guess` (Merkalov's, say).
+/// the constant inertia `guess` (Mertsalov's, say).
 pub fn steady(
     red: &Reducer,
     cyc: &ReducedCycle,

@@ -1,6 +1,6 @@
 //! The extremum over the cycle of a function of the energy curve
 //! g(ΔT(φ), I_II(φ)) — the largest and smallest kinetic energy of the
-//! flywheel in Merkalov's method, the supporting lines of Wittenbauer's
+//! flywheel in Mertsalov's method, the supporting lines of Wittenbauer's
 //! curve, the fastest and slowest crank speed — found on the grid, then
 //! refined between the neighbouring nodes as the zero of its exact
 //! derivative g′ = ∂g/∂ΔT·(M_d + M_c) + ∂g/∂I·I_II′ by Brent's method. A

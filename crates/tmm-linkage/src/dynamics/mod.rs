@@ -1,7 +1,7 @@
 //! Dynamics of the machine (динамический анализ и синтез машинного
 //! агрегата), stage 3 of the course project: the mechanism reduced to its
 //! crank, the flywheel (маховик) for a given coefficient of speed
-//! fluctuation δ by Merkalov's method, by Wittenbauer's energy–mass diagram
+//! fluctuation δ by Mertsalov's method, by Wittenbauer's energy–mass diagram
 //! and exactly, its size, the true motion of the crank over the steady
 //! cycle, and the motion by time integration (the steady cycle re-integrated
 //! and, with a motor, the run-up from rest).
@@ -11,7 +11,7 @@
 //! - [`reduced`]: I_II, I_II′ and M_c at one crank angle, from the analogues;
 //! - [`reduction`]: the same over the cycle, the work and ΔT;
 //! - [`extremum`]: extremes over the cycle, refined between the nodes;
-//! - [`merkalov`], [`wittenbauer`], [`exact`]: the three ways to the inertia;
+//! - [`mertsalov`], [`wittenbauer`], [`exact`]: the three ways to the inertia;
 //! - [`flywheel`]: the flywheel's size;
 //! - [`motion`]: ω(φ), ε(φ), t(φ) over the steady cycle;
 //! - [`ode`]: the Dormand–Prince 5(4) integrator;
@@ -56,7 +56,7 @@ pub mod exact;
 pub mod extremum;
 pub mod flywheel;
 pub mod kloss;
-pub mod merkalov;
+pub mod mertsalov;
 pub mod motion;
 pub mod ode;
 pub mod reduced;
@@ -73,7 +73,7 @@ use error::show;
 pub use exact::{Steady, Target};
 pub use flywheel::FlywheelSize;
 pub use kloss::KlossMotor;
-pub use merkalov::Merkalov;
+pub use mertsalov::Mertsalov;
 pub use motion::Motion;
 pub use reduced::{Reduced, Reducer, kinetic_energy, with_crank_motion};
 pub use reduction::{EnergyPoint, ReducedCycle};
@@ -90,8 +90,8 @@ use crate::forces::Loads;
 /// The constant inertia required on the crank shaft by each method, kg·m².
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RequiredInertia {
-    /// Merkalov's method.
-    pub merkalov: f64,
+    /// Mertsalov's method.
+    pub mertsalov: f64,
     /// Wittenbauer's diagram (done exactly).
     pub wittenbauer: f64,
     /// The exact steady motion.
@@ -132,7 +132,7 @@ pub struct Position {
     pub work_driving: f64,
     /// ΔT, J.
     pub energy: f64,
-    /// T_I = ΔT − I_II·ω_m²/2 (Merkalov), J.
+    /// T_I = ΔT − I_II·ω_m²/2 (Mertsalov), J.
     pub energy_constant: f64,
     /// ω₁, rad/s (in the direction of rotation).
     pub omega: f64,
@@ -153,8 +153,8 @@ pub struct Dynamics {
     pub cycle: ReducedCycle,
     /// The constant inertia already on the crank shaft.
     pub inertia_given: GivenInertia,
-    /// Merkalov's method in detail.
-    pub merkalov: Merkalov,
+    /// Mertsalov's method in detail.
+    pub mertsalov: Mertsalov,
     /// Wittenbauer's construction in detail.
     pub wittenbauer: Wittenbauer,
     /// The exact steady motion for δ.
@@ -203,11 +203,11 @@ impl Dynamics {
         };
         let delta = spec.delta;
         let (wmax, wmin) = (omega_m * (1.0 + 0.5 * delta), omega_m * (1.0 - 0.5 * delta));
-        let merkalov = merkalov::merkalov(&red, &cycle, &mut sol, omega_m, delta)?;
+        let mertsalov = mertsalov::mertsalov(&red, &cycle, &mut sol, omega_m, delta)?;
         let wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin)?;
-        let exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), merkalov.inertia)?;
+        let exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), mertsalov.inertia)?;
         let required = RequiredInertia {
-            merkalov: merkalov.inertia,
+            mertsalov: mertsalov.inertia,
             wittenbauer: wittenbauer.inertia,
             exact: exact.inertia,
         };
@@ -245,7 +245,7 @@ impl Dynamics {
                     work_loads: cycle.work_loads[k],
                     work_driving: cycle.work_driving[k],
                     energy: cycle.energy[k],
-                    energy_constant: merkalov.energy_constant[k],
+                    energy_constant: mertsalov.energy_constant[k],
                     omega: motion.omega[k],
                     epsilon: motion.epsilon[k],
                 }
@@ -268,7 +268,7 @@ impl Dynamics {
             reducer: red,
             cycle,
             inertia_given: given,
-            merkalov,
+            mertsalov,
             wittenbauer,
             exact,
             required,

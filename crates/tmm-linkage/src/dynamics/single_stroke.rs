@@ -207,7 +207,10 @@ impl StrokeSpec {
         if !(12..=MAX_STROKE_POINTS).contains(&self.points) {
             return e(
                 "dynamics.points",
-                format!("the stroke's tables need 12 to {MAX_STROKE_POINTS} intervals over the cycle, not {}", self.points),
+                format!(
+                    "the stroke's tables need 12 to {MAX_STROKE_POINTS} intervals over the cycle, not {}",
+                    self.points
+                ),
             );
         }
         if let Some(f) = self.design_angle
@@ -215,7 +218,10 @@ impl StrokeSpec {
         {
             return e(
                 "dynamics.stroke.design_angle",
-                format!("the design position must be a cycle angle from 0° to 360°, not {}°", show(f.to_degrees())),
+                format!(
+                    "the design position must be a cycle angle from 0° to 360°, not {}°",
+                    show(f.to_degrees())
+                ),
             );
         }
         Ok(())
@@ -636,7 +642,7 @@ pub fn by_angle(red: &Reducer, spec: &StrokeSpec, n: usize, sol: &mut Solution) 
     let rhs = |phi: f64, y: &[f64; 4]| -> Result<[f64; 4], DynamicsError> {
         let r = red.eval(phi, &mut sol_cell.borrow_mut())?;
         let i = i_const + r.inertia;
-        if !(y[0] > 0.0) {
+        if y[0].is_nan() || y[0] <= 0.0 {
             return Err(DynamicsError::NonFinite {
                 what: format!("the crank speed at φ = {:.3}° (the machine stops)", phi.to_degrees()),
             });

@@ -218,7 +218,11 @@ impl ActiveSliderLoad {
                 self.push * (self.area * indicator.pressure(psi, s, h))
             }
             SliderLoadKind::StrokeForce {
-                table, travel, window, arm, ..
+                table,
+                travel,
+                window,
+                arm,
+                ..
             } => {
                 // the line of action l_p off the guide (see `arm`)
                 at = p - Vec2::new(-self.dir.y, self.dir.x) * *arm;

@@ -262,15 +262,15 @@ fn time_integration_reproduces_delta_and_mean_speed() {
     }
 }
 
-/// Merkalov's method tends to the exact inertia as δ → 0, its error
+/// Mertsalov's method tends to the exact inertia as δ → 0, its error
 /// shrinking in proportion to δ.
 #[test]
-fn merkalov_tends_to_exact_as_delta_vanishes() {
+fn mertsalov_tends_to_exact_as_delta_vanishes() {
     for (m, loads) in [(seed001(), seed001_loads(&seed001())), (seed003(), seed003_loads(&seed003()))] {
         let mut prev = f64::INFINITY;
         for delta in [0.1, 0.02, 0.004, 0.0008] {
             let d = Dynamics::compute(&m, &loads, &DynamicsSpec::new(delta)).unwrap();
-            let err = (d.required.merkalov / d.required.exact - 1.0).abs();
+            let err = (d.required.mertsalov / d.required.exact - 1.0).abs();
             assert!(err < prev, "δ = {delta}: {err} after {prev}");
             if prev.is_finite() {
                 // δ shrinks fivefold; the error at least about as much
@@ -282,15 +282,15 @@ fn merkalov_tends_to_exact_as_delta_vanishes() {
     }
 }
 
-/// Why Merkalov's inertia is larger (derived in docs/dynamics.md): to first
-/// order in δ, I_Merkalov − I_exact = (I_II(a) + I_II(b))/2, the mean of the
+/// Why Mertsalov's inertia is larger (derived in docs/dynamics.md): to first
+/// order in δ, I_Mertsalov − I_exact = (I_II(a) + I_II(b))/2, the mean of the
 /// variable inertia at the points of ω_max and ω_min — a difference that does
 /// not shrink with δ, so the relative error is proportional to δ.
 #[test]
-fn merkalov_excess_is_the_mean_variable_inertia_at_the_extremes() {
+fn mertsalov_excess_is_the_mean_variable_inertia_at_the_extremes() {
     for (m, loads) in [(seed001(), seed001_loads(&seed001())), (seed003(), seed003_loads(&seed003()))] {
         let d = Dynamics::compute(&m, &loads, &DynamicsSpec::new(0.01)).unwrap();
-        let excess = d.required.merkalov - d.required.exact;
+        let excess = d.required.mertsalov - d.required.exact;
         let mean = 0.5 * (d.wittenbauer.upper.inertia + d.wittenbauer.lower.inertia);
         assert!((excess / mean - 1.0).abs() < 0.02, "{excess} vs {mean}");
     }
@@ -321,7 +321,7 @@ fn crank_with_constant_inertia_and_sine_load_by_hand() {
     let mgr = mass * g * r;
     let i_req = 2.0 * mgr / (delta * w * w);
     let r_ = d.required;
-    for x in [r_.merkalov, r_.wittenbauer, r_.exact] {
+    for x in [r_.mertsalov, r_.wittenbauer, r_.exact] {
         assert!((x / i_req - 1.0).abs() < 1e-9, "{x} vs {i_req}");
     }
     assert!((d.cycle.driving_moment - m0).abs() < 1e-9 * m0);
@@ -608,7 +608,7 @@ fn random_cases_give_finite_results_or_typed_errors() {
                     assert!(x.is_finite());
                 }
                 let r = d.required;
-                assert!(r.merkalov.is_finite() && r.exact.is_finite() && (r.wittenbauer / r.exact - 1.0).abs() < 1e-6);
+                assert!(r.mertsalov.is_finite() && r.exact.is_finite() && (r.wittenbauer / r.exact - 1.0).abs() < 1e-6);
                 assert!(d.motion.delta <= spec.delta * (1.0 + 1e-9));
                 if let Some(f) = d.flywheel {
                     assert!(f.diameter > 0.0 && f.mass > 0.0 && f.diameter.is_finite());

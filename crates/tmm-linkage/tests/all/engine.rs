@@ -372,8 +372,8 @@ fn p2_values() {
         60.0 / N1
     );
     eprintln!(
-        "P2: M_C = {:.6} N·m; I_I Merkalov = {:.6}, Wittenbauer = {:.6}, exact = {:.6} kg·m²; flywheel {:.6} kg·m²",
-        d.cycle.driving_moment, d.required.merkalov, d.required.wittenbauer, d.required.exact, d.flywheel_inertia
+        "P2: M_C = {:.6} N·m; I_I Mertsalov = {:.6}, Wittenbauer = {:.6}, exact = {:.6} kg·m²; flywheel {:.6} kg·m²",
+        d.cycle.driving_moment, d.required.mertsalov, d.required.wittenbauer, d.required.exact, d.flywheel_inertia
     );
     eprintln!(
         "P2: ω(0) = {:.6} rad/s, ω_max at {:.3}°, ω_min at {:.3}°; ε(60°) = {:.6} rad/s²",

@@ -302,6 +302,7 @@ pub fn press_loads(m: &Mechanism, f_max: f64) -> Loads {
             travel: TravelScale::Stroke,
             working: Working::Decreasing,
             window: (0.0, 1.0),
+            arm: 0.0,
         },
     });
     l

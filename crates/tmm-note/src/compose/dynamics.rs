@@ -1,6 +1,6 @@
 //! Section "dynamics of the machine" (динамика машины): the reduced moment
 //! of inertia and of the forces, the driving moment, the flywheel by
-//! Merkalov's and Wittenbauer's methods and the true crank speed.
+//! Mertsalov's and Wittenbauer's methods and the true crank speed.
 
 use super::context::{Ctx, formula, four_parts};
 use crate::error::NoteError;
@@ -42,8 +42,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         "tab_dynamics",
         vec![
             (cx.w("q_md")?, cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?),
-            (cx.w("q_energy_swing")?, cx.qv("/dynamics/merkalov/energy_swing", 1.0, "u_j")?),
-            (cx.w("q_i_merkalov")?, cx.qv("/dynamics/required_inertia/merkalov", 1.0, "u_kgm2")?),
+            (cx.w("q_energy_swing")?, cx.qv("/dynamics/mertsalov/energy_swing", 1.0, "u_j")?),
+            (
+                cx.w("q_i_mertsalov")?,
+                cx.qv("/dynamics/required_inertia/mertsalov", 1.0, "u_kgm2")?,
+            ),
             (
                 cx.w("q_i_wittenbauer")?,
                 cx.qv("/dynamics/required_inertia/wittenbauer", 1.0, "u_kgm2")?,

@@ -1,7 +1,7 @@
 //! The diagrams of the `[dynamics]` section, against φ in degrees from the
 //! start of the cycle (the start of the working stroke): the reduced moments
 //! M_c and M_d, the work A_d, A_c and ΔT, the variable reduced inertia I_II,
-//! Merkalov's T_I with its swing ΔT_I, Wittenbauer's energy–mass diagram
+//! Mertsalov's T_I with its swing ΔT_I, Wittenbauer's energy–mass diagram
 //! with both tangents, the true ω₁(φ) with ω_max, ω_min, ω_m, ε₁(φ), and the
 //! run-up ω₁(t) when there is a motor.
 //!
@@ -430,10 +430,10 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     ch.curve(&xy(&c.inertia), PURPLE, "I_{II}", None);
     docs.add_text(format!("{prefix}inertia.svg"), ch.finish())?;
 
-    // Merkalov's T_I and its swing
-    let mk = &d.merkalov;
+    // Mertsalov's T_I and its swing
+    let mk = &d.mertsalov;
     let yr = range(mk.energy_constant.iter().copied().chain([mk.energy_max, mk.energy_min]));
-    let mut ch = chart(&wd("title_merkalov"), ("T_I", &u_j), yr, true);
+    let mut ch = chart(&wd("title_mertsalov"), ("T_I", &u_j), yr, true);
     ch.curve(&xy(&mk.energy_constant), GREEN, "T_I", None);
     ch.level(mk.energy_max, GREY, "T_{I max}", &format!("{} {u_j}", n3(mk.energy_max)));
     ch.level(mk.energy_min, GREY, "T_{I min}", &format!("{} {u_j}", n3(mk.energy_min)));

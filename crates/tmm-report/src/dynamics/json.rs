@@ -99,14 +99,20 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         "work": arr(&c.work_loads, s),
         "work_driving": arr(&c.work_driving, s),
         "kinetic_energy_change": arr(&c.energy, s),
-        "energy_constant_part": arr(&d.merkalov.energy_constant, s),
+        "energy_constant_part": arr(&d.mertsalov.energy_constant, s),
     });
+    let mertsalov = json!({"energy_swing": num(d.mertsalov.energy_swing), "energy_max": num(d.mertsalov.energy_max),
+        "phi_max": num(d.mertsalov.phi_max), "energy_min": num(d.mertsalov.energy_min), "phi_min": num(d.mertsalov.phi_min)});
     let rest = json!({
         "inertia_constant_given": num(d.inertia_given.total),
         "inertia_given": {"crank": num(d.inertia_given.crank), "crank_shaft": num(d.inertia_given.crank_shaft), "motor_shaft_reduced": num(d.inertia_given.motor_shaft)},
-        "required_inertia": {"merkalov": num(d.required.merkalov), "wittenbauer": num(d.required.wittenbauer), "exact": num(d.required.exact)},
-        "merkalov": {"energy_swing": num(d.merkalov.energy_swing), "energy_max": num(d.merkalov.energy_max), "phi_max": num(d.merkalov.phi_max),
-            "energy_min": num(d.merkalov.energy_min), "phi_min": num(d.merkalov.phi_min)},
+        // `merkalov` (a misspelling of Мерцалов) is kept beside `mertsalov`
+        // for one release, so that readers of the old key go on working
+        // (docs/dynamics.md, "JSON")
+        "required_inertia": {"mertsalov": num(d.required.mertsalov), "merkalov": num(d.required.mertsalov),
+            "wittenbauer": num(d.required.wittenbauer), "exact": num(d.required.exact)},
+        "mertsalov": mertsalov.clone(),
+        "merkalov": mertsalov,
         "wittenbauer": {"upper": tangent(&d.wittenbauer.upper), "lower": tangent(&d.wittenbauer.lower), "energy_start": num(d.wittenbauer.energy_start)},
         "inertia_constant": num(mo.inertia_constant),
         "energy_start": num(mo.energy_start),

@@ -1,7 +1,7 @@
 //! The `[dynamics]` section: the dynamics of the machine (динамика
 //! машинного агрегата) for the `[linkage]` mechanism under the loads of
 //! `[forces]` — the reduced inertia and moments, the flywheel for the
-//! coefficient of speed fluctuation δ by Merkalov's method, by Wittenbauer's
+//! coefficient of speed fluctuation δ by Mertsalov's method, by Wittenbauer's
 //! energy–mass diagram and exactly, its size, the true ω₁(φ), ε₁(φ) and,
 //! with a motor, the run-up — as tables, one JSON document and SVG
 //! diagrams; with `motion = "single-stroke"` the unsteady single stroke

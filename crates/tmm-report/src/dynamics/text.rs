@@ -106,12 +106,12 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
     }
     let _ = writeln!(
         o,
-        "  Merkalov: T_I = ΔT − I_II·ω_m²/2, max {:.4} J at φ = {:.2}°, min {:.4} J at φ = {:.2}°, ΔT_I = {:.4} J",
-        d.merkalov.energy_max,
-        d.merkalov.phi_max.to_degrees(),
-        d.merkalov.energy_min,
-        d.merkalov.phi_min.to_degrees(),
-        d.merkalov.energy_swing
+        "  Mertsalov: T_I = ΔT − I_II·ω_m²/2, max {:.4} J at φ = {:.2}°, min {:.4} J at φ = {:.2}°, ΔT_I = {:.4} J",
+        d.mertsalov.energy_max,
+        d.mertsalov.phi_max.to_degrees(),
+        d.mertsalov.energy_min,
+        d.mertsalov.phi_min.to_degrees(),
+        d.mertsalov.energy_swing
     );
     let (u, lo) = (&d.wittenbauer.upper, &d.wittenbauer.lower);
     let _ = writeln!(
@@ -131,7 +131,7 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
     let _ = writeln!(o, "  Constant inertia I_I required on the crank shaft:");
     let _ = writeln!(o, "    {:<14} {:>14} {:>16}", "method", "I_I, kg·m²", "vs exact, %");
     for (name, v) in [
-        ("Merkalov", d.required.merkalov),
+        ("Mertsalov", d.required.mertsalov),
         ("Wittenbauer", d.required.wittenbauer),
         ("exact", ex),
     ] {

@@ -69,21 +69,35 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
     let m = &l.mech;
     let f = &r.fs;
     let sol = &r.sol;
-    let mut couples: Vec<(Vec2, f64, String)> = Vec::new();
+    let mut couples: Vec<(Vec2, f64, String, f64)> = Vec::new();
+    // Two couples per link, each labelled as what it is, so that the figure
+    // shows the inertia torque of the table (M_и3 = −J_S·ε) and not the sum
+    // of all the couples on the link: the inertia torque, and the rest of the
+    // link's moment about S (its external couples, the useful resistance
+    // among them, and the moments about S of the external forces, which the
+    // polygon's load F_i carries to S).
+    let unit = word(lang, "forces.unit_nm");
     for &li in links {
         let lf = &f.links[li];
-        if lf.moment != 0.0 {
+        let name = &m.link_names[li];
+        let rest = lf.moment - lf.inertia_moment;
+        let scale = lf.moment.abs().max(lf.inertia_moment.abs());
+        if lf.inertia_moment != 0.0 {
             couples.push((
                 lf.s,
-                lf.moment,
+                lf.inertia_moment,
                 format!(
-                    "M_{{{}{}}} = {} {}",
+                    "M_{{{}{name}}} = {} {unit}",
                     word(lang, "forces.inertia"),
-                    m.link_names[li],
-                    num(lf.moment.abs(), 2, lang),
-                    word(lang, "forces.unit_nm")
+                    num(lf.inertia_moment.abs(), 2, lang)
                 ),
+                6.0,
             ));
+        }
+        if rest.abs() > 1e-12 * scale {
+            // on a larger arc than the inertia torque's, its label below it
+            let ring = if lf.inertia_moment != 0.0 { 10.0 } else { 6.0 };
+            couples.push((lf.s, rest, format!("M_{{{name}}} = {} {unit}", num(rest.abs(), 2, lang)), ring));
         }
     }
     let polygons = f.polygons(m);
@@ -198,8 +212,8 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
         c.arrow(t(a.at), t(a.at + a.f * mu), Style::THIN.colored(col).widened(0.5), 3.0);
     }
     let mut arcs = Vec::new();
-    for (p, mo, label) in &couples {
-        let r0 = 6.0 / k;
+    for (p, mo, label, ring) in &couples {
+        let r0 = ring / k;
         let (a0, a1) = if *mo > 0.0 { (0.0, 4.5) } else { (4.5, 0.0) };
         c.arc(t(*p), r0, a0, a1, Style::THIN.colored("#606060"));
         let tip = *p + Vec2::new(a1.cos(), a1.sin()) * r0;
@@ -237,14 +251,18 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
         c.label(t((poly[i] + poly[i + 1]) * 0.5), &force_label(&a.label, lang), H_LABEL - 0.5, col);
     }
     let gap = (*poly.last().unwrap_or(&origin) - origin).hypot();
+    // the polygon's closure as a reader takes it: "≈ 0" where it is round-off
+    // (under 1e-9 of the largest force), else the gap in newtons
+    let largest = arrows.iter().map(|a| a.f.hypot()).fold(0.0, f64::max);
+    let closure = gap / mup;
+    let closure = if closure <= 1e-9 * largest {
+        "≈ 0".to_string()
+    } else {
+        num(closure, 3, lang)
+    };
     c.rich_paper(
         (w / 2.0, h - 4.0),
-        &format!(
-            "{} {} {}",
-            word(lang, "forces.closure"),
-            crate::svg::comma(&format!("{:.2e}", gap / mup), lang),
-            word(lang, "forces.unit_n")
-        ),
+        &format!("{} {closure} {}", word(lang, "forces.closure"), word(lang, "forces.unit_n")),
         H_LABEL - 0.5,
         Anchor::Middle,
         "#404040",

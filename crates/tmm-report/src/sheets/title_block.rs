@@ -136,6 +136,8 @@ pub fn marks(at: Rect, f: &Fields, lang: Language) -> Vec<Mark> {
         text(17.8, y, 2.5, Align::Start, name, 21.6);
     }
     text(142.5, 17.5, 2.5, Align::Middle, &w("sheet.tb_letter"), 14.0);
+    // the letter of a student's document in the first of the three cells
+    text(137.5, 27.5, 5.0, Align::Middle, &w("sheet.tb_letter_value"), 4.4);
     text(158.5, 17.5, 2.5, Align::Middle, &w("sheet.tb_mass"), 16.0);
     text(176.0, 17.5, 2.5, Align::Middle, &w("sheet.tb_scale"), 17.0);
     text(176.0, 27.5, 5.0, Align::Middle, &f.scale, 17.0);

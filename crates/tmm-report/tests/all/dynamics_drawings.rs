@@ -126,7 +126,7 @@ fn omega_levels_sit_on_the_drawn_extremes() {
 }
 
 #[test]
-fn merkalov_swing_between_the_drawn_extremes_and_the_run_up_settles() {
+fn mertsalov_swing_between_the_drawn_extremes_and_the_run_up_settles() {
     let d = docs("seed-003-sixbar.toml");
     let s = svg(&d, "energy-constant.svg");
     let c = curves(&s);

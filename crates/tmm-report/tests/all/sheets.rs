@@ -423,6 +423,8 @@ fn the_frame_speaks_the_sheets_language() {
                 assert!(texts.iter().any(|t| t == word(lang, k)), "{path} {}: no {k}", lang.code());
             }
             if lang != Language::En {
+                // the letter of a student's document, У (GOST 2.103), under Лит.
+                assert!(texts.iter().any(|t| t == "У"), "{path} {}: no letter У: {texts:?}", lang.code());
                 for t in texts
                     .iter()
                     .filter(|t| !fields.contains(&t.as_str()) && !t.contains("МАДИ") && !t.contains("Кафедра"))

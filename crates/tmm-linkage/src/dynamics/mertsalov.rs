@@ -1,4 +1,4 @@
-//! Merkalov's method as the course teaches it (метод Н. И. Мерцалова):
+//! Mertsalov's method as the course teaches it (метод Н. И. Мерцалова):
 //! the kinetic energy of the links of variable inertia is taken at the mean
 //! speed, T_II(φ) = I_II(φ)·ω_m²/2; the rest, T_I(φ) = ΔT(φ) − T_II(φ), is
 //! the energy of the constant inertia (up to a constant), whose swing
@@ -17,9 +17,9 @@ use super::reduced::Reducer;
 use super::reduction::ReducedCycle;
 use crate::Solution;
 
-/// The result of Merkalov's method.
+/// The result of Mertsalov's method.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Merkalov {
+pub struct Mertsalov {
     /// T_II(φ) = I_II·ω_m²/2 on the grid, J.
     pub energy_variable: Vec<f64>,
     /// T_I(φ) = ΔT − T_II on the grid, J.
@@ -38,8 +38,8 @@ pub struct Merkalov {
     pub inertia: f64,
 }
 
-/// Merkalov's method for mean speed `omega_m` (rad/s) and coefficient `delta`.
-pub fn merkalov(red: &Reducer, cyc: &ReducedCycle, sol: &mut Solution, omega_m: f64, delta: f64) -> Result<Merkalov, DynamicsError> {
+/// Mertsalov's method for mean speed `omega_m` (rad/s) and coefficient `delta`.
+pub fn mertsalov(red: &Reducer, cyc: &ReducedCycle, sol: &mut Solution, omega_m: f64, delta: f64) -> Result<Mertsalov, DynamicsError> {
     let k = 0.5 * omega_m * omega_m;
     let energy_variable: Vec<f64> = cyc.inertia.iter().map(|i| k * i).collect();
     let energy_constant: Vec<f64> = cyc.energy.iter().zip(&energy_variable).map(|(e, t)| e - t).collect();
@@ -48,7 +48,7 @@ pub fn merkalov(red: &Reducer, cyc: &ReducedCycle, sol: &mut Solution, omega_m: 
     let (pmax, vmax) = maximize(red, cyc, sol, g, dg)?;
     let (pmin, vmin) = minimize(red, cyc, sol, g, dg)?;
     let swing = vmax - vmin;
-    Ok(Merkalov {
+    Ok(Mertsalov {
         energy_variable,
         energy_constant,
         phi_max: pmax.phi,
