@@ -197,7 +197,11 @@ impl Stroke {
     /// assert!((x(0.0) - x(a) - 0.05).abs() < 1e-9);
     /// ```
     pub fn angle_at_travel(&self, m: &Mechanism, sol: &mut Solution, target: f64, working: bool) -> Result<f64, ForceError> {
-        let (mut lo, mut hi) = if working { (0.0, self.work_span) } else { (self.work_span, 2.0 * PI) };
+        let (mut lo, mut hi) = if working {
+            (0.0, self.work_span)
+        } else {
+            (self.work_span, 2.0 * PI)
+        };
         // g(angle) = travel − target grows on the working stroke and falls on the return
         let sign = if working { 1.0 } else { -1.0 };
         let mut g = |a: f64| -> Result<f64, ForceError> {

@@ -132,8 +132,12 @@ pub fn help_for(field: &str) -> &'static str {
         "dynamics.flywheel.place" => {
             "place = \"crank\" (the default), \"motor\" (needs a motor or inertia.motor_speed) or \"shaft\" (with speed_ratio = ω_shaft/ω_crank)"
         }
-        "dynamics.flywheel.speed_ratio" => "speed_ratio = 1.8333 (ω_shaft/ω_crank of the flywheel's shaft, 1e-6 … 1e6; only with place = \"shaft\")",
-        "dynamics.flywheel.inner_ratio" => "inner_ratio = 0.8 (a rim's inner diameter over its outer, D₁/D₂, 0.001 … 0.998; only with shape = \"rim\", instead of thickness_ratio)",
+        "dynamics.flywheel.speed_ratio" => {
+            "speed_ratio = 1.8333 (ω_shaft/ω_crank of the flywheel's shaft, 1e-6 … 1e6; only with place = \"shaft\")"
+        }
+        "dynamics.flywheel.inner_ratio" => {
+            "inner_ratio = 0.8 (a rim's inner diameter over its outer, D₁/D₂, 0.001 … 0.998; only with shape = \"rim\", instead of thickness_ratio)"
+        }
         "dynamics.flywheel.density" => {
             "density = \"7850 kg/m^3\" (steel, the default; cast iron 7200) — kg/m^3, g/cm^3 or t/m^3, a plain number is kg/m³; 10 … 100 000 kg/m³"
         }

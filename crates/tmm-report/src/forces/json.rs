@@ -119,13 +119,18 @@ pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
         doc["reaction_cycle"] = rc.json();
     }
     if !a.windows.is_empty() {
-        doc["stroke_windows"] = json!(a.windows.iter().map(|w| json!({
-            "load": t.slider_fields.get(w.load),
-            "window": [num(w.window.0), num(w.window.1)],
-            "stroke": num(w.stroke),
-            "phi_start": num(w.phi_start),
-            "start": num(w.on), "end": num(w.off), "return": num(w.back), "overrun": num(w.overrun),
-        })).collect::<Vec<_>>());
+        doc["stroke_windows"] = json!(
+            a.windows
+                .iter()
+                .map(|w| json!({
+                    "load": t.slider_fields.get(w.load),
+                    "window": [num(w.window.0), num(w.window.1)],
+                    "stroke": num(w.stroke),
+                    "phi_start": num(w.phi_start),
+                    "start": num(w.on), "end": num(w.off), "return": num(w.back), "overrun": num(w.overrun),
+                }))
+                .collect::<Vec<_>>()
+        );
     }
     if let Some(b) = &a.beam {
         let s = &b.sizes;

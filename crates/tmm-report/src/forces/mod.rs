@@ -298,8 +298,16 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
                         )
                         .with_help(format!(
                             "name one of {} (R_ij: the force on link i by link j, 0 the frame{})",
-                            if key == "hodographs" { rc.names.join(", ") } else { drawable.join(", ") },
-                            if key == "hodographs" { "" } else { "; M_ij: a guide's reaction couple" }
+                            if key == "hodographs" {
+                                rc.names.join(", ")
+                            } else {
+                                drawable.join(", ")
+                            },
+                            if key == "hodographs" {
+                                ""
+                            } else {
+                                "; M_ij: a guide's reaction couple"
+                            }
                         )));
                     }
                 }

@@ -95,10 +95,23 @@ pub fn couple_about(at: Vec2, s: Vec2, f: Vec2) -> f64 {
 
 impl ReactionCycle {
     /// An empty table for the reactions of `fs` (names of the links `links`).
-    pub fn new(step: f64, links: &[String], fs: &ForceSolution, diagrams: Vec<String>, hodographs: Vec<String>, lumped: Option<Lumped>) -> Self {
+    pub fn new(
+        step: f64,
+        links: &[String],
+        fs: &ForceSolution,
+        diagrams: Vec<String>,
+        hodographs: Vec<String>,
+        lumped: Option<Lumped>,
+    ) -> Self {
         let mut source: Vec<(usize, f64, usize)> = fs.reactions.iter().enumerate().map(|(j, x)| (j, 1.0, x.on)).collect();
         let own = source.len();
-        source.extend(fs.reactions.iter().enumerate().filter(|(_, x)| x.from != 0).map(|(j, x)| (j, -1.0, x.from)));
+        source.extend(
+            fs.reactions
+                .iter()
+                .enumerate()
+                .filter(|(_, x)| x.from != 0)
+                .map(|(j, x)| (j, -1.0, x.from)),
+        );
         let names: Vec<String> = source
             .iter()
             .map(|&(j, sg, on)| {
@@ -153,7 +166,8 @@ impl ReactionCycle {
             let x = &fs.reactions[j];
             let f = x.force * sg;
             self.forces.push(f);
-            self.couples.push(if x.prismatic { couple_about(x.at, fs.links[on].s, f) } else { 0.0 });
+            self.couples
+                .push(if x.prismatic { couple_about(x.at, fs.links[on].s, f) } else { 0.0 });
         }
         self.balancing.push(fs.balancing_moment);
     }
@@ -193,7 +207,12 @@ impl ReactionCycle {
     /// The largest |M_1 − M| over the cycle (the book's Δ), with the true motion.
     pub fn lumped_deviation(&self) -> Option<f64> {
         let l = self.lumped?;
-        Some((0..self.len()).filter_map(|k| self.lumped_moment(k)).map(|m| (m - l.moment).abs()).fold(0.0, f64::max))
+        Some(
+            (0..self.len())
+                .filter_map(|k| self.lumped_moment(k))
+                .map(|m| (m - l.moment).abs())
+                .fold(0.0, f64::max),
+        )
     }
 
     /// The text table: every reaction as magnitude and angle, the guide
@@ -377,9 +396,7 @@ impl ReactionCycle {
         let (xmin, xmax, ymin, ymax) = if polar {
             (-reach, reach, -reach, reach)
         } else {
-            let f = |sel: fn(&(f64, f64)) -> f64, lo: bool| {
-                pts.iter().map(sel).fold(0.0f64, |a, b| if lo { a.min(b) } else { a.max(b) })
-            };
+            let f = |sel: fn(&(f64, f64)) -> f64, lo: bool| pts.iter().map(sel).fold(0.0f64, |a, b| if lo { a.min(b) } else { a.max(b) });
             let (x0, x1, y0, y1) = (f(|p| p.0, true), f(|p| p.0, false), f(|p| p.1, true), f(|p| p.1, false));
             let pad = 0.08 * (x1 - x0).max(y1 - y0).max(1e-9);
             (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
@@ -388,7 +405,11 @@ impl ReactionCycle {
         let title = format!(
             "{} {name}{}",
             word(lang, "forces.hodograph_title"),
-            if polar { format!(" ({})", word(lang, "forces.hodograph_polar")) } else { String::new() }
+            if polar {
+                format!(" ({})", word(lang, "forces.hodograph_polar"))
+            } else {
+                String::new()
+            }
         );
         c.text_paper((w / 2.0, 8.0), &title, 4.0, Anchor::Middle, "#000000");
         let unit = word(lang, "forces.unit_n");
@@ -398,7 +419,13 @@ impl ReactionCycle {
             let mut r = step;
             while r <= reach + 1e-12 {
                 c.circle((0.0, 0.0), r, Style::THIN.colored("#a0a0a0"));
-                c.text_colored((r * 0.7071, r * 0.7071), &crate::svg::num(r, 0, lang), 2.5, Anchor::Start, "#606060");
+                c.text_colored(
+                    (r * std::f64::consts::FRAC_1_SQRT_2, r * std::f64::consts::FRAC_1_SQRT_2),
+                    &crate::svg::num(r, 0, lang),
+                    2.5,
+                    Anchor::Start,
+                    "#606060",
+                );
                 r += step;
             }
             for k in 0..12 {
@@ -418,7 +445,13 @@ impl ReactionCycle {
             while v <= xmax {
                 if v.abs() > 1e-9 * t {
                     c.line((v, 0.0), (v, 0.015 * (ymax - ymin)), Style::THIN);
-                    c.text_colored((v, -0.04 * (ymax - ymin)), &crate::svg::num(v, 0, lang), 2.2, Anchor::Middle, "#606060");
+                    c.text_colored(
+                        (v, -0.04 * (ymax - ymin)),
+                        &crate::svg::num(v, 0, lang),
+                        2.2,
+                        Anchor::Middle,
+                        "#606060",
+                    );
                 }
                 v += t;
             }
@@ -426,7 +459,13 @@ impl ReactionCycle {
             while v <= ymax {
                 if v.abs() > 1e-9 * t {
                     c.line((0.0, v), (0.015 * (xmax - xmin), v), Style::THIN);
-                    c.text_colored((-0.01 * (xmax - xmin), v), &crate::svg::num(v, 0, lang), 2.2, Anchor::End, "#606060");
+                    c.text_colored(
+                        (-0.01 * (xmax - xmin), v),
+                        &crate::svg::num(v, 0, lang),
+                        2.2,
+                        Anchor::End,
+                        "#606060",
+                    );
                 }
                 v += t;
             }

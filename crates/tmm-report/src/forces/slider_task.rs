@@ -90,7 +90,12 @@ pub(crate) fn reaction_cycle(task: &TaskSource, cycle_sec: Option<&S<CycleSec>>,
         Some(q) => {
             let v = qty(task, "forces.cycle.step", q, Dim::Angle)?;
             let n = period / v;
-            if !(v.is_finite() && v > 0.0 && (n - n.round()).abs() <= 1e-6 * n && n.round() >= 12.0 && n.round() <= MAX_REACTION_STEPS as f64) {
+            if !(v.is_finite()
+                && v > 0.0
+                && (n - n.round()).abs() <= 1e-6 * n
+                && n.round() >= 12.0
+                && n.round() <= MAX_REACTION_STEPS as f64)
+            {
                 return Err(Error::at(
                     task,
                     q.span(),
