@@ -20,6 +20,7 @@ mod note;
 mod planetary_cli;
 mod redundant;
 mod seed_003_direction;
+mod shaper;
 mod synth;
 mod textbook_synthesis;
 mod write_safety;

@@ -94,6 +94,9 @@ pub struct ActiveSliderLoad {
     pub motion: Vec2,
     /// Piston area πd²/4, m² (gas force), else 0.
     pub area: f64,
+    /// The absolute crank angles (rad) where a stroke force's window opens
+    /// and closes on its acting stroke: the load jumps there.
+    pub edges: Vec<f64>,
 }
 
 impl SliderLoad {
@@ -121,6 +124,7 @@ impl SliderLoad {
             m.solve(phi, sol)?;
             Ok(sol.links[self.link].pos(ps))
         };
+        let mut edges = Vec::new();
         let (stroke, push, motion, area) = match &self.kind {
             SliderLoadKind::Gas { bore, indicator } => {
                 if !(bore.is_finite() && *bore > 0.0) {
@@ -178,6 +182,12 @@ impl SliderLoad {
                 }
                 let mv = pos_at(&mut sol, s.phi_end)? - pos_at(&mut sol, s.phi_start)?;
                 let motion = if mv.dot(dir) >= 0.0 { dir } else { -dir };
+                for w in [w0, w1] {
+                    if w > 0.0 && w < 1.0 {
+                        let a = s.angle_at_travel(m, &mut sol, w * s.travel, true)?;
+                        edges.push(s.phi_start + m.crank.omega.signum() * a);
+                    }
+                }
                 (s, Vec2::ZERO, motion, 0.0)
             }
             SliderLoadKind::Friction { force } => {
@@ -198,6 +208,7 @@ impl SliderLoad {
             push,
             motion,
             area,
+            edges,
         })
     }
 }
@@ -249,9 +260,11 @@ impl ActiveSliderLoad {
     }
 
     /// The crank angles (absolute, rad) where the load may jump or kink:
-    /// the slider's dead positions.
-    pub fn dead_positions(&self) -> [f64; 2] {
+    /// the slider's dead positions, and the edges of a stroke force's window.
+    pub fn dead_positions(&self) -> impl Iterator<Item = f64> + '_ {
         [self.stroke.phi_start, self.stroke.phi_end]
+            .into_iter()
+            .chain(self.edges.iter().copied())
     }
 
     /// The cycle angles (rad from its start) where the process changes.

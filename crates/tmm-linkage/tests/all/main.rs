@@ -11,6 +11,7 @@ mod forces;
 mod fourbar_closed_form;
 mod hardening;
 mod properties;
+mod shaper;
 mod single_stroke;
 mod synthesis_crank_rocker;
 mod synthesis_crank_slider;
