@@ -19,6 +19,7 @@ mod note;
 mod planetary_cli;
 mod redundant;
 mod seed_003_direction;
+mod single_stroke;
 mod synth;
 mod textbook_synthesis;
 mod write_safety;

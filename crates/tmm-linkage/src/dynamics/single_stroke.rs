@@ -207,7 +207,10 @@ impl StrokeSpec {
         if !(12..=MAX_STROKE_POINTS).contains(&self.points) {
             return e(
                 "dynamics.points",
-                format!("the stroke's tables need 12 to {MAX_STROKE_POINTS} intervals over the cycle, not {}", self.points),
+                format!(
+                    "the stroke's tables need 12 to {MAX_STROKE_POINTS} intervals over the cycle, not {}",
+                    self.points
+                ),
             );
         }
         if let Some(f) = self.design_angle
@@ -215,7 +218,10 @@ impl StrokeSpec {
         {
             return e(
                 "dynamics.stroke.design_angle",
-                format!("the design position must be a cycle angle from 0° to 360°, not {}°", show(f.to_degrees())),
+                format!(
+                    "the design position must be a cycle angle from 0° to 360°, not {}°",
+                    show(f.to_degrees())
+                ),
             );
         }
         Ok(())

@@ -131,7 +131,12 @@ fn press_stroke_agrees_with_rk4_in_the_crank_angle() {
     // knots fall between its steps)
     let c = by_angle(&s.reducer, &s.spec, 160_000, &mut sol).unwrap();
     let mo = &s.motor;
-    assert!((c.cycle_time / mo.cycle_time - 1.0).abs() < 3e-8, "{} {}", c.cycle_time, mo.cycle_time);
+    assert!(
+        (c.cycle_time / mo.cycle_time - 1.0).abs() < 3e-8,
+        "{} {}",
+        c.cycle_time,
+        mo.cycle_time
+    );
     assert!((c.omega_end / mo.omega_end - 1.0).abs() < 3e-8, "{} {}", c.omega_end, mo.omega_end);
     assert!((c.motor_work / mo.balance.motor_work - 1.0).abs() < 1e-7);
     // the event is the end of the cycle, not the end of a window
@@ -151,7 +156,11 @@ fn press_stroke_keeps_the_energy_balance_at_every_row() {
         assert!((r.inertia_total / i - 1.0).abs() < 1e-8, "I at {}", r.phi);
         let de = 0.5 * i * r.omega * r.omega - t0;
         let work = r.motor_work + loads_work(r.phi);
-        assert!((de - work).abs() < 1e-7 * t0, "φ = {}°: ΔT {de} against W {work}", r.phi.to_degrees());
+        assert!(
+            (de - work).abs() < 1e-7 * t0,
+            "φ = {}°: ΔT {de} against W {work}",
+            r.phi.to_degrees()
+        );
         // the ram's travel
         let h = closed(0.0).2 - closed(r.phi).2;
         assert!((r.travel - h).abs() < 1e-9);
@@ -226,8 +235,18 @@ fn dynamic_characteristic_against_rk4_and_the_static_limit() {
     let s = SingleStroke::compute(&m, &l, &sp).unwrap();
     let mut sol = s.reducer.solution();
     let c = by_angle(&s.reducer, &sp, 160_000, &mut sol).unwrap();
-    assert!((c.cycle_time / s.motor.cycle_time - 1.0).abs() < 3e-8, "{} {}", c.cycle_time, s.motor.cycle_time);
-    assert!((c.omega_end / s.motor.omega_end - 1.0).abs() < 3e-8, "{} {}", c.omega_end, s.motor.omega_end);
+    assert!(
+        (c.cycle_time / s.motor.cycle_time - 1.0).abs() < 3e-8,
+        "{} {}",
+        c.cycle_time,
+        s.motor.cycle_time
+    );
+    assert!(
+        (c.omega_end / s.motor.omega_end - 1.0).abs() < 3e-8,
+        "{} {}",
+        c.omega_end,
+        s.motor.omega_end
+    );
     // the lag changes the stroke; a tiny lag does not
     let stat = SingleStroke::compute(&m, &l, &spec()).unwrap();
     assert!((s.motor.cycle_time - stat.motor.cycle_time).abs() > 1e-3);
@@ -244,12 +263,22 @@ fn a_stall_is_located_where_the_energy_runs_out() {
     // motor cannot forge 4.8 MJ
     let l = press_loads(&m, 2.0 * F_MAX);
     let err = SingleStroke::compute(&m, &l, &spec()).unwrap_err();
-    let DynamicsError::Spec { field, message } = &err else { panic!("{err:?}") };
+    let DynamicsError::Spec { field, message } = &err else {
+        panic!("{err:?}")
+    };
     assert_eq!(field, "dynamics");
     assert!(message.contains("stalls in the motor-driven stroke"), "{message}");
     assert!(message.contains("working stroke") && message.contains("`3`"), "{message}");
     // the angle where it stops: in the deformation zone, before the bottom
-    let at = message.split("φ = ").nth(1).unwrap().split('°').next().unwrap().parse::<f64>().unwrap();
+    let at = message
+        .split("φ = ")
+        .nth(1)
+        .unwrap()
+        .split('°')
+        .next()
+        .unwrap()
+        .parse::<f64>()
+        .unwrap();
     let h_at = closed(0.0).2 - closed(at.to_radians()).2;
     assert!(h_at > 0.6 * 0.4 && at < 180.0, "{at}° h = {h_at}");
     // there the energy is spent: the kinetic energy of the start and the
@@ -264,4 +293,3 @@ fn a_stall_is_located_where_the_energy_runs_out() {
     let err = SingleStroke::compute(&m, &press_loads(&m, F_MAX), &sp).unwrap_err();
     assert!(err.to_string().contains("stalls"), "{err}");
 }
-

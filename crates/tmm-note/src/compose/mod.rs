@@ -21,11 +21,11 @@ mod assignment;
 mod cam;
 mod context;
 mod dynamics;
-mod stroke;
 mod forces;
 mod gear;
 mod linkage;
 mod planetary;
+mod stroke;
 mod synthesis;
 mod words;
 

@@ -16,7 +16,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         return Ok(None);
     }
     let tau = cx.v("/dynamics/time_constant")?;
-    let mut assumptions = vec![cx.w("assume_rigid")?.into(), cx.w("assume_friction")?.into(), cx.w("st_assume_clutch")?.into()];
+    let mut assumptions = vec![
+        cx.w("assume_rigid")?.into(),
+        cx.w("assume_friction")?.into(),
+        cx.w("st_assume_clutch")?.into(),
+    ];
     if tau == 0.0 {
         assumptions.push(cx.w("st_assume_static")?.into());
     }
@@ -25,8 +29,14 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.quantities(
             "st_tab_given",
             vec![
-                (cx.w("st_q_n0")?, cx.q(cx.v("/dynamics/motor/synchronous_speed")? / std::f64::consts::TAU, "st_u_rev_s")?),
-                (cx.w("st_q_nk")?, cx.q(cx.v("/dynamics/motor/breakdown_speed")? / std::f64::consts::TAU, "st_u_rev_s")?),
+                (
+                    cx.w("st_q_n0")?,
+                    cx.q(cx.v("/dynamics/motor/synchronous_speed")? / std::f64::consts::TAU, "st_u_rev_s")?,
+                ),
+                (
+                    cx.w("st_q_nk")?,
+                    cx.q(cx.v("/dynamics/motor/breakdown_speed")? / std::f64::consts::TAU, "st_u_rev_s")?,
+                ),
                 (cx.w("st_q_mk")?, cx.qv("/dynamics/motor/breakdown_torque", 1.0, "u_nm")?),
                 (cx.w("st_q_ratio")?, cx.qv("/dynamics/motor/ratio", 1.0, "")?),
                 (cx.w("st_q_inertia")?, cx.qv("/dynamics/inertia_constant", 1.0, "u_kgm2")?),
@@ -37,9 +47,13 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     ];
     let mut formulas = vec![
         cx.para("st_f_kloss", &[])?,
-        formula("M(S) = (2 M_K S S_K) / (S^2 + S_K^2), quad S = 1 - n / n_0, quad S_K = 1 - n_K / n_0, quad M_\"прДВ\" = u M(u omega / (2 pi))"),
+        formula(
+            "M(S) = (2 M_K S S_K) / (S^2 + S_K^2), quad S = 1 - n / n_0, quad S_K = 1 - n_K / n_0, quad M_\"прДВ\" = u M(u omega / (2 pi))",
+        ),
         cx.para("st_f_motion", &[])?,
-        formula("(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = (M_\"прДВ\"(omega) + M_c (phi) - 1/2 I'_(I I)(phi) omega^2) / (I_I + I_(I I)(phi))"),
+        formula(
+            "(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = (M_\"прДВ\"(omega) + M_c (phi) - 1/2 I'_(I I)(phi) omega^2) / (I_I + I_(I I)(phi))",
+        ),
     ];
     if tau > 0.0 {
         formulas.push(cx.para("st_f_dynamic", &[cx.q(tau, "st_u_s")?])?);
@@ -53,22 +67,43 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         (cx.w("st_q_cycle_time")?, cx.qv("/dynamics/motor_driven/cycle_time", 1.0, "st_u_s")?),
         (cx.w("st_q_omega_end")?, cx.qv("/dynamics/motor_driven/omega_end", 1.0, "u_rad_s")?),
         (cx.w("st_q_omega_min")?, cx.qv("/dynamics/motor_driven/omega_min", 1.0, "u_rad_s")?),
-        (cx.w("st_q_omega_k")?, cx.qv("/dynamics/motor/crank_breakdown_speed", 1.0, "u_rad_s")?),
-        (cx.w("st_q_motor_work")?, cx.qv("/dynamics/motor_driven/energy_balance/motor_work", 1.0, "u_j")?),
-        (cx.w("st_q_loads_work")?, cx.qv("/dynamics/motor_driven/energy_balance/loads_work", 1.0, "u_j")?),
+        (
+            cx.w("st_q_omega_k")?,
+            cx.qv("/dynamics/motor/crank_breakdown_speed", 1.0, "u_rad_s")?,
+        ),
+        (
+            cx.w("st_q_motor_work")?,
+            cx.qv("/dynamics/motor_driven/energy_balance/motor_work", 1.0, "u_j")?,
+        ),
+        (
+            cx.w("st_q_loads_work")?,
+            cx.qv("/dynamics/motor_driven/energy_balance/loads_work", 1.0, "u_j")?,
+        ),
     ];
     if cx.opt("/dynamics/motor_driven/check/cycle_time").is_some() {
-        given.push((cx.w("st_q_check_time")?, cx.qv("/dynamics/motor_driven/check/cycle_time", 1.0, "st_u_s")?));
+        given.push((
+            cx.w("st_q_check_time")?,
+            cx.qv("/dynamics/motor_driven/check/cycle_time", 1.0, "st_u_s")?,
+        ));
     }
     given.extend([
         (cx.w("st_q_md2")?, cx.qv("/dynamics/constant_moment/driving_moment", 1.0, "u_nm")?),
         (cx.w("st_q_a_end")?, cx.qv("/dynamics/constant_moment/work_end", 1.0, "u_j")?),
-        (cx.w("st_q_omega_end2")?, cx.qv("/dynamics/constant_moment/omega_end", 1.0, "u_rad_s")?),
+        (
+            cx.w("st_q_omega_end2")?,
+            cx.qv("/dynamics/constant_moment/omega_end", 1.0, "u_rad_s")?,
+        ),
         (cx.w("st_q_time_end2")?, cx.qv("/dynamics/constant_moment/time_end", 1.0, "st_u_s")?),
     ]);
     if cx.report.pointer("/dynamics/constant_moment/design").is_some_and(|v| !v.is_null()) {
-        given.push((cx.w("st_q_eps_f2")?, cx.qv("/dynamics/constant_moment/design/epsilon", 1.0, "u_rad_s2")?));
-        given.push((cx.w("st_q_travel_f")?, cx.qv("/dynamics/motor_driven/design/travel", 1.0, "st_u_m")?));
+        given.push((
+            cx.w("st_q_eps_f2")?,
+            cx.qv("/dynamics/constant_moment/design/epsilon", 1.0, "u_rad_s2")?,
+        ));
+        given.push((
+            cx.w("st_q_travel_f")?,
+            cx.qv("/dynamics/motor_driven/design/travel", 1.0, "st_u_m")?,
+        ));
     }
     let mut results = vec![cx.quantities("st_tab_results", given)?];
     // both models every 30° (the table's rows)
@@ -143,10 +178,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         ],
     )?];
     conclusions.push(match crossing {
-        Some((p, t)) => cx.para(
-            "st_conclusion_breakdown",
-            &[cx.q(p.to_degrees(), "u_deg")?, cx.q(t, "st_u_s")?],
-        )?,
+        Some((p, t)) => cx.para("st_conclusion_breakdown", &[cx.q(p.to_degrees(), "u_deg")?, cx.q(t, "st_u_s")?])?,
         None => cx.para("st_conclusion_no_breakdown", &[])?,
     });
     Ok(Some(four_parts(cx, "st_sec", statement, formulas, results, conclusions)?))

@@ -17,9 +17,7 @@ use crate::{Error, TaskSource};
 /// Turn a core error into a located input error.
 pub fn locate(src: &TaskSource, l: &Loaded, ft: &ForcesTask, st: &StrokeTask, e: &DynamicsError) -> Error {
     match e {
-        DynamicsError::Spec { field, message } => {
-            Error::at(src, st.span_of(field), field, message).with_help(stroke_task::help_for(field))
-        }
+        DynamicsError::Spec { field, message } => Error::at(src, st.span_of(field), field, message).with_help(stroke_task::help_for(field)),
         DynamicsError::Force(fe) => forces::locate(src, l, ft, fe),
         DynamicsError::Kinematics(k) => linkage::locate(src, &l.task, k),
         other => Error::at(src, st.section.clone(), "dynamics", other.to_string()).with_help(stroke_task::help_for("dynamics")),

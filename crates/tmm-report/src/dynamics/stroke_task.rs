@@ -113,7 +113,9 @@ impl StrokeTask {
 /// What would be valid for each field.
 pub fn help_for(field: &str) -> &'static str {
     match field {
-        "dynamics.motion" => "motion = \"steady\" (the flywheel for δ, the default) or \"single-stroke\" (one cycle from a given speed, driven by a motor by Kloss's formula)",
+        "dynamics.motion" => {
+            "motion = \"steady\" (the flywheel for δ, the default) or \"single-stroke\" (one cycle from a given speed, driven by a motor by Kloss's formula)"
+        }
         "dynamics.points" => "points = 360 (intervals of the tables over the cycle, 12 … 36 000)",
         "dynamics.motor"
         | "dynamics.motor.synchronous_speed"
@@ -125,9 +127,15 @@ pub fn help_for(field: &str) -> &'static str {
         "dynamics.inertia" | "dynamics.inertia.crank_shaft" => {
             "[dynamics.inertia] crank_shaft = \"140e3 kg m^2\" (the constant inertia reduced to the crank: flywheel, gear, clutch; 0 … 1e12)"
         }
-        "dynamics.stroke.start_speed" => "start_speed = \"synchronous\" (the motor's synchronous speed seen at the crank, the default) or a crank speed such as \"5 rad/s\"",
-        "dynamics.stroke.constant_torque" => "constant_torque = \"breakdown\" (the motor's breakdown torque M_K, the default) or a torque on the motor shaft such as \"5 kN m\"",
-        "dynamics.stroke.time_constant" => "time_constant = \"0.02 s\" (τ of the dynamic characteristic τ·dM/dt + M = M_st; 0, the default, is the static characteristic; else 0.001 … 10 s)",
+        "dynamics.stroke.start_speed" => {
+            "start_speed = \"synchronous\" (the motor's synchronous speed seen at the crank, the default) or a crank speed such as \"5 rad/s\""
+        }
+        "dynamics.stroke.constant_torque" => {
+            "constant_torque = \"breakdown\" (the motor's breakdown torque M_K, the default) or a torque on the motor shaft such as \"5 kN m\""
+        }
+        "dynamics.stroke.time_constant" => {
+            "time_constant = \"0.02 s\" (τ of the dynamic characteristic τ·dM/dt + M = M_st; 0, the default, is the static characteristic; else 0.001 … 10 s)"
+        }
         "dynamics.stroke.design_angle" => "design_angle = \"120 deg\" (the design position, a cycle angle from 0° to 360°)",
         "dynamics" => {
             "a larger constant inertia ([dynamics.inertia] crank_shaft), a motor of larger breakdown torque, a higher start speed or smaller loads carry the machine through the cycle"
@@ -143,8 +151,7 @@ pub fn is_single_stroke(task: &TaskSource) -> Result<bool, Error> {
         dynamics: Option<toml::Table>,
     }
     let p: Probe = task.parse("dynamics")?;
-    Ok(p
-        .dynamics
+    Ok(p.dynamics
         .and_then(|d| d.get("motion").and_then(|m| m.as_str().map(|s| s == SINGLE_STROKE)))
         .unwrap_or(false))
 }
@@ -153,9 +160,7 @@ pub fn is_single_stroke(task: &TaskSource) -> Result<bool, Error> {
 /// cycle starts).
 pub fn read(task: &TaskSource, working: Working) -> Result<StrokeTask, Error> {
     let f: File = task.parse("dynamics")?;
-    let sec = f
-        .dynamics
-        .ok_or_else(|| Error::input(&task.name, "no [dynamics] section"))?;
+    let sec = f.dynamics.ok_or_else(|| Error::input(&task.name, "no [dynamics] section"))?;
     let section = sec.span();
     let sec = sec.into_inner();
     let mut spans = BTreeMap::new();

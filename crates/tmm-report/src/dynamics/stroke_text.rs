@@ -29,7 +29,11 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
         "φ is the crank angle turned {} from the start of the cycle at crank angle {:.3}°{}; the cycle ends at φ = 360°.",
         if red.dir > 0.0 { "counter-clockwise" } else { "clockwise" },
         red.phi_start.to_degrees().rem_euclid(360.0),
-        if red.stroke.is_some() { " (the start of the working stroke)" } else { "" }
+        if red.stroke.is_some() {
+            " (the start of the working stroke)"
+        } else {
+            ""
+        }
     );
     let _ = writeln!(
         o,
@@ -54,7 +58,10 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
             "static characteristic".to_string()
         }
     );
-    let _ = writeln!(o, "\nModel 1, the motor's characteristic (time integration, Dormand–Prince 5(4), rtol 1e-12):");
+    let _ = writeln!(
+        o,
+        "\nModel 1, the motor's characteristic (time integration, Dormand–Prince 5(4), rtol 1e-12):"
+    );
     let _ = writeln!(o, "  cycle time t_ц = {:.6} s (the event φ = 360°)", m.cycle_time);
     let _ = writeln!(o, "  ω at the end = {:.6} rad/s", m.omega_end);
     let _ = writeln!(
@@ -64,12 +71,20 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
         m.phi_omega_min.to_degrees(),
         m.time_omega_min
     );
-    let _ = writeln!(o, "  largest motor torque {:.2} N·m (M_K = {:.2} N·m)", m.torque_max, mo.breakdown_torque);
+    let _ = writeln!(
+        o,
+        "  largest motor torque {:.2} N·m (M_K = {:.2} N·m)",
+        m.torque_max, mo.breakdown_torque
+    );
     if m.crossings.is_empty() {
         let _ = writeln!(
             o,
             "  the crank's speed stays {} the motor's breakdown speed ω_K = {:.5} rad/s all through the stroke",
-            if m.omega_min > mo.crank_breakdown_speed() { "above" } else { "below" },
+            if m.omega_min > mo.crank_breakdown_speed() {
+                "above"
+            } else {
+                "below"
+            },
             mo.crank_breakdown_speed()
         );
     }
@@ -82,7 +97,11 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
             c.phi.to_degrees(),
             c.time,
             c.travel,
-            if c.falling { " (the motor passes onto the unstable branch)" } else { "" }
+            if c.falling {
+                " (the motor passes onto the unstable branch)"
+            } else {
+                ""
+            }
         );
     }
     let _ = writeln!(o, "  time below the breakdown speed {:.5} s", m.time_below_breakdown);
@@ -119,7 +138,13 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
     let _ = writeln!(o, "  t(360°) = {:.6} s", e.time_end);
     let _ = writeln!(o, "  least speed {:.6} rad/s", e.omega_min);
     if let (Some(d), Some(de)) = (&m.design, &e.design) {
-        let _ = writeln!(o, "\nDesign position φ = {:.3}° (crank angle {:.3}°), travel h = {:.5} m:", d.phi.to_degrees(), d.crank_angle.to_degrees().rem_euclid(360.0), d.travel);
+        let _ = writeln!(
+            o,
+            "\nDesign position φ = {:.3}° (crank angle {:.3}°), travel h = {:.5} m:",
+            d.phi.to_degrees(),
+            d.crank_angle.to_degrees().rem_euclid(360.0),
+            d.travel
+        );
         let _ = writeln!(
             o,
             "  I_II = {:.3} kg·m², I_Σ = {:.3} kg·m², M_c = {:.3} N·m",
@@ -140,7 +165,19 @@ pub fn report(l: &Loaded, s: &SingleStroke) -> String {
     let _ = writeln!(
         o,
         "{:>7} {:>8} {:>11} {:>12} {:>12} {:>11} {:>9} {:>10} {:>8} {:>12} {:>9} {:>10} {:>8}",
-        "φ, °", "h, m", "I_II, kg·m²", "I_Σ, kg·m²", "M_c, N·m", "u·M, N·m", "ω₁, 1/s", "ε₁, 1/s²", "t₁, s", "A_Σ₂, J", "ω₂, 1/s", "ε₂, 1/s²", "t₂, s"
+        "φ, °",
+        "h, m",
+        "I_II, kg·m²",
+        "I_Σ, kg·m²",
+        "M_c, N·m",
+        "u·M, N·m",
+        "ω₁, 1/s",
+        "ε₁, 1/s²",
+        "t₁, s",
+        "A_Σ₂, J",
+        "ω₂, 1/s",
+        "ε₂, 1/s²",
+        "t₂, s"
     );
     let every = (m.rows.len() / 36).max(1);
     for (k, (r, q)) in m.rows.iter().zip(&e.rows).enumerate() {

@@ -76,16 +76,16 @@ pub fn draw_all(s: &SingleStroke, prefix: &str, lang: Language, sheet: SheetForm
 
     // the reduced moments
     let md2 = e.driving_moment;
-    let yr = range(
-        m.rows
-            .iter()
-            .flat_map(|r| [r.moment_loads, r.moment_motor])
-            .chain([md2]),
-    );
+    let yr = range(m.rows.iter().flat_map(|r| [r.moment_loads, r.moment_motor]).chain([md2]));
     let mut ch = chart(&ws("title_moments"), ("M", &u_nm), yr, true);
     ch.curve(&xy1(&|r| r.moment_loads), RED, "M_c", None);
     ch.curve(&xy1(&|r| r.moment_motor), GREEN, &ws("sym_motor"), None);
-    ch.curve(&[(0.0, md2), (xr.1, md2)], PURPLE, &format!("{} = {} {u_nm}", ws("sym_constant"), num(md2, 1, lang)), Some((2.0, 1.0)));
+    ch.curve(
+        &[(0.0, md2), (xr.1, md2)],
+        PURPLE,
+        &format!("{} = {} {u_nm}", ws("sym_constant"), num(md2, 1, lang)),
+        Some((2.0, 1.0)),
+    );
     docs.add_text(format!("{prefix}stroke-moments.svg"), ch.finish())?;
     Ok(())
 }
