@@ -21,6 +21,7 @@ mod planetary_cli;
 mod redundant;
 mod seed_003_direction;
 mod shaper;
+mod single_stroke;
 mod synth;
 mod textbook_synthesis;
 mod write_safety;

@@ -201,13 +201,18 @@ fn density(task: &TaskSource, field: &str, q: &Qty) -> Result<f64, Error> {
 /// checked with the mechanism (`Dynamics::compute`, located by
 /// [`DynamicsTask::span_of`]).
 pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>, Error> {
-    let f: File = task.parse("dynamics")?;
-    let Some(sec) = f.dynamics else { return Ok(None) };
-    let section = sec.span();
-    let sec = sec.into_inner();
-    let mut spans = BTreeMap::new();
-    // the single stroke (`motion = "single-stroke"`) is read by stroke_task
-    if let Some(m) = &sec.motion
+    // the motion first: the single stroke (`motion = "single-stroke"`) has
+    // keys of its own and is read by stroke_task
+    #[derive(Deserialize)]
+    struct Probe {
+        dynamics: Option<ProbeSec>,
+    }
+    #[derive(Deserialize)]
+    struct ProbeSec {
+        motion: Option<S<String>>,
+    }
+    let p: Probe = task.parse("dynamics")?;
+    if let Some(m) = p.dynamics.and_then(|d| d.motion)
         && m.get_ref() != "steady"
     {
         let msg = if m.get_ref() == super::stroke_task::SINGLE_STROKE {
@@ -217,6 +222,11 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
         };
         return Err(Error::at(task, m.span(), "dynamics.motion", msg).with_help(super::stroke_task::help_for("dynamics.motion")));
     }
+    let f: File = task.parse("dynamics")?;
+    let Some(sec) = f.dynamics else { return Ok(None) };
+    let section = sec.span();
+    let sec = sec.into_inner();
+    let mut spans = BTreeMap::new();
     let delta_q = sec.delta.as_ref().ok_or_else(|| {
         Error::at(
             task,
