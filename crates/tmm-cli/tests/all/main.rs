@@ -20,5 +20,6 @@ mod planetary_cli;
 mod redundant;
 mod seed_003_direction;
 mod synth;
+mod textbook_cams;
 mod textbook_synthesis;
 mod write_safety;
