@@ -31,7 +31,8 @@ impl RollerCheck {
     /// Check `roller` against `r0` and the pitch curve's `rho_pitch`.
     ///
     /// ```
-    /// let c = tmm_cams::roller_rules::RollerCheck::new(0.02, 0.0474, 0.035);
+    /// // r0 = 60 mm: 15…24 mm; ρmin = 35 mm: below 28 mm
+    /// let c = tmm_cams::roller_rules::RollerCheck::new(0.02, 0.06, 0.035);
     /// assert!(c.in_range() && c.below_rho_bound() && c.below_rho());
     /// assert!(!tmm_cams::roller_rules::RollerCheck::new(0.02, 0.1, 0.035).in_range()); // 0.2·r₀
     /// ```

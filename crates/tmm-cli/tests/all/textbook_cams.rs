@@ -233,8 +233,10 @@ fn p6_oscillating_runs_with_every_asked_quantity() {
     }
     // point 2 passes the rise's limit a little; the vertex and tmm's design meet both
     assert!(f(b, "/point_2/limit_excess") > 0.0);
-    assert!(f(b, "/vertex/limit_excess") < 1e-9 && f(b, "/exact/limit_excess") < 1e-7);
-    assert!(f(c, "/pressure_angle_max_rise") <= d(30.0) + 1e-9 && f(c, "/pressure_angle_max_return") <= d(50.0) + 1e-9);
+    // (tmm's sizing cuts the region by the cones of 1440 positions a phase:
+    // between them the envelope may pass by some 10⁻⁷ rad, docs/cams.md §3)
+    assert!(f(b, "/vertex/limit_excess") < 1e-9 && f(b, "/exact/limit_excess") < 1e-6);
+    assert!(f(c, "/pressure_angle_max_rise") <= d(30.0) + 1e-6 && f(c, "/pressure_angle_max_return") <= d(50.0) + 1e-6);
     for s in ["level-line", "point 1", "φVmin", "φVmax", "point 2", "vertex", "aw mm", "φ20"] {
         assert!(text.contains(s), "the tables lack {s}");
     }
