@@ -34,6 +34,8 @@ impl RollerCheck {
     /// // r0 = 60 mm: 15…24 mm; ρmin = 35 mm: below 28 mm
     /// let c = tmm_cams::roller_rules::RollerCheck::new(0.02, 0.06, 0.035);
     /// assert!(c.in_range() && c.below_rho_bound() && c.below_rho());
+    /// let big = tmm_cams::roller_rules::RollerCheck::new(0.02, 0.0474, 0.035); // 0.42·r₀
+    /// assert!(big.above_low() && !big.below_high() && !big.in_range());
     /// assert!(!tmm_cams::roller_rules::RollerCheck::new(0.02, 0.1, 0.035).in_range()); // 0.2·r₀
     /// ```
     pub fn new(roller: f64, r0: f64, rho_pitch: f64) -> Self {
@@ -48,6 +50,14 @@ impl RollerCheck {
     /// `0.25·r₀ ≤ r_рол ≤ 0.40·r₀`.
     pub fn in_range(&self) -> bool {
         self.roller >= self.low && self.roller <= self.high
+    }
+    /// `r_рол ≥ 0.25·r₀`.
+    pub fn above_low(&self) -> bool {
+        self.roller >= self.low
+    }
+    /// `r_рол ≤ 0.40·r₀`.
+    pub fn below_high(&self) -> bool {
+        self.roller <= self.high
     }
     /// `r_рол < 0.8·ρ_min`.
     pub fn below_rho_bound(&self) -> bool {

@@ -165,6 +165,8 @@ fn p6_translating_runs_with_every_asked_quantity() {
     assert!((f(rr, "/range_high") - 0.4 * f(c, "/r0")).abs() < 1e-15);
     assert!((f(rr, "/range_low") - 0.25 * f(c, "/r0")).abs() < 1e-15);
     assert_eq!(rr["in_range"].as_bool(), Some(r >= 0.25 * f(c, "/r0") && r <= 0.4 * f(c, "/r0")));
+    assert_eq!(rr["above_range_low"].as_bool(), Some(r >= 0.25 * f(c, "/r0")));
+    assert_eq!(rr["below_range_high"].as_bool(), Some(r <= 0.4 * f(c, "/r0")));
     assert!((f(rr, "/rho_bound") - 0.8 * f(c, "/rho_min_pitch")).abs() < 1e-15);
     assert_eq!(rr["below_rho_min"].as_bool(), Some(r < f(c, "/rho_min_pitch")));
     // the tables carry the same

@@ -177,6 +177,8 @@ fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
     let mm = |v: f64| num(v * 1000.0);
     let dg = |v: f64| num(v.to_degrees());
     let at = |p: &str| cx.opt(p).unwrap_or(0.0);
+    // the largest |θ| of a phase, from its signed range `{p}_min`, `{p}_max`
+    let largest = |p: &str| at(&format!("{p}_max")).max(-at(&format!("{p}_min")));
     if method == "tangents" {
         b.formulas.push(cx.para("cam_f_book_tangents", &[])?);
         b.formulas.push(formula(
@@ -194,8 +196,8 @@ fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
                 mm(at(&format!("{ptr}/e_book"))),
                 mm(at(&format!("{ptr}/s0"))),
                 mm(at(&format!("{ptr}/r0"))),
-                dg(at(&format!("{ptr}/pressure_rise_max"))),
-                dg(at(&format!("{ptr}/pressure_return_min"))),
+                dg(largest(&format!("{ptr}/pressure_rise"))),
+                dg(largest(&format!("{ptr}/pressure_return"))),
                 dg(at(&format!("{ptr}/limit_excess"))),
             ]);
         }
@@ -253,8 +255,8 @@ fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
                 mm(at(&format!("{ptr}/y"))),
                 mm(at(&format!("{ptr}/centre_distance"))),
                 dg(at(&format!("{ptr}/initial_angle"))),
-                dg(at(&format!("{ptr}/pressure_rise_max"))),
-                dg(at(&format!("{ptr}/pressure_return_min"))),
+                dg(largest(&format!("{ptr}/pressure_rise"))),
+                dg(largest(&format!("{ptr}/pressure_return"))),
                 dg(at(&format!("{ptr}/limit_excess"))),
             ]);
         }
@@ -313,12 +315,12 @@ fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
                 vec![
                     text(cx.w("cam_rule_low")?),
                     mm(at(&format!("{r}/range_low"))),
-                    text(yes(&format!("{r}/in_range"))?),
+                    text(yes(&format!("{r}/above_range_low"))?),
                 ],
                 vec![
                     text(cx.w("cam_rule_high")?),
                     mm(at(&format!("{r}/range_high"))),
-                    text(yes(&format!("{r}/in_range"))?),
+                    text(yes(&format!("{r}/below_range_high"))?),
                 ],
                 vec![
                     text(cx.w("cam_rule_rho08")?),

@@ -52,6 +52,8 @@ fn rules(r: &RollerCheck) -> Value {
         "range_low": num(r.low),
         "range_high": num(r.high),
         "in_range": r.in_range(),
+        "above_range_low": r.above_low(),
+        "below_range_high": r.below_high(),
         "rho_min_pitch": if r.rho_pitch.is_finite() { num(r.rho_pitch) } else { Value::Null },
         "rho_bound": if r.rho_bound.is_finite() { num(r.rho_bound) } else { Value::Null },
         "below_rho_bound": r.below_rho_bound(),
@@ -156,11 +158,13 @@ fn rules_text(t: &mut String, what: &str, r: &RollerCheck) {
     let yes = |b: bool| if b { "yes" } else { "NO" };
     let _ = writeln!(
         t,
-        "  roller {:.3} mm with {what}: 0.25·r0…0.40·r0 = {:.3}…{:.3} mm: {}; 0.8·ρmin of the pitch curve = {:.3} mm: below {}; below ρmin = {:.3} mm {}",
+        "  roller {:.3} mm with {what}: 0.25·r0…0.40·r0 = {:.3}…{:.3} mm: {} (≥ 0.25·r0 {}, ≤ 0.40·r0 {}); 0.8·ρmin of the pitch curve = {:.3} mm: below {}; below ρmin = {:.3} mm {}",
         r.roller * 1e3,
         r.low * 1e3,
         r.high * 1e3,
         yes(r.in_range()),
+        yes(r.above_low()),
+        yes(r.below_high()),
         r.rho_bound * 1e3,
         yes(r.below_rho_bound()),
         r.rho_pitch * 1e3,
