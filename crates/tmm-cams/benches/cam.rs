@@ -112,3 +112,48 @@ fn table_10000_design() {
     };
     black_box(&t).solve().unwrap();
 }
+
+/// The textbook's law of appendix П6 (two half sines up, two constants down).
+const P6: &str = "rise 120 accel(sine 1, sine -3); dwell 30; return 180 accel(const -1, const 2.5); dwell 30";
+
+fn p6_task(follower: FollowerSpec, h: f64, rotation: Rotation) -> CamTask {
+    CamTask {
+        program: Program::new(h, spec::parse_phases(P6).unwrap()).unwrap(),
+        follower,
+        rotation,
+        limits: spec::parse_limits("rise 30, return 50", false).unwrap(),
+        min_curvature: None,
+        face_margin: 0.005,
+        omega: 1.0,
+        points: 720,
+    }
+}
+
+#[divan::bench]
+fn textbook_tangent_methods_p6(b: Bencher) {
+    let t = p6_task(
+        FollowerSpec::TranslatingRoller {
+            offset: None,
+            roller: Some(0.02),
+        },
+        0.08,
+        Rotation::Cw,
+    );
+    let d = t.solve().unwrap();
+    b.bench(|| tmm_cams::textbook::compare(black_box(&t), black_box(&d)).unwrap());
+}
+
+#[divan::bench]
+fn textbook_level_lines_p6(b: Bencher) {
+    let t = p6_task(
+        FollowerSpec::OscillatingRoller {
+            arm: 0.15,
+            pivot: None,
+            roller: Some(0.0),
+        },
+        0.08 / 0.15,
+        Rotation::Ccw,
+    );
+    let d = t.solve().unwrap();
+    b.bench(|| tmm_cams::textbook::compare(black_box(&t), black_box(&d)).unwrap());
+}

@@ -50,6 +50,54 @@ pub enum LawKind {
     /// [`crate::program::Program::jumps`] lists them). The only law here with
     /// `y′(0) = y′(1) = 1` instead of 0.
     ConstVelocity,
+    /// The acceleration analog drawn as pieces (участки диаграммы аналога
+    /// ускорения), each a constant or a half sine wave of its own amplitude
+    /// and length, integrated exactly and scaled to the stroke — the law of
+    /// the BMSTU textbook's appendix П6 (Chernaya, Timofeev 2019, p. 149–150):
+    /// two half sines of amplitudes a₁, a₂ = ν·a₁ on the rise, two constants
+    /// on the return. The pieces are given as a rise law (positive first);
+    /// a return phase written with the book's signs is turned by
+    /// [`crate::spec::parse_phases`].
+    Accel(Vec<AccelPiece>),
+}
+
+/// The shape of one piece of an [`LawKind::Accel`] law.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AccelShape {
+    /// A constant acceleration analog (прямоугольник).
+    Const,
+    /// A half wave of a sine, `A·sin(πt/L)` over the piece of length L
+    /// (полуволна синусоиды); its area is `2AL/π`.
+    Sine,
+}
+
+impl AccelShape {
+    /// The area of a piece of unit amplitude and unit length: 1 for a
+    /// constant, `∫₀¹ sin πt dt = 2/π` for a half sine.
+    pub fn area_factor(self) -> f64 {
+        match self {
+            AccelShape::Const => 1.0,
+            AccelShape::Sine => 2.0 / PI,
+        }
+    }
+    /// `const` or `sine`.
+    pub fn name(self) -> &'static str {
+        match self {
+            AccelShape::Const => "const",
+            AccelShape::Sine => "sine",
+        }
+    }
+}
+
+/// One piece of an [`LawKind::Accel`] law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AccelPiece {
+    /// Constant or half sine.
+    pub shape: AccelShape,
+    /// The signed amplitude (relative: the law is scaled to the stroke).
+    pub amplitude: f64,
+    /// The piece's length as a fraction of the phase; the lengths add up to 1.
+    pub length: f64,
 }
 
 /// A motion law ready to evaluate.
@@ -65,12 +113,21 @@ pub const MAX_TABLE: usize = 10_000;
 
 /// The shape of an unbalanced or empty table, for [`CamError::LawParameter`].
 fn shape_error(name: &str, e: ShapeError) -> CamError {
+    let what = if name == "accel" { "pieces" } else { "table" };
     let reason = match e {
         ShapeError::Unbalanced { ratio } => format!(
-            "the positive and negative areas of the acceleration table differ (net area {:.3} % of the total): the velocity would not return to zero at the end of the phase; balance the table",
+            "the positive and negative areas of the acceleration {what} differ (net area {:.3} % of the total): the velocity would not return to zero at the end of the phase; balance the {what}",
             ratio * 100.0
         ),
-        ShapeError::NoRise => "the acceleration table gives no lift (its double integral is not positive)".to_string(),
+        ShapeError::NoRise => format!(
+            "the acceleration {what} give{} no lift (its double integral is not positive){}",
+            if name == "accel" { "" } else { "s" },
+            if name == "accel" {
+                "; a rise starts with a positive piece, a return with a negative one"
+            } else {
+                ""
+            }
+        ),
     };
     CamError::LawParameter {
         law: name.to_string(),
@@ -150,6 +207,7 @@ impl Law {
                 let dx = 1.0 / n as f64;
                 Some((0..n).map(|i| Piece::linear(i as f64 * dx, v[i], (v[i + 1] - v[i]) / dx)).collect())
             }
+            LawKind::Accel(p) => Some(accel_pieces(p)?),
             _ => None,
         };
         let name = kind.name();
@@ -255,6 +313,14 @@ impl Law {
                     1
                 }
             }
+            // a half sine starts and ends at 0: C2 where both ends are sines
+            LawKind::Accel(p) => {
+                if p.first().is_some_and(|q| q.shape == AccelShape::Sine) && p.last().is_some_and(|q| q.shape == AccelShape::Sine) {
+                    2
+                } else {
+                    1
+                }
+            }
         }
     }
 }
@@ -274,6 +340,7 @@ impl LawKind {
             LawKind::Poly4567 => "poly4567",
             LawKind::Table(_) => "table",
             LawKind::ConstVelocity => "const-velocity",
+            LawKind::Accel(_) => "accel",
         }
     }
 }
@@ -283,10 +350,67 @@ impl std::fmt::Display for LawKind {
         match self {
             LawKind::ConstAccel { u } => write!(f, "const-accel(u={u:.4})"),
             LawKind::Table(v) => write!(f, "table({} values)", v.len()),
+            LawKind::Accel(p) => {
+                f.write_str("accel(")?;
+                for (i, q) in p.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    write!(f, "{} {} on {:.4}", q.shape.name(), q.amplitude, q.length)?;
+                }
+                f.write_str(")")
+            }
             k => f.write_str(k.name()),
         }
     }
 }
 
 /// The law names a phase list accepts, for messages.
-pub const LAW_NAMES: &str = "const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …), const-velocity";
+pub const LAW_NAMES: &str = "const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …), const-velocity, accel(sine 1, sine -3) (pieces of the acceleration analog, each `const` or `sine` with its amplitude and, optionally, its angle)";
+
+/// The most pieces of an [`LawKind::Accel`] law.
+pub const MAX_ACCEL_PIECES: usize = 64;
+
+/// The pieces of an [`LawKind::Accel`] law as [`Piece`]s: a constant `A` on
+/// its length, a half sine `A·sin(πt/L)` (frequency π/L per unit of the
+/// phase fraction). Checked: at least two pieces, finite amplitudes, positive
+/// lengths that add up to 1.
+fn accel_pieces(p: &[AccelPiece]) -> Result<Vec<Piece>, CamError> {
+    let bad = |reason: String| CamError::LawParameter {
+        law: "accel".into(),
+        reason,
+    };
+    if p.len() < 2 || p.len() > MAX_ACCEL_PIECES {
+        return Err(bad(format!(
+            "give from 2 to {MAX_ACCEL_PIECES} pieces (a positive and a negative one at least), got {}",
+            p.len()
+        )));
+    }
+    if let Some((i, _)) = p.iter().enumerate().find(|(_, q)| !q.amplitude.is_finite()) {
+        return Err(bad(format!("piece {}: the amplitude must be a finite number", i + 1)));
+    }
+    if let Some((i, q)) = p.iter().enumerate().find(|(_, q)| !(q.length.is_finite() && q.length > 0.0)) {
+        return Err(bad(format!(
+            "piece {}: its length must be positive, got {} of the phase",
+            i + 1,
+            q.length
+        )));
+    }
+    let sum: f64 = p.iter().map(|q| q.length).sum();
+    if (sum - 1.0).abs() > 1e-9 {
+        return Err(bad(format!(
+            "the pieces cover {:.6} of the phase: their angles must add up to the phase angle",
+            sum
+        )));
+    }
+    let mut x0 = 0.0;
+    let mut out = Vec::with_capacity(p.len());
+    for q in p {
+        out.push(match q.shape {
+            AccelShape::Const => Piece::linear(x0, q.amplitude, 0.0),
+            AccelShape::Sine => Piece::new(x0, 0.0, 0.0, q.amplitude, 0.0, PI / q.length),
+        });
+        x0 += q.length;
+    }
+    Ok(out)
+}

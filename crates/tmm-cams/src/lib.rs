@@ -14,6 +14,10 @@
 //! | [`extreme`] | extremes of smooth functions on an interval |
 //! | [`profile`] | pitch and working profiles, curvature, pressure angle |
 //! | [`design`] | the whole design from a task |
+//! | [`tangents`] | the textbook's tangent methods for a translating follower (П6.4) |
+//! | [`levels`] | the textbook's level-line method for an oscillating follower (П6.5) |
+//! | [`roller_rules`] | the textbook's roller-radius rules (p. 111) |
+//! | [`textbook`] | the textbook's constructions beside the design, checked |
 //!
 //! ```
 //! use tmm_cams::{design::{CamTask, FollowerSpec}, mechanism::Rotation, program::Program, spec};
@@ -39,12 +43,16 @@ pub mod error;
 pub mod extreme;
 pub mod halfplane;
 pub mod law;
+pub mod levels;
 pub mod mechanism;
 pub mod profile;
 pub mod program;
+pub mod roller_rules;
 pub mod segments;
 pub mod sizing;
 pub mod spec;
+pub mod tangents;
+pub mod textbook;
 
 pub use error::CamError;
 

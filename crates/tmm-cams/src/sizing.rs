@@ -124,6 +124,20 @@ pub fn oscillating_roller(
     pivot: Option<f64>,
     samples: usize,
 ) -> Result<Mechanism, CamError> {
+    oscillating_roller_senses(prog, sigma, limits, arm, pivot, samples, &[1.0, -1.0])
+}
+
+/// [`oscillating_roller`] with the arm's senses of turning on the rise to try
+/// (`&[1.0]`: counter-clockwise only, the textbook's arrangement).
+pub fn oscillating_roller_senses(
+    prog: &Program,
+    sigma: f64,
+    limits: Limits,
+    arm: f64,
+    pivot: Option<f64>,
+    samples: usize,
+    senses: &[f64],
+) -> Result<Mechanism, CamError> {
     if !positive(arm) {
         return Err(CamError::Dimension {
             field: "arm",
@@ -146,7 +160,7 @@ pub fn oscillating_roller(
     }
     let mut best: Option<(f64, Mechanism)> = None;
     let b0 = Vec2::new(arm, 0.0);
-    for kappa in [1.0, -1.0] {
+    for &kappa in senses {
         let hs = oscillating_cones(prog, sigma, limits, arm, kappa, samples);
         let o = nearest_by_cuts(&hs, b0, arm, pivot);
         let Some(o) = o else { continue };
@@ -228,8 +242,15 @@ pub fn oscillating_cones(prog: &Program, sigma: f64, limits: Limits, arm: f64, k
         };
         let t = lim.tan();
         let n = samples.max(16);
-        for i in 0..=n {
-            let m = prog.eval_in(k, ph.angle * i as f64 / n as f64);
+        // equal steps, and the joints inside the law: where s″ jumps the
+        // apex curve (s, s′ only) has a corner and the pressure angle its
+        // peak, which a step would cut off to first order
+        let joints = ph.law.as_ref().map(|l| l.breaks()).unwrap_or_default();
+        let at = (0..=n)
+            .map(|i| ph.angle * i as f64 / n as f64)
+            .chain(joints.iter().filter(|&&x| x < 1.0).map(|&x| x * ph.angle));
+        for x in at {
+            let m = prog.eval_in(k, x);
             let psi = kappa * m.s;
             let u = Vec2::new(psi.cos(), psi.sin());
             let d = quarter(u) * kappa;

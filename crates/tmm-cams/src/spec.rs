@@ -3,7 +3,7 @@
 //! the pressure-angle limits (`rise 15, return 30`, or one value for both).
 
 use crate::CamError;
-use crate::law::{LAW_NAMES, Law, LawKind};
+use crate::law::{AccelPiece, AccelShape, LAW_NAMES, Law, LawKind};
 use crate::program::{Phase, PhaseKind, Stroke};
 use tmm_geom::units::{self, Dim};
 
@@ -79,16 +79,21 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
                     "give the angle and the law, e.g. `{kw} 108 cosine` or `{kw} 108 cosine 20mm`; laws: {LAW_NAMES}"
                 ))
             })?;
-            let law = parse_law(words[at])?;
             let stroke_txt = words[at + 1..].join(" ");
             let stroke = if stroke_txt.is_empty() {
                 None
             } else {
                 Some(parse_stroke(&stroke_txt).map_err(err)?)
             };
-            (words[..at].join(" "), Some(law), stroke)
+            (words[..at].join(" "), Some(words[at]), stroke)
         };
         let angle = units::parse(&angle_txt, Dim::Angle).map_err(|e| err(e.to_string()))?;
+        // the law once the phase is known: the pieces of `accel(…)` take
+        // their signs from the phase and their angles from its angle
+        let law = match law {
+            Some(w) => Some(parse_law_in(w, Some((kind, angle)))?),
+            None => None,
+        };
         // the cost is in the table values of all phases together (each
         // value a piece searched on its own), so the limit is on their sum
         if let Some(LawKind::Table(v)) = law.as_ref().map(Law::kind) {
@@ -121,6 +126,27 @@ pub fn parse_phases(text: &str) -> Result<Vec<Phase>, CamError> {
 /// assert_eq!(t.kind(), &LawKind::Table(vec![1.0, 1.0, -1.0, -1.0]));
 /// ```
 pub fn parse_law(text: &str) -> Result<Law, CamError> {
+    parse_law_in(text, None)
+}
+
+/// Read one law of a phase of kind `kind` and angle `angle` (rad), when
+/// known: an `accel(…)` law on a return is written with the signs of the
+/// return's acceleration analog (negative first, as the book draws it), and
+/// its pieces' angles must add up to the phase angle. Without a phase the
+/// law is read as a rise whose pieces give no angles.
+///
+/// ```
+/// use tmm_cams::{law::{AccelShape, LawKind}, program::PhaseKind, spec::parse_law_in};
+/// let l = parse_law_in("accel(sine 1, sine -3)", Some((PhaseKind::Rise, 120f64.to_radians()))).unwrap();
+/// let LawKind::Accel(p) = l.kind() else { panic!() };
+/// // the areas balance: 1·L₁ = 3·L₂, so L₁ = 3/4 of the phase (the book's f₁ = a₂ψ/(a₁ + a₂))
+/// assert!((p[0].length - 0.75).abs() < 1e-15 && p[0].shape == AccelShape::Sine);
+/// let r = parse_law_in("accel(const -1 90°, const 1 90°)", Some((PhaseKind::Return, std::f64::consts::PI))).unwrap();
+/// let LawKind::Accel(q) = r.kind() else { panic!() };
+/// assert_eq!(q[0].amplitude, 1.0); // turned into a rise law
+/// assert!(parse_law_in("accel(const -1 90°, const 1 80°)", Some((PhaseKind::Return, std::f64::consts::PI))).is_err());
+/// ```
+pub fn parse_law_in(text: &str, phase: Option<(PhaseKind, f64)>) -> Result<Law, CamError> {
     let t = text.trim();
     let (name, args) = match t.find('(') {
         Some(p) => {
@@ -183,9 +209,130 @@ pub fn parse_law(text: &str) -> Result<Law, CamError> {
                 .collect();
             LawKind::Table(vals?)
         }
+        "accel" | "acceleration" => parse_accel(args.unwrap_or(""), phase)?,
         _ => return Err(CamError::UnknownLaw { name: name.to_string() }),
     };
     Law::new(kind)
+}
+
+/// The pieces of `accel(SHAPE AMPLITUDE [ANGLE], …)`: SHAPE `const` or
+/// `sine` (a half sine wave), the signed amplitude of the phase's
+/// acceleration analog (a rise starts positive, a return negative), the
+/// piece's angle with its unit (degrees when bare). Angles are given for all
+/// pieces (adding up to the phase angle), for all but one (which takes the
+/// rest), or for none of two pieces, which then split the phase so that
+/// their areas balance: `L₁·|A₁|·k₁ = L₂·|A₂|·k₂`, k the shape's area factor
+/// ([`AccelShape::area_factor`]), i.e. `L₁ = β·|A₂|k₂/(|A₁|k₁ + |A₂|k₂)` —
+/// for equal shapes the book's `f₁ = a₂ψ/(a₁ + a₂)` (Chernaya, Timofeev 2019,
+/// appendix П6, p. 149).
+fn parse_accel(args: &str, phase: Option<(PhaseKind, f64)>) -> Result<LawKind, CamError> {
+    let bad = |reason: String| CamError::LawParameter {
+        law: "accel".into(),
+        reason,
+    };
+    let mut shapes = Vec::new();
+    for (i, piece) in args.split(',').enumerate() {
+        let words: Vec<&str> = piece.split_whitespace().collect();
+        if words.len() < 2 {
+            return Err(bad(format!(
+                "piece {} `{}`: write SHAPE AMPLITUDE [ANGLE], e.g. `sine 1 90°` or `const -2.5`",
+                i + 1,
+                piece.trim()
+            )));
+        }
+        let shape = match words[0].to_ascii_lowercase().as_str() {
+            "const" | "constant" => AccelShape::Const,
+            "sine" | "sin" | "half-sine" => AccelShape::Sine,
+            w => {
+                return Err(bad(format!(
+                    "piece {}: `{w}` is not a shape; use const or sine (a half sine wave)",
+                    i + 1
+                )));
+            }
+        };
+        let amplitude =
+            units::parse(words[1], Dim::Ratio).map_err(|e| bad(format!("piece {}: the amplitude `{}`: {e}", i + 1, words[1])))?;
+        if amplitude == 0.0 || !amplitude.is_finite() {
+            return Err(bad(format!("piece {}: the amplitude must be a finite number other than 0", i + 1)));
+        }
+        let angle = if words.len() > 2 {
+            let a_txt = words[2..].join(" ");
+            let a = units::parse(&a_txt, Dim::Angle).map_err(|e| bad(format!("piece {}: the angle `{a_txt}`: {e}", i + 1)))?;
+            if !(a.is_finite() && a > 0.0) {
+                return Err(bad(format!("piece {}: the angle must be positive, got {a_txt}", i + 1)));
+            }
+            Some(a)
+        } else {
+            None
+        };
+        shapes.push((shape, amplitude, angle));
+    }
+    if shapes.len() < 2 || shapes.len() > crate::law::MAX_ACCEL_PIECES {
+        return Err(bad(format!(
+            "give from 2 to {} pieces, a positive and a negative one at least; got {}",
+            crate::law::MAX_ACCEL_PIECES,
+            shapes.len()
+        )));
+    }
+    let (sign, beta) = match phase {
+        Some((PhaseKind::Return, b)) => (-1.0, Some(b)),
+        Some((_, b)) => (1.0, Some(b)),
+        None => (1.0, None),
+    };
+    let missing = shapes.iter().filter(|s| s.2.is_none()).count();
+    let lengths: Vec<f64> = if missing == 0 || missing == 1 && shapes.len() > 2 {
+        let Some(beta) = beta else {
+            return Err(bad("the pieces' angles need the phase angle: write the law in a phase list".into()));
+        };
+        let given: f64 = shapes.iter().filter_map(|s| s.2).sum();
+        if missing == 0 {
+            if (given - beta).abs() > 1e-6f64.to_radians() {
+                return Err(bad(format!(
+                    "the pieces' angles add up to {:.6}° but the phase is {:.6}°; make them equal, or leave the angle out of one piece to give it the rest",
+                    given.to_degrees(),
+                    beta.to_degrees()
+                )));
+            }
+        } else if given >= beta - 1e-6f64.to_radians() {
+            return Err(bad(format!(
+                "the given pieces' angles add up to {:.6}°, leaving nothing of the phase's {:.6}° for the piece without an angle",
+                given.to_degrees(),
+                beta.to_degrees()
+            )));
+        }
+        // the angles as fractions of their own sum (equal to β to 1e-6°)
+        let rest = beta - given;
+        let total = if missing == 0 { given } else { beta };
+        shapes.iter().map(|s| s.2.unwrap_or(rest) / total).collect()
+    } else if missing == 2 && shapes.len() == 2 {
+        let (s1, a1, _) = shapes[0];
+        let (s2, a2, _) = shapes[1];
+        if a1.signum() == a2.signum() {
+            return Err(bad(
+                "the two pieces have the same sign: the velocity would not come back to zero; give one positive and one negative amplitude"
+                    .into(),
+            ));
+        }
+        // the areas balance: L₁|A₁|k₁ = L₂|A₂|k₂ with L₁ + L₂ = 1
+        let (w1, w2) = (a1.abs() * s1.area_factor(), a2.abs() * s2.area_factor());
+        vec![w2 / (w1 + w2), w1 / (w1 + w2)]
+    } else {
+        return Err(bad(format!(
+            "{missing} of the {} pieces have no angle: give every piece its angle, or leave it out of one piece only (or of both of two pieces, which then split the phase so their areas balance)",
+            shapes.len()
+        )));
+    };
+    Ok(LawKind::Accel(
+        shapes
+            .iter()
+            .zip(lengths)
+            .map(|(&(shape, amplitude, _), length)| AccelPiece {
+                shape,
+                amplitude: sign * amplitude,
+                length,
+            })
+            .collect(),
+    ))
 }
 
 /// Pressure-angle limits for the rise and the return, rad.

@@ -8,3 +8,4 @@ mod laws;
 mod profile;
 mod random;
 mod sizing;
+mod textbook_p6;

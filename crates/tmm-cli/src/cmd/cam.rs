@@ -66,6 +66,9 @@ pub struct Args {
     /// Analyse a given cam: its base (prime) circle radius r0, e.g. "2 in" (with --offset for a translating follower, --pivot for an oscillating one), instead of sizing the smallest cam
     #[arg(long, allow_hyphen_values = true)]
     pub r0: Option<String>,
+    /// Also give the textbook's constructions (BMSTU 2019, appendix П6): the tangent methods of a translating follower, the level lines of an oscillating one, the roller rules, each checked against tmm's design
+    #[arg(long)]
+    pub book_methods: bool,
     /// Step of the position table, degrees
     #[arg(long, default_value_t = 15)]
     pub step: usize,
@@ -110,6 +113,7 @@ impl Args {
             face_margin: t(&self.face_margin),
             points,
             r0: t(&self.r0),
+            book_methods: self.book_methods,
         })
     }
 
@@ -130,6 +134,7 @@ impl Args {
             (self.face_margin.is_some(), "--face-margin"),
             (self.points.is_some(), "--points"),
             (self.r0.is_some(), "--r0"),
+            (self.book_methods, "--book-methods"),
         ]
         .into_iter()
         .find(|x| x.0)
@@ -139,7 +144,7 @@ impl Args {
 
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
-    let (task, design) = match &a.file {
+    let (task, design, book) = match &a.file {
         Some(path) => {
             if let Some(opt) = a.any_task_option() {
                 return Err(Error::input(opt, "cannot be combined with a task file")
@@ -155,7 +160,8 @@ pub fn run(a: &Args) -> Result<(), Error> {
             let raw = sec.raw();
             let task = input::build(&raw, &loc)?;
             let d = cam_report::solve(&task, input::given_r0(&raw, &loc)?, &loc)?;
-            (task, d)
+            let b = cam_report::book_methods(&task, &d, &raw, &loc)?;
+            (task, d, b)
         }
         None => {
             let raw = a.raw()?;
@@ -166,14 +172,12 @@ pub fn run(a: &Args) -> Result<(), Error> {
             let loc = |f: Field, m: String| input::cli_locator(f, m);
             let task = input::build(&raw, &loc)?;
             let d = cam_report::solve(&task, input::given_r0(&raw, &loc)?, &loc)?;
-            (task, d)
+            let b = cam_report::book_methods(&task, &d, &raw, &loc)?;
+            (task, d, b)
         }
     };
-    let out = if a.json {
-        json_text(&cam_report::json::document(&task, &design))?
-    } else {
-        checked(cam_report::text::tables(&task, &design, a.step))?
-    };
+    let (json, text) = cam_report::outputs(&task, &design, book.as_ref(), a.step);
+    let out = if a.json { json_text(&json)? } else { checked(text)? };
     let mut single: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     if let Some(p) = &a.dxf {
         single.push((p.clone(), cam_report::profile_dxf(&design)?));

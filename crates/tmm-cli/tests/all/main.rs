@@ -23,5 +23,6 @@ mod seed_003_direction;
 mod shaper;
 mod single_stroke;
 mod synth;
+mod textbook_cams;
 mod textbook_synthesis;
 mod write_safety;

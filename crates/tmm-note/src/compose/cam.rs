@@ -139,8 +139,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             results.push(f);
         }
     }
+    let book = book_blocks(cx)?;
+    formulas.extend(book.formulas);
+    results.extend(book.results);
     let undercut = cam.get("undercut").and_then(Value::as_bool).unwrap_or(false);
-    let conclusions = vec![cx.para(
+    let mut conclusions = vec![cx.para(
         if undercut { "cam_conclusion_undercut" } else { "cam_conclusion" },
         &[
             cx.qv("/cam/r0", 1000.0, "u_mm")?,
@@ -149,5 +152,188 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             cx.qv("/cam/rho_min", 1000.0, "u_mm")?,
         ],
     )?];
+    conclusions.extend(book.conclusions);
     Ok(Some(four_parts(cx, "sec_cam", statement, formulas, results, conclusions)?))
+}
+
+/// The textbook's constructions (`cam.book`), when the report has them.
+#[derive(Default)]
+struct BookBlocks {
+    formulas: Vec<Block>,
+    results: Vec<Block>,
+    conclusions: Vec<Block>,
+}
+
+/// A signed angle at `ptr` in degrees.
+fn deg_at(cx: &Ctx, ptr: &str) -> Result<String, NoteError> {
+    cx.deg(ptr)
+}
+
+/// The book's tangent methods (translating follower, П6.4) or level lines
+/// (oscillating follower, П6.5) beside tmm's design, and the roller rules.
+fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
+    let mut b = BookBlocks::default();
+    let Some(method) = cx.s("/cam/book/method") else { return Ok(b) };
+    let mm = |v: f64| num(v * 1000.0);
+    let dg = |v: f64| num(v.to_degrees());
+    let at = |p: &str| cx.opt(p).unwrap_or(0.0);
+    // the largest |θ| of a phase, from its signed range `{p}_min`, `{p}_max`
+    let largest = |p: &str| at(&format!("{p}_max")).max(-at(&format!("{p}_min")));
+    if method == "tangents" {
+        b.formulas.push(cx.para("cam_f_book_tangents", &[])?);
+        b.formulas.push(formula(
+            "tan theta.alt = (v_q - e) / (s_0 + S), quad v_q / a_q = tan delta, quad delta = pi / 2 - theta.alt",
+        ));
+        let mut rows = Vec::new();
+        for (key, ptr) in [
+            ("cam_book_step1", "/cam/book/approximate"),
+            ("cam_book_method1", "/cam/book/method_1"),
+            ("cam_book_method2", "/cam/book/method_2"),
+            ("cam_book_exact", "/cam/book/exact"),
+        ] {
+            rows.push(vec![
+                text(cx.w(key)?),
+                mm(at(&format!("{ptr}/e_book"))),
+                mm(at(&format!("{ptr}/s0"))),
+                mm(at(&format!("{ptr}/r0"))),
+                dg(largest(&format!("{ptr}/pressure_rise"))),
+                dg(largest(&format!("{ptr}/pressure_return"))),
+                dg(at(&format!("{ptr}/limit_excess"))),
+            ]);
+        }
+        b.results.push(cx.table(
+            "tab_cam_book",
+            &[
+                ("col_centre", ""),
+                ("col_e_book", "u_mm"),
+                ("col_s0", "u_mm"),
+                ("col_r0", "u_mm"),
+                ("col_theta_rise", "u_deg"),
+                ("col_theta_return", "u_deg"),
+                ("col_excess", "u_deg"),
+            ],
+            rows,
+        )?);
+        let q = vec![
+            (cx.w("q_phi_speed_rise")?, deg_at(cx, "/cam/book/phi_speed_rise")?),
+            (cx.w("q_phi_speed_return")?, deg_at(cx, "/cam/book/phi_speed_return")?),
+            (cx.w("q_phi_tangent_rise")?, deg_at(cx, "/cam/book/phi_tangent_rise")?),
+            (cx.w("q_phi_tangent_return")?, deg_at(cx, "/cam/book/phi_tangent_return")?),
+            (cx.w("q_delta_r")?, cx.q(at("/cam/book/delta_r") * 100.0, "u_percent")?),
+            (cx.w("q_delta_e")?, cx.q(at("/cam/book/delta_e") * 100.0, "u_percent")?),
+            (cx.w("q_r0_vs_exact")?, cx.q(at("/cam/book/r0_vs_exact") * 100.0, "u_percent")?),
+        ];
+        b.results.push(cx.quantities("tab_cam_book_points", q)?);
+        let over = at("/cam/book/method_1/limit_excess") > 1e-9;
+        b.conclusions.push(cx.para(
+            if over {
+                "cam_conclusion_book_tangents"
+            } else {
+                "cam_conclusion_book_tangents_ok"
+            },
+            &[
+                cx.qv("/cam/book/method_1/r0", 1000.0, "u_mm")?,
+                cx.qv("/cam/book/exact/r0", 1000.0, "u_mm")?,
+                cx.q(at("/cam/book/r0_vs_exact") * 100.0, "u_percent")?,
+                cx.q(at("/cam/book/method_1/limit_excess").to_degrees(), "u_deg")?,
+            ],
+        )?);
+    } else {
+        b.formulas.push(cx.para("cam_f_book_levels", &[])?);
+        b.formulas.push(formula(
+            "N = (l_T - v_q) e(phi_2), quad k = tan(phi_2 + pi / 2 plus.minus theta.alt), quad X_V = (Y_1 - b) / k - X_1",
+        ));
+        let mut rows = Vec::new();
+        for (key, ptr) in [
+            ("cam_book_point2", "/cam/book/point_2"),
+            ("cam_book_vertex", "/cam/book/vertex"),
+            ("cam_book_exact", "/cam/book/exact"),
+        ] {
+            rows.push(vec![
+                text(cx.w(key)?),
+                mm(at(&format!("{ptr}/x"))),
+                mm(at(&format!("{ptr}/y"))),
+                mm(at(&format!("{ptr}/centre_distance"))),
+                dg(at(&format!("{ptr}/initial_angle"))),
+                dg(largest(&format!("{ptr}/pressure_rise"))),
+                dg(largest(&format!("{ptr}/pressure_return"))),
+                dg(at(&format!("{ptr}/limit_excess"))),
+            ]);
+        }
+        b.results.push(cx.table(
+            "tab_cam_book_levels",
+            &[
+                ("col_centre", ""),
+                ("col_x", "u_mm"),
+                ("col_y", "u_mm"),
+                ("col_aw", "u_mm"),
+                ("col_phi20", "u_deg"),
+                ("col_theta_rise", "u_deg"),
+                ("col_theta_return", "u_deg"),
+                ("col_excess", "u_deg"),
+            ],
+            rows,
+        )?);
+        let p1 = cx.report.pointer("/cam/book/point_1").and_then(Value::as_array);
+        let c = |i: usize| p1.and_then(|a| a.get(i)).and_then(Value::as_f64).unwrap_or(0.0) * 1000.0;
+        let q = vec![
+            (cx.w("q_point1")?, format!("{}; {}", cx.q(c(0), "u_mm")?, cx.q(c(1), "u_mm")?)),
+            (cx.w("q_phi_v_min")?, deg_at(cx, "/cam/book/phi_v_min")?),
+            (cx.w("q_phi_v_max")?, deg_at(cx, "/cam/book/phi_v_max")?),
+            (
+                cx.w("q_pivot_distance")?,
+                cx.qv("/cam/book/point_2/centre_distance", 1000.0, "u_mm")?,
+            ),
+            (cx.w("q_phi20")?, deg_at(cx, "/cam/book/point_2/initial_angle")?),
+        ];
+        b.results.push(cx.quantities("tab_cam_book_points", q)?);
+        let over = at("/cam/book/point_2/limit_excess") > 1e-9;
+        b.conclusions.push(cx.para(
+            if over {
+                "cam_conclusion_book_levels"
+            } else {
+                "cam_conclusion_book_levels_ok"
+            },
+            &[
+                cx.qv("/cam/book/point_2/centre_distance", 1000.0, "u_mm")?,
+                deg_at(cx, "/cam/book/point_2/initial_angle")?,
+                cx.q(at("/cam/book/point_2/limit_excess").to_degrees(), "u_deg")?,
+                cx.qv("/cam/book/vertex/centre_distance", 1000.0, "u_mm")?,
+            ],
+        )?);
+    }
+    if cx.report.pointer("/cam/book/roller_rules").is_some_and(|v| !v.is_null()) {
+        let yes = |p: &str| -> Result<String, NoteError> {
+            let ok = cx.report.pointer(p).and_then(Value::as_bool).unwrap_or(false);
+            cx.w(if ok { "check_pass" } else { "check_fail" })
+        };
+        let r = "/cam/book/roller_rules";
+        b.results.push(cx.table(
+            "tab_cam_roller_rules",
+            &[("col_check", ""), ("col_limit", "u_mm"), ("col_verdict", "")],
+            vec![
+                vec![
+                    text(cx.w("cam_rule_low")?),
+                    mm(at(&format!("{r}/range_low"))),
+                    text(yes(&format!("{r}/above_range_low"))?),
+                ],
+                vec![
+                    text(cx.w("cam_rule_high")?),
+                    mm(at(&format!("{r}/range_high"))),
+                    text(yes(&format!("{r}/below_range_high"))?),
+                ],
+                vec![
+                    text(cx.w("cam_rule_rho08")?),
+                    mm(at(&format!("{r}/rho_bound"))),
+                    text(yes(&format!("{r}/below_rho_bound"))?),
+                ],
+                vec![
+                    text(cx.w("cam_rule_rho")?),
+                    mm(at(&format!("{r}/rho_min_pitch"))),
+                    text(yes(&format!("{r}/below_rho_min"))?),
+                ],
+            ],
+        )?);
+    }
+    Ok(b)
 }

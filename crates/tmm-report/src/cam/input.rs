@@ -59,6 +59,10 @@ pub struct CamSection {
     /// A given base (prime) circle radius r0: analyse this cam instead of
     /// sizing the smallest one.
     pub r0: Option<Qty>,
+    /// Also give the textbook's constructions beside the design (the tangent
+    /// methods of a translating follower, the level lines of an oscillating
+    /// one, the roller rules; appendix П6).
+    pub book_methods: Option<toml::Spanned<bool>>,
 }
 
 /// The inputs of a cam task as written, from either source.
@@ -94,6 +98,8 @@ pub struct Raw {
     pub points: Option<i64>,
     /// A given base circle radius (analyse instead of size).
     pub r0: Option<RawQty>,
+    /// The textbook's constructions beside the design.
+    pub book_methods: bool,
 }
 
 /// A field of the cam task, for locating errors.
@@ -131,6 +137,8 @@ pub enum Field {
     Points,
     /// `r0`.
     R0,
+    /// `book_methods`.
+    BookMethods,
 }
 
 impl Field {
@@ -153,6 +161,7 @@ impl Field {
             Field::FaceMargin => "cam.face_margin",
             Field::Points => "cam.points",
             Field::R0 => "cam.r0",
+            Field::BookMethods => "cam.book_methods",
         }
     }
     /// The command-line option.
@@ -174,6 +183,7 @@ impl Field {
             Field::FaceMargin => "--face-margin",
             Field::Points => "--points",
             Field::R0 => "--r0",
+            Field::BookMethods => "--book-methods",
         }
     }
 }
@@ -204,6 +214,7 @@ impl CamSection {
             face_margin: q(&self.face_margin),
             points: self.points.as_ref().map(|p| *p.get_ref()),
             r0: q(&self.r0),
+            book_methods: self.book_methods.as_ref().is_some_and(|b| *b.get_ref()),
         }
     }
 
@@ -227,6 +238,7 @@ impl CamSection {
             Field::FaceMargin => q(&self.face_margin),
             Field::Points => self.points.as_ref().map(|p| p.span()),
             Field::R0 => q(&self.r0),
+            Field::BookMethods => self.book_methods.as_ref().map(|b| b.span()),
         };
         s.unwrap_or(section)
     }
@@ -330,7 +342,30 @@ pub fn build(raw: &Raw, loc: &Locate<'_>) -> Result<CamTask, Error> {
     }
     let oscillating = follower_name.starts_with("oscillating");
     let stroke_dim = if oscillating { Dim::Angle } else { Dim::Length };
-    let stroke = quantity(&raw.stroke, stroke_dim, Field::Stroke, loc)?;
+    let stroke = match quantity(&raw.stroke, stroke_dim, Field::Stroke, loc) {
+        Ok(s) => s,
+        // an oscillating follower's stroke given as the arc its roller
+        // centre travels (the textbook's П6.5: φ₂ = S/l_T): the angle h/l
+        Err(e) if oscillating => match &raw.stroke {
+            Some(RawQty::Text(t)) if units::parse(t, Dim::Length).is_ok() => {
+                let arc = units::parse(t, Dim::Length).map_err(|e| loc(Field::Stroke, e.to_string()))?;
+                let arm = quantity(&raw.arm, Dim::Length, Field::Arm, loc)?.ok_or_else(|| {
+                    loc(
+                        Field::Stroke,
+                        format!("the stroke {t} is an arc length: the arm length is needed to turn it into the swing angle"),
+                    )
+                    .with_help("give arm = \"150 mm\", or the stroke as an angle such as \"20 deg\"")
+                })?;
+                if !(tmm_cams::positive(arc) && tmm_cams::positive(arm)) {
+                    return Err(loc(Field::Stroke, format!("the arc {t} and the arm must be positive lengths"))
+                        .with_help("e.g. stroke = \"80 mm\" with arm = \"150 mm\""));
+                }
+                Some(arc / arm)
+            }
+            _ => return Err(e),
+        },
+        Err(e) => return Err(e),
+    };
     let phases_text = raw
         .phases
         .as_deref()

@@ -5,6 +5,7 @@
 //! | file | concept |
 //! | --- | --- |
 //! | [`input`] | the section / options → a `CamTask`, located errors |
+//! | [`book`] | the textbook's constructions beside the design |
 //! | [`text`] | human tables |
 //! | [`json`] | the JSON document (SI, rad) |
 //! | [`diagrams`] | SVG: the motion diagrams over the cam angle, at round μ |
@@ -14,6 +15,7 @@
 // The shared `Error` carries the source text for located messages; it is
 // large by design and returned only on the cold path.
 
+pub mod book;
 pub mod cad;
 pub mod diagrams;
 pub mod draw;
@@ -36,6 +38,37 @@ pub fn solve(task: &CamTask, r0: Option<f64>, loc: &Locate<'_>) -> Result<CamDes
         None => task.solve(),
     }
     .map_err(|e| input::cam_error(e, loc))
+}
+
+/// The textbook's constructions (`book_methods`), located at that field
+/// when they cannot be made; `None` when not asked for.
+pub fn book_methods(
+    task: &CamTask,
+    d: &CamDesign,
+    raw: &input::Raw,
+    loc: &Locate<'_>,
+) -> Result<Option<tmm_cams::textbook::BookMethods>, Error> {
+    if !raw.book_methods {
+        return Ok(None);
+    }
+    tmm_cams::textbook::compare(task, d).map(Some).map_err(|e| {
+        loc(input::Field::BookMethods, e.to_string()).with_help(
+            "the book's constructions take a roller or knife-edge follower and one rise and one return; remove book_methods otherwise",
+        )
+    })
+}
+
+/// The JSON document and the tables, with the textbook's constructions when given.
+pub fn outputs(task: &CamTask, d: &CamDesign, b: Option<&tmm_cams::textbook::BookMethods>, step_deg: usize) -> (serde_json::Value, String) {
+    let mut json = json::document(task, d);
+    let mut text = text::tables(task, d, step_deg);
+    if let Some(b) = b {
+        if let Some(m) = json.as_object_mut() {
+            m.insert("book".into(), book::json(task, d, b));
+        }
+        text.push_str(&book::text(task, b));
+    }
+    (json, text)
 }
 
 /// The SVG drawings, as documents whose paths start with `dir`
@@ -69,12 +102,12 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let raw = sec.raw();
     let cam = input::build(&raw, &loc)?;
     let d = solve(&cam, input::given_r0(&raw, &loc)?, &loc)?;
+    let b = book_methods(&cam, &d, &raw, &loc)?;
     let mut docs = Documents::for_task(task);
     drawings(&cam, &d, "cam/", &mut docs, task.lang, task.sheet)?;
     docs.add_bytes("cam/cam-profile.dxf", profile_dxf(&d)?)?;
     docs.add_text("cam/cam-profile.csv", profile_csv(&d)?)?;
-    let json = json::document(&cam, &d);
-    let text = text::tables(&cam, &d, 15);
+    let (json, text) = outputs(&cam, &d, b.as_ref(), 15);
     docs.add_json("cam/cam.json", &json)?;
     docs.add_text("cam/cam.txt", text.clone())?;
     Ok(Some(SectionOutput {
