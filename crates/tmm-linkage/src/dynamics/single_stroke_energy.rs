@@ -86,7 +86,7 @@ impl EnergyStroke {
             }
             let a = md * phi + work;
             let w2 = (2.0 * a + 2.0 * t0_energy) / i;
-            if !(w2 > 0.0) || !w2.is_finite() {
+            if w2.is_nan() || w2 <= 0.0 || !w2.is_finite() {
                 // the speed reaches zero between the previous node and this one
                 let lo = phis[k.saturating_sub(1)];
                 let (mut a_, mut b_) = (lo, phi);
