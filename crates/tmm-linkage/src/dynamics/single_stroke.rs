@@ -348,7 +348,8 @@ pub struct SingleStroke {
     pub energy: EnergyStroke,
     /// The motor-driven stroke again by RK4 in the angle (`None` when the
     /// motor's lag is so short against the slowest crank travel that the
-    /// fixed steps would be more than [`MAX_CHECK_STEPS`]).
+    /// fixed steps would be more than [`MAX_CHECK_STEPS`], or when the crank
+    /// comes so near a standstill that they fail).
     pub check: Option<AngleCheck>,
 }
 
@@ -366,8 +367,10 @@ impl SingleStroke {
         } else {
             20_000.0
         };
+        // near a standstill 1/ω is too steep for fixed steps: the check is
+        // then left out rather than the stroke refused
         let check = if n <= MAX_CHECK_STEPS as f64 {
-            Some(by_angle(&red, spec, n as usize, &mut sol)?)
+            by_angle(&red, spec, n as usize, &mut sol).ok()
         } else {
             None
         };

@@ -230,6 +230,10 @@ pub fn read(task: &TaskSource, working: Working) -> Result<Option<DynamicsTask>,
     let section = sec.span();
     let sec = sec.into_inner();
     let mut spans = BTreeMap::new();
+    // `motion = "steady"` (the probe above refused every other value)
+    if let Some(m) = &sec.motion {
+        spans.insert("dynamics.motion".to_string(), m.span());
+    }
     let delta_q = sec.delta.as_ref().ok_or_else(|| {
         Error::at(
             task,
