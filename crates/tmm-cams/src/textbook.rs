@@ -183,7 +183,11 @@ pub fn compare(task: &CamTask, d: &CamDesign) -> Result<BookMethods, CamError> {
             } else {
                 match sizing::oscillating_roller_senses(prog, sigma, task.limits, arm, None, OSC_SAMPLES, &[1.0])? {
                     Mechanism::OscillatingRoller { pivot, psi0, .. } => (pivot, psi0),
-                    _ => unreachable!("an oscillating sizing gives an oscillating mechanism"),
+                    _ => {
+                        return Err(CamError::Infeasible(
+                            "the oscillating sizing gave no oscillating mechanism".into(),
+                        ));
+                    }
                 }
             };
             let (s, c) = (-psi0).sin_cos();

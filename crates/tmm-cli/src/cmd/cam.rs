@@ -16,7 +16,7 @@ use super::common::{checked, json_text, print, read_task, write_dir, write_named
 /// Arguments of `tmm cam`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Example (seed 001, MADI variant 17):\n  tmm cam --follower translating-roller --stroke \"13 mm\" \\\n    --phases \"rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129\" \\\n    --min-transmission \"rise 75, return 60\" --omega \"200 rad/s\" --svg out/\nLaws: const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …)"
+    after_help = "Example (seed 001, MADI variant 17):\n  tmm cam --follower translating-roller --stroke \"13 mm\" \\\n    --phases \"rise 108 const-accel(u=1/3); dwell 15; return 108 const-accel(u=1/3); dwell 129\" \\\n    --min-transmission \"rise 75, return 60\" --omega \"200 rad/s\" --svg out/\nLaws: const-accel(u=1/3), cosine, sine, linear-decreasing, trapezoid, mod-trapezoid, mod-sine, poly345, poly4567, table(a0, a1, …), const-velocity, accel(sine 1, sine -3) (pieces of the acceleration analogue: const or sine, amplitude, optional angle; the textbook's П6)\nThe textbook's П6 (BMSTU 2019) with its constructions beside tmm's sizing:\n  tmm cam --follower translating-roller --stroke \"80 mm\" --rotation cw --roller \"20 mm\" \\\n    --phases \"rise 120 accel(sine 1, sine -3); dwell 30; return 180 accel(const -1, const 2.5); dwell 30\" \\\n    --max-pressure \"rise 30, return 50\" --book-methods"
 )]
 pub struct Args {
     /// A task file whose [cam] section to run (instead of the options below)

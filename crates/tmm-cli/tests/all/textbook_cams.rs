@@ -170,7 +170,17 @@ fn p6_translating_runs_with_every_asked_quantity() {
     assert!((f(rr, "/rho_bound") - 0.8 * f(c, "/rho_min_pitch")).abs() < 1e-15);
     assert_eq!(rr["below_rho_min"].as_bool(), Some(r < f(c, "/rho_min_pitch")));
     // the tables carry the same
-    for s in ["step 1", "method 1", "method 2", "Δr", "Δe", "roller rules", "0.25·r0", "tangents"] {
+    for s in [
+        "step 1",
+        "method 1",
+        "method 2",
+        "Δr",
+        "Δe",
+        "roller rules",
+        "0.25·r0",
+        "tangents",
+        "θ(φ) at the book's centre",
+    ] {
         assert!(text.contains(s), "the tables lack {s}");
     }
     assert!(text.contains(&format!("{:.4}", s0 * 1e3)) && text.contains(&format!("{:.4}", s0.hypot(eb) * 1e3)));
@@ -239,7 +249,17 @@ fn p6_oscillating_runs_with_every_asked_quantity() {
     // between them the envelope may pass by some 10⁻⁷ rad, docs/cams.md §3)
     assert!(f(b, "/vertex/limit_excess") < 1e-9 && f(b, "/exact/limit_excess") < 1e-6);
     assert!(f(c, "/pressure_angle_max_rise") <= d(30.0) + 1e-6 && f(c, "/pressure_angle_max_return") <= d(50.0) + 1e-6);
-    for s in ["level-line", "point 1", "φVmin", "φVmax", "point 2", "vertex", "aw mm", "φ20"] {
+    for s in [
+        "level-line",
+        "point 1",
+        "φVmin",
+        "φVmax",
+        "point 2",
+        "vertex",
+        "aw mm",
+        "φ20",
+        "θ(φ) at point 2",
+    ] {
         assert!(text.contains(s), "the tables lack {s}");
     }
 }

@@ -172,9 +172,28 @@ fn rules_text(t: &mut String, what: &str, r: &RollerCheck) {
     );
 }
 
+/// θ(φ) of the book's centre every 15° of the working phases, six to a row.
+fn theta_rows(t: &mut String, what: &str, task: &CamTask, theta: impl Fn(f64) -> f64) {
+    let _ = writeln!(t, "  θ(φ) at {what}, signed (positive on the rise's driving side), °:");
+    let prog = &task.program;
+    let cells: Vec<String> = (0..24)
+        .map(|i| (i * 15) as f64)
+        .filter(|&deg| {
+            let p = deg.to_radians();
+            prog.phases()[prog.phase_at(p)].kind != tmm_cams::program::PhaseKind::Dwell
+        })
+        .map(|deg| format!("{deg:>5.0}: {:>8.3}", theta(deg.to_radians()).to_degrees()))
+        .collect();
+    for row in cells.chunks(6) {
+        let _ = writeln!(t, "   {}", row.join("  "));
+    }
+}
+
 /// The tables.
 pub fn text(task: &CamTask, b: &BookMethods) -> String {
     let mut t = String::new();
+    let prog = &task.program;
+    let sigma = task.rotation.sign();
     let (lr, lt) = (task.limits.rise.to_degrees(), task.limits.ret.to_degrees());
     if let Some(x) = &b.translating {
         let s = &x.sizing;
@@ -226,6 +245,10 @@ pub fn text(task: &CamTask, b: &BookMethods) -> String {
             dr * 100.0,
             de * 100.0
         );
+        let c = x.method1.centre;
+        theta_rows(&mut t, "the book's centre (method 1)", task, |p| {
+            tangents::signed_pressure(prog, sigma, c, p)
+        });
         let (r1, rx) = (x.method1.centre.r0(), x.exact.centre.r0());
         let _ = writeln!(
             t,
@@ -289,6 +312,8 @@ pub fn text(task: &CamTask, b: &BookMethods) -> String {
             t,
             "  ϑ allowed {lr:.3}° rise, {lt:.3}° return; signed ϑ is positive on the rise's driving side"
         );
+        let c = o.point2.centre;
+        theta_rows(&mut t, "point 2", task, |p| levels::signed_pressure(prog, sigma, 1.0, o.arm, c, p));
     }
     if let Some(r) = &b.roller {
         let _ = writeln!(t, "\nThe textbook's roller rules (p. 111)");
