@@ -45,9 +45,6 @@ struct File {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct DynamicsSec {
-    /// Named so that `deny_unknown_fields` accepts it; its value is read by
-    /// the probe of the motion before this section (a steady cycle here).
-    #[allow(dead_code)]
     motion: Option<S<String>>,
     delta: Option<Qty>,
     points: Option<S<i64>>,
