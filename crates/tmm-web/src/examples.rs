@@ -47,6 +47,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../../../examples/synth-seed-002-ex1-crank-rocker.toml"),
     ),
     (
+        "synth-seed-002-ex2-knee-press-bell-crank.toml",
+        include_str!("../../../examples/synth-seed-002-ex2-knee-press-bell-crank.toml"),
+    ),
+    (
         "synth-seed-002-ex2-knee-press.toml",
         include_str!("../../../examples/synth-seed-002-ex2-knee-press.toml"),
     ),
