@@ -14,6 +14,11 @@ use tmm_linkage::mechanism::Pair;
 use crate::page::Page;
 use crate::reply;
 
+/// A guide's line at one frame: a point of it, its unit direction (both in
+/// the frame of the machine, m) and the slider's place along it from that
+/// point, m.
+type GuidePose = ([f64; 2], [f64; 2], f64);
+
 /// The links drawn as segments between their turning joints, as pairs of
 /// point indices (a link with more than three joints is drawn as a chain).
 fn link_segments(m: &tmm_linkage::Mechanism) -> Vec<(usize, usize)> {
@@ -60,7 +65,7 @@ pub fn frames(p: &Page, n: usize) -> String {
     let mut xy = Vec::with_capacity(n);
     // per prismatic pair: the guide's pose and the slider's place along it
     let prismatic: Vec<&Pair> = m.pairs.iter().filter(|p| matches!(p, Pair::P { .. })).collect();
-    let mut guide_poses: Vec<Vec<([f64; 2], [f64; 2], f64)>> = vec![Vec::with_capacity(n); prismatic.len()];
+    let mut guide_poses: Vec<Vec<GuidePose>> = vec![Vec::with_capacity(n); prismatic.len()];
     for k in 0..n {
         let phi = tmm_geom::angle::wrap_2pi(cycle.start + sg * TAU * k as f64 / n as f64);
         if let Err(e) = m.solve(phi, &mut sol) {
@@ -91,7 +96,7 @@ pub fn frames(p: &Page, n: usize) -> String {
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.2), b.max(p.2)));
         let pad = 0.2 * (hi - lo).max(0.02);
-        let seg = |(q, d, _): &([f64; 2], [f64; 2], f64)| {
+        let seg = |(q, d, _): &GuidePose| {
             [
                 [q[0] + d[0] * (lo - pad), q[1] + d[1] * (lo - pad)],
                 [q[0] + d[0] * (hi + pad), q[1] + d[1] * (hi + pad)],
