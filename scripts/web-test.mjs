@@ -28,7 +28,7 @@ function finish(code) {
   browser.kill();
   process.exit(code);
 }
-setTimeout(() => { console.log("FAIL timed out"); finish(1); }, 240000).unref();
+setTimeout(() => { console.log("FAIL timed out"); finish(1); }, 900000).unref();
 process.on("uncaughtException", (e) => { console.log("FAIL", e.message); finish(1); });
 process.on("unhandledRejection", (e) => { console.log("FAIL", e && e.message); finish(1); });
 const wsUrl = await new Promise((resolve, reject) => {
@@ -147,15 +147,77 @@ await shot("numbers");
 await shot("diagrams");
 check("the diagrams carry a cursor", (await js("document.querySelectorAll('#diagrams .cursor').length")) > 0);
 
-// ---------- clicking the contour changes x1, x2 ----------
-await js(`document.querySelector('#tabs [data-view="gear"]').click(), true`);
-const g0 = await js(`[+document.querySelector('[data-gear="x1"]').dataset.value, +document.querySelector('[data-gear="x2"]').dataset.value]`);
-const target = await js(`(() => { const cells = document.querySelectorAll('#contour g#allowed polygon, #contour g#allowed polyline, #contour g#allowed path'); const c = cells[Math.floor(cells.length * 0.3)]; c.scrollIntoView({block: 'center'}); const r = c.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2, cells.length]; })()`);
-check("the contour has allowed cells", target[2] > 0, `${target[2]} cells`);
-for (const type of ["mousePressed", "mouseReleased"]) await send("Input.dispatchMouseEvent", { type, x: target[0], y: target[1], button: "left", clickCount: 1 });
-await sleep(300);
-const g1 = await js(`[+document.querySelector('[data-gear="x1"]')?.dataset.value, +document.querySelector('[data-gear="x2"]')?.dataset.value, document.getElementById('gear-numbers').textContent]`);
-check("clicking the contour changes x1 and x2", g1[0] !== g0[0] && g1[1] !== g0[1] && Number.isFinite(g1[0]), `(${g0[0]}, ${g0[1]}) → (${g1[0]}, ${g1[1]}) ${Number.isFinite(g1[0]) ? "" : g1[2]}`);
+// ---------- the pick on the contour, against the drawing's own axes ----------
+// The axes are read from the drawing itself: its grey grid lines and the
+// numbers written at them (x1 under the plot, x2 to its left); a click at
+// ten (x1, x2) of a spread over the plot must pick that pair to within the
+// rounding (0.001) and a pixel of the drawing.
+const drawingAxes = `(() => {
+  const svg = document.querySelector('#contour svg');
+  const lines = [...svg.querySelectorAll('line[stroke="#bbbbbb"]')];
+  const vx = lines.filter((l) => l.getAttribute('x1') === l.getAttribute('x2')).map((l) => +l.getAttribute('x1'));
+  const hy = lines.filter((l) => l.getAttribute('y1') === l.getAttribute('y2')).map((l) => +l.getAttribute('y1'));
+  const near = (a, v) => a.reduce((b, x) => (Math.abs(x - v) < Math.abs(b - v) ? x : b), Infinity);
+  const labels = [...svg.querySelectorAll('text')].map((t) => [t.textContent.replace(',', '.').replace('\u2212', '-'), +t.getAttribute('x'), +t.getAttribute('y')]).filter(([t]) => /^-?[0-9]+([.][0-9]+)?$/.test(t));
+  const bottom = Math.max(...hy), left = Math.min(...vx);
+  const xs = labels.filter((l) => l[2] > bottom && l[1] >= left - 0.5).map((l) => [+l[0], near(vx, l[1])]);
+  const ys = labels.filter((l) => l[1] < left - 0.5 && l[2] <= bottom + 2).map((l) => [+l[0], near(hy, l[2])]);
+  const fit = (p) => { const n = p.length, mx = p.reduce((s, q) => s + q[0], 0) / n, my = p.reduce((s, q) => s + q[1], 0) / n; const b = p.reduce((s, q) => s + (q[0] - mx) * (q[1] - my), 0) / p.reduce((s, q) => s + (q[0] - mx) ** 2, 0); return [my - b * mx, b]; };
+  return { x: fit(xs), y: fit(ys), nx: xs.length, ny: ys.length, x1: [Math.min(...xs.map((q) => q[0])), Math.max(...xs.map((q) => q[0]))], x2: [Math.min(...ys.map((q) => q[0])), Math.max(...ys.map((q) => q[0]))] };
+})()`;
+async function clickShift(x1, x2) {
+  const ax = await js(drawingAxes);
+  const [cx, cy, px] = await js(`(() => { const svg = document.querySelector('#contour svg'); svg.scrollIntoView({ block: 'center' }); const m = svg.getScreenCTM(); const p = new DOMPoint(${ax.x[0] + ax.x[1] * x1}, ${ax.y[0] + ax.y[1] * x2}).matrixTransform(m); return [p.x, p.y, 1 / m.a]; })()`);
+  for (const type of ["mousePressed", "mouseReleased"]) await send("Input.dispatchMouseEvent", { type, x: cx, y: cy, button: "left", clickCount: 1 });
+  await until(`document.getElementById('gear-numbers').dataset.pickX1 !== ''`);
+  const got = await js(`[+document.getElementById('gear-numbers').dataset.pickX1, +document.getElementById('gear-numbers').dataset.pickX2]`);
+  return { got, tol: 0.0006 + 1.5 * px / Math.abs(ax.x[1]), ax };
+}
+const selectTask = async (name) => {
+  await js(`(() => { window.confirm = () => true; const s = document.getElementById('task-select'); s.value = ${JSON.stringify(name)}; s.dispatchEvent(new Event('change')); return true; })()`);
+  return until(`document.getElementById('error').hidden && window.tmmPage.reply && window.tmmPage.name === ${JSON.stringify(name || "task.toml")}`);
+};
+const openView = (v) => js(`document.querySelector('#tabs [data-view="${v}"]').click(), true`);
+await openView("gear");
+{
+  const { got, ax, tol } = await clickShift(0.2, 0.85);
+  check("the drawing's own axes are read (ticks on x1 and x2)", ax.nx >= 4 && ax.ny >= 4, `${ax.nx} and ${ax.ny} ticks`);
+  check("a click on the task's point (0.2, 0.85) picks (0.2, 0.85) within a pixel", Math.abs(got[0] - 0.2) <= tol && Math.abs(got[1] - 0.85) <= tol, `picked (${got[0]}, ${got[1]}), a pixel is ${(tol / 1.5).toFixed(4)}`);
+  results.figures.contour_pixel = tol / 1.5;
+  const verdicts = await js(`[...document.querySelectorAll('#gear-checks [data-check]')].map((r) => [r.dataset.check, r.dataset.pass])`);
+  check("each check's verdict is listed for the picked pair", verdicts.length >= 5 && verdicts.every(([, p]) => p === "true"), JSON.stringify(verdicts));
+  check("the region where every check passes is shaded apart", (await js(`document.querySelectorAll('#contour #passes rect').length`)) > 0);
+}
+for (const task of ["", "gear-seed001.toml", "gear-seed003.toml", "gear-internal.toml"]) {
+  if (task) { check(`${task} analysed`, await selectTask(task)); await openView("gear"); }
+  let worst = 0, detail = "";
+  for (let k = 0; k < 10; k++) {
+    const ax = await js(drawingAxes);
+    const x1 = ax.x1[0] + (ax.x1[1] - ax.x1[0]) * (0.08 + 0.84 * ((k * 0.37) % 1));
+    const x2 = ax.x2[0] + (ax.x2[1] - ax.x2[0]) * (0.08 + 0.84 * ((k * 0.61 + 0.2) % 1));
+    const { got, tol } = await clickShift(x1, x2);
+    const err = Math.max(Math.abs(got[0] - x1), Math.abs(got[1] - x2)) / tol;
+    if (err > worst) { worst = err; detail = `clicked (${x1.toFixed(4)}, ${x2.toFixed(4)}), picked (${got[0]}, ${got[1]}), tolerance ${tol.toFixed(4)}`; }
+  }
+  check(`the pick equals the clicked point at ten points (${task || "default task"})`, worst <= 1, detail);
+}
+await selectTask("");
+await openView("gear");
+{
+  const { got: pk } = await clickShift(0.3, 0.7);
+  await js("(document.getElementById('gear-write').click(), true)");
+  await openView("numbers");
+  check("a picked pair written into the task changes the numbers", await until(`+document.querySelector('[data-key="gear.x1"]')?.dataset.value === ${pk[0]} && +document.querySelector('[data-key="gear.x2"]')?.dataset.value === ${pk[1]}`), `(${pk[0]}, ${pk[1]})`);
+  check("the written task holds the picked x1, x2", await js(`document.getElementById('editor').value.includes('\\nx1 = ${pk[0]}\\nx2 = ${pk[1]}\\n')`));
+  await js("(document.getElementById('undo').click(), true)");
+  check("undo brings the task back", await until(`+document.querySelector('[data-key="gear.x1"]')?.dataset.value === 0.2`));
+  await js("(document.getElementById('redo').click(), true)");
+  check("redo writes the pick again", await until(`+document.querySelector('[data-key="gear.x1"]')?.dataset.value === ${pk[0]}`));
+  await js("(document.getElementById('undo').click(), true)");
+  await until(`+document.querySelector('[data-key="gear.x1"]')?.dataset.value === 0.2`);
+  await openView("gear");
+  await clickShift(0.2, 0.85);
+}
 await js("window.scrollTo(0, 0), true");
 await shot("gear");
 await shot("planetary");
@@ -163,8 +225,7 @@ await shot("cam");
 await shot("files");
 
 // ---------- animation of the seed-003 six-bar with its plans ----------
-await js(`(() => { const s = document.getElementById('task-select'); s.value = 'seed-003-sixbar.toml'; s.dispatchEvent(new Event('change')); return true; })()`);
-check("seed-003 six-bar analysed", await until("document.getElementById('error').hidden && window.tmmPage.frames && window.tmmPage.frames.names.length >= 6"));
+check("seed-003 six-bar analysed", (await selectTask("seed-003-sixbar.toml")) && (await js("window.tmmPage.frames.names.length >= 6")));
 await js(`document.querySelector('#tabs [data-view="mechanism"]').click(), true`);
 await js("(window.tmmPage.fpsFrames = 0, document.getElementById('play').click(), true)");
 const t0 = Date.now();
@@ -176,6 +237,209 @@ await js("(document.getElementById('play').click(), true)");
 results.figures.at_angle_ms = await js("window.tmmPage.lastAngleMs");
 console.log("animation of seed-003 with plans:", results.figures.animation_fps.toFixed(1), "frames/s");
 await shot("mechanism", "mechanism-seed-003");
+
+// ---------- no stale view: every example, every view ----------
+// Each view shows the current task or says why it cannot: after each
+// example, a view with its section shows that section's numbers, one
+// without says so and shows nothing of the task before.
+const viewState = (v) => js(`(() => { document.querySelector('#tabs [data-view="${v}"]').click(); const e = document.getElementById('view-${v}'); return [e.dataset.state, e.querySelector('.why').textContent]; })()`);
+const exampleNames = await js(`[...document.getElementById('task-select').options].map((o) => o.value).filter(Boolean)`);
+let staleBad = [];
+for (const name of exampleNames) {
+  if (!(await selectTask(name))) { staleBad.push(`${name}: not analysed`); continue; }
+  const rep = await js("window.tmmPage.reply.report");
+  const hasFrames = await js("!!window.tmmPage.frames");
+  const m = await viewState("mechanism");
+  if (hasFrames !== (m[0] === "shown")) staleBad.push(`${name}: mechanism ${m[0]}`);
+  if (!hasFrames && (!m[1] || (await js("document.querySelectorAll('#plans svg, #force-plans svg').length && !document.getElementById('view-mechanism').querySelector('.body').hidden")))) staleBad.push(`${name}: mechanism says nothing`);
+  if (hasFrames && !(await js(`window.tmmPage.frames.phi.includes(+document.getElementById('angle-out').dataset.phi) && document.querySelectorAll('#plans svg').length === 2`))) staleBad.push(`${name}: plans not of this task`);
+  const g = await viewState("gear");
+  if (!!rep.gear !== (g[0] === "shown")) staleBad.push(`${name}: gear ${g[0]}`);
+  if (rep.gear && (await js(`+document.querySelector('[data-gear="x1"]').dataset.value`)) !== rep.gear.x1) staleBad.push(`${name}: gear x1 not this task's`);
+  const pl = await viewState("planetary");
+  if (!!rep.planetary !== (pl[0] === "shown")) staleBad.push(`${name}: planetary ${pl[0]}`);
+  if (rep.planetary && (await js("document.querySelectorAll('#planetary-table tr').length")) !== rep.planetary.candidates.length + 1) staleBad.push(`${name}: planetary table not this task's`);
+  const c = await viewState("cam");
+  if (!!rep.cam !== (c[0] === "shown")) staleBad.push(`${name}: cam ${c[0]}`);
+  const d = await viewState("diagrams");
+  if (!!(rep.linkage || rep.dynamics || rep.forces) !== (d[0] === "shown")) staleBad.push(`${name}: diagrams ${d[0]}`);
+  const n = await viewState("numbers");
+  const keys = await js(`[...document.querySelectorAll('[data-key]')].map((e) => [e.dataset.key, +e.dataset.value])`);
+  if (n[0] !== "shown" || keys.some(([k, v]) => k.split(".").reduce((o, x) => o?.[x], rep) !== v)) staleBad.push(`${name}: numbers not this task's`);
+  if (name === "gear-internal.toml") { await shot("mechanism", "no-linkage-gear-internal"); }
+  if (name === "double-rocker.toml") { await shot("mechanism", "no-full-turn-double-rocker"); }
+}
+check(`no stale view over the ${exampleNames.length} examples`, staleBad.length === 0, staleBad.slice(0, 4).join("; "));
+{
+  await selectTask("");
+  await setText(bad);
+  await until("!document.getElementById('error').hidden");
+  const st = await js("[document.getElementById('status').textContent, document.getElementById('status').classList.contains('bad')]");
+  check("an error is in the status, not 'analysed in'", st[1] && !/analysed|расчёт за/.test(st[0]), st[0]);
+  const views = ["numbers", "mechanism", "diagrams", "drawings", "gear", "planetary", "cam", "files"];
+  const states = [];
+  for (const v of views) states.push([v, ...(await viewState(v))]);
+  check("after an error every view says why it is empty", states.every(([, s, w]) => s === "empty" && w.includes("must be > 0") && w.includes("49")), JSON.stringify(states.map(([v, s]) => v + ":" + s)));
+  await shot("numbers", "error-numbers");
+  await setText(defaultText);
+  await until("document.getElementById('error').hidden");
+}
+
+// ---------- cams: every follower animates ----------
+{
+  const oscFlat = `title = "Cam, oscillating flat follower"\n\n[cam]\nfollower = "oscillating-flat"\nstroke = "15 deg"\npivot = "120 mm"\nphases = "rise 120 sine; dwell 30; return 120 sine; dwell 90"\nomega = "150 rpm"\n`;
+  const cams = [["cam-seed-001-roller.toml", false], ["cam-seed-001-flat.toml", false], ["cam-oscillating-roller.toml", true], [null, true]];
+  for (const [name, osc] of cams) {
+    if (name) await selectTask(name); else { await setText(oscFlat); await until("window.tmmPage.reply && window.tmmPage.reply.report.cam && window.tmmPage.reply.report.cam.follower === 'oscillating-flat'"); }
+    await openView("cam");
+    const pix = (i) => js(`(() => { const s = document.getElementById('cam-slider'); s.value = ${i}; s.dispatchEvent(new Event('input')); const c = document.getElementById('cam-canvas'); const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data; let n = 0, h = 0; for (let k = 0; k < d.length; k += 4) if (d[k + 3] > 0) { n++; h = (h * 31 + d[k] + 7 * d[k + 1] + k) % 1000000007; } return [n, h, document.getElementById('cam-angle').textContent]; })()`);
+    const a = await pix(0), b = await pix(150);
+    const label = name || "oscillating flat";
+    check(`the cam animates (${label})`, a[0] > 1000 && b[0] > 1000 && a[1] !== b[1], `${a[0]} and ${b[0]} drawn pixels`);
+    check(`the follower's position reads in ${osc ? "degrees" : "mm"} (${label})`, osc ? /ψ = [-0-9.]+°/.test(b[2]) && !/mm|мм/.test(b[2]) : /s = [-0-9.]+ (mm|мм)/.test(b[2]), b[2]);
+    await shot("cam", `cam-${(name || "oscillating-flat.toml").replace(/\.toml$/, "")}`);
+  }
+  await selectTask("");
+}
+
+// ---------- the interface in Russian, Ukrainian and English ----------
+{
+  // the default task is Russian ([project] lang = "ru")
+  const uiTexts = `[...document.querySelectorAll('header, #tabs, .view.active')].map((e) => e.innerText).join('\\n')`;
+  await openView("numbers");
+  const ru = await js(uiTexts);
+  check("the interface follows the task's language (Russian)", /Механизм/.test(ru) && /Результаты/.test(ru) && /коэффициент изменения средней скорости/.test(ru), ru.slice(0, 80));
+  const en = JSON.parse(await js("JSON.stringify(Object.values(JSON.parse(window.tmmWords('en')).words))"));
+  const mixed = en.filter((w) => /[a-z]{4,}/.test(w) && w !== "English" && ru.includes(w));
+  check("the Russian screen has no English words of the page", mixed.length === 0, mixed.slice(0, 3).join(" | "));
+  check("lengths read in mm and angles in degrees", /мм/.test(ru) && /°/.test(ru));
+  await shot("numbers", "numbers-ru");
+  await shot("gear", "gear-ru");
+  await js(`(() => { const s = document.getElementById('lang'); s.value = 'uk'; s.dispatchEvent(new Event('change')); return true; })()`);
+  check("the switch turns the interface Ukrainian and is kept in the address", await until(`/Механізм/.test(document.getElementById('tabs').innerText) && location.hash.includes('lang=uk')`));
+  await shot("numbers", "numbers-uk");
+  await js(`(() => { const s = document.getElementById('lang'); s.value = 'en'; s.dispatchEvent(new Event('change')); return true; })()`);
+  check("the switch turns the interface English", await until(`/Mechanism/.test(document.getElementById('tabs').innerText) && location.hash.includes('lang=en')`));
+  const enText = await js(uiTexts);
+  const ruWords = JSON.parse(await js("JSON.stringify(Object.values(JSON.parse(window.tmmWords('ru')).words))"));
+  // (the language switch names each language in itself: Русский, Українська)
+  const cyr = ruWords.filter((w) => w.length > 3 && /[а-я]/i.test(w) && w !== "Русский" && enText.includes(w));
+  check("the English screen has no Cyrillic of the page's words", cyr.length === 0, cyr.slice(0, 3).join(" | "));
+  await js(`(() => { const s = document.getElementById('lang'); s.value = ''; s.dispatchEvent(new Event('change')); return true; })()`);
+  await until(`/Механизм/.test(document.getElementById('tabs').innerText)`);
+}
+
+// ---------- the mechanism edited by dragging ----------
+{
+  await openView("mechanism");
+  await js("(document.getElementById('edit-drag').checked = true, true)");
+  const kvBefore = (await js("window.tmmPage.reply.report.linkage.kv"));
+  const textBefore = await js("document.getElementById('editor').value");
+  // the joint C: dragged 25 px right, the lengths BC and DC follow
+  const at = (name) => js(`(() => { const F = window.tmmPage.frames, j = F.names.indexOf(${JSON.stringify(name)}), c = document.getElementById('mech'); c.scrollIntoView({ block: 'center' }); const [u, v] = window.tmmPage.T.to(F.xy[window.tmmPage.frame][j]); const r = c.getBoundingClientRect(), k = c.width / r.width; return [r.left + u / k, r.top + v / k]; })()`);
+  const [cx, cy] = await at("C");
+  await send("Input.dispatchMouseEvent", { type: "mousePressed", x: cx, y: cy, button: "left", clickCount: 1 });
+  for (let k = 1; k <= 5; k++) await send("Input.dispatchMouseEvent", { type: "mouseMoved", x: cx + 5 * k, y: cy, button: "left", buttons: 1 });
+  await send("Input.dispatchMouseEvent", { type: "mouseReleased", x: cx + 25, y: cy, button: "left", clickCount: 1 });
+  await sleep(200);
+  const textAfter = await js("document.getElementById('editor').value");
+  const lens = (t) => [...t.matchAll(/^length = "([0-9.]+) mm"/gm)].map((m) => +m[1]);
+  const [l0, l1] = [lens(textBefore), lens(textAfter)];
+  check("dragging the joint C changes the links' lengths in the task, in whole mm", l1.length === l0.length && l1.some((v, i) => v !== l0[i]) && l1.every(Number.isInteger), `${l0} → ${l1}`);
+  const kvAfter = await js("window.tmmPage.reply.report.linkage.kv");
+  writeFileSync(join(editedDir, "dragged.toml"), textAfter);
+  const expDrag = JSON.parse(execFileSync(tmmBin, ["run", "--json", join(editedDir, "dragged.toml")], { maxBuffer: 64 << 20 }).toString());
+  check("the numbers follow the drag (Kv equals the CLI's for the dragged task)", kvAfter !== kvBefore && Math.abs(kvAfter - expDrag.linkage.kv) <= 1e-12, `Kv ${kvBefore} → ${kvAfter}, cli ${expDrag.linkage.kv}`);
+  check("the assembly branch is kept", /assembly = \["C below AD"\]/.test(textAfter));
+  await shot("mechanism", "mechanism-dragged");
+  // an impossible drag: the coupler far too short to reach
+  const [dx, dy] = await at("D");
+  await send("Input.dispatchMouseEvent", { type: "mousePressed", x: dx, y: dy, button: "left", clickCount: 1 });
+  await send("Input.dispatchMouseEvent", { type: "mouseMoved", x: dx + 400, y: dy, button: "left", buttons: 1 });
+  const whyText = await js("document.getElementById('drag-why').hidden ? '' : document.getElementById('drag-why').textContent");
+  await shot("mechanism", "mechanism-cannot-assemble");
+  await send("Input.dispatchMouseEvent", { type: "mouseReleased", x: dx + 400, y: dy, button: "left", clickCount: 1 });
+  check("an impossible drag says why it cannot assemble", whyText.length > 10, whyText.slice(0, 120));
+  await js("(document.getElementById('undo').click(), true)");
+  await js("(document.getElementById('undo').click(), true)");
+  check("undo takes the drags back", await until(`document.getElementById('editor').value === ${JSON.stringify(textBefore)}`));
+  await js("(document.getElementById('edit-drag').checked = false, true)");
+}
+
+// ---------- every drawing in a view that zooms and pans; a ZIP of all files ----------
+{
+  await openView("drawings");
+  const names = await js("[...document.querySelectorAll('#all-drawings .drawing h3')].map((h) => h.textContent)");
+  const want = ["linkage/positions.svg", "synthesis/", "forces/strength-M.svg", "sheets/sheet-1.svg"];
+  check("the drawings view holds the construction, the 12 positions, N/Q/M and the sheets", want.every((w) => names.some((n) => n.startsWith(w))), `${names.length} drawings`);
+  await js(`[...document.querySelectorAll('#all-drawings .drawing')].find((d) => d.querySelector('h3').textContent === 'linkage/positions.svg').querySelector('svg').dispatchEvent(new MouseEvent('click', { bubbles: true })), true`);
+  const vb0 = await js("document.querySelector('#viewer-stage svg').getAttribute('viewBox')");
+  await send("Input.dispatchKeyEvent", { type: "keyDown", key: "+", text: "+" });
+  await send("Input.dispatchKeyEvent", { type: "keyDown", key: "ArrowRight", code: "ArrowRight", windowsVirtualKeyCode: 39 });
+  const vb1 = await js("document.querySelector('#viewer-stage svg').getAttribute('viewBox')");
+  check("a drawing opens in a viewer that zooms and pans", !(await js("document.getElementById('viewer').hidden")) && vb0 !== vb1, `${vb0} → ${vb1}`);
+  await shot("drawings", "viewer");
+  await send("Input.dispatchKeyEvent", { type: "keyDown", key: "Escape", code: "Escape", windowsVirtualKeyCode: 27 });
+  check("Esc closes the viewer", await until("document.getElementById('viewer').hidden"));
+  await shot("drawings");
+}
+
+// ---------- keyboard and contrast ----------
+{
+  await js("(document.activeElement?.blur(), window.scrollTo(0, 0), true)");
+  const seen = [];
+  for (let k = 0; k < 14; k++) {
+    await send("Input.dispatchKeyEvent", { type: "keyDown", key: "Tab", code: "Tab", windowsVirtualKeyCode: 9 });
+    await send("Input.dispatchKeyEvent", { type: "keyUp", key: "Tab", code: "Tab", windowsVirtualKeyCode: 9 });
+    seen.push(await js("document.activeElement.id || document.activeElement.dataset.view || document.activeElement.tagName"));
+  }
+  check("Tab reaches the task, the language, Load…, Save, the editor and the tabs", ["task-select", "lang", "load-btn", "save", "editor"].every((id) => seen.includes(id)) && seen.some((v) => ["numbers", "mechanism", "diagrams", "drawings", "gear", "planetary", "cam", "files"].includes(v)), seen.join(" "));
+  await js(`(document.getElementById('load-btn').focus(), window.__opened = 0, document.getElementById('load').click = () => { window.__opened++; }, true)`);
+  await send("Input.dispatchKeyEvent", { type: "keyDown", key: "Enter", code: "Enter", windowsVirtualKeyCode: 13, text: "\r", unmodifiedText: "\r" });
+  await send("Input.dispatchKeyEvent", { type: "keyUp", key: "Enter", code: "Enter", windowsVirtualKeyCode: 13 });
+  await sleep(100);
+  check("Enter on Load… opens the file chooser", (await js("window.__opened")) === 1);
+  await js("(delete document.getElementById('load').click, true)");
+  const tabKeys = await js(`(() => { const t = document.querySelector('#tabs [data-view="numbers"]'); t.focus(); t.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true })); return document.activeElement.dataset.view; })()`);
+  check("the arrow keys move between the tabs", tabKeys === "mechanism", tabKeys);
+  const contrast = `(() => { const rgb = (s) => s.match(/[0-9.]+/g).slice(0, 3).map(Number); const lum = ([r, g, b]) => { const f = (c) => { c /= 255; return c <= 0.03928 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4; }; return 0.2126 * f(r) + 0.7152 * f(g) + 0.0722 * f(b); }; const st = getComputedStyle(document.getElementById('status')); const a = lum(rgb(st.color)), b = lum(rgb(st.backgroundColor)); return (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05); })()`;
+  const c1 = await js(contrast);
+  await setText(bad); await until("!document.getElementById('error').hidden");
+  const c2 = await js(contrast);
+  await setText(defaultText); await until("document.getElementById('error').hidden");
+  check("the status text has a contrast of at least 4.5:1 (normal and error)", c1 >= 4.5 && c2 >= 4.5, `${c1.toFixed(1)}:1, ${c2.toFixed(1)}:1`);
+  results.figures.status_contrast = [c1, c2];
+}
+
+// ---------- phone and touch (390 × 844) ----------
+{
+  await send("Emulation.setDeviceMetricsOverride", { width: 390, height: 844, deviceScaleFactor: 2, mobile: true });
+  await send("Emulation.setTouchEmulationEnabled", { enabled: true, maxTouchPoints: 1 });
+  await sleep(300);
+  await openView("mechanism");
+  await js("(window.tmmPage.dirty.add('mechanism'), document.querySelector('#tabs [data-view=\"numbers\"]').click(), document.querySelector('#tabs [data-view=\"mechanism\"]').click(), true)");
+  await sleep(200);
+  const m = await js(`(() => { const r = document.getElementById('mech').getBoundingClientRect(); return { w: r.width, h: r.height, page: document.documentElement.scrollWidth, inner: window.innerWidth }; })()`);
+  check("the phone layout clips nothing sideways", m.page <= m.inner, `page ${m.page} px in a ${m.inner} px window`);
+  check("the mechanism drawing is usable on the phone", m.w >= 340 && m.h >= 250, `${m.w.toFixed(0)} × ${m.h.toFixed(0)} px`);
+  results.figures.phone_mechanism_px = [m.w, m.h];
+  const pin = await js(`(() => { const F = window.tmmPage.frames, c = document.getElementById('mech'); c.scrollIntoView({ block: 'center' }); const [u, v] = window.tmmPage.T.to(F.xy[window.tmmPage.frame][F.pin]); const r = c.getBoundingClientRect(), k = c.width / r.width; return [r.left + u / k, r.top + v / k, window.tmmPage.frame]; })()`);
+  // a finger 10 px off the pin's centre still takes it (a target 24 px across)
+  const touch = (type, x, y) => send("Input.dispatchTouchEvent", { type, touchPoints: type === "touchEnd" ? [] : [{ x, y, radiusX: 8, radiusY: 8 }] });
+  await touch("touchStart", pin[0] + 10, pin[1]);
+  for (let k = 1; k <= 6; k++) await touch("touchMove", pin[0] + 10 - 8 * k, pin[1] - 8 * k);
+  await touch("touchEnd");
+  await sleep(200);
+  const frameAfter = await js("window.tmmPage.frame");
+  check("a finger turns the crank", frameAfter !== pin[2], `frame ${pin[2]} → ${frameAfter}`);
+  await shot("mechanism", "phone-mechanism");
+  await js("window.scrollTo(0, 0), true");
+  await shot("numbers", "phone-numbers");
+  await shot("gear", "phone-gear");
+  await send("Emulation.clearDeviceMetricsOverride");
+  await send("Emulation.setTouchEmulationEnabled", { enabled: false });
+  await js("window.scrollTo(0, 0), true");
+}
 
 // ---------- a link reproduces the task ----------
 await send("Page.navigate", { url: "about:blank" });
@@ -254,6 +518,61 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   const exp = JSON.parse(execFileSync(tmmBin, ["run", "--json", example], { maxBuffer: 64 << 20 }).toString());
   await js(`document.querySelector('#tabs [data-view="numbers"]').click(), true`);
   check("the loaded task is analysed", await until(`Math.abs(+document.querySelector('[data-key="linkage.kv"]').dataset.value - ${exp.linkage.kv}) <= 1e-12`), `Kv ${exp.linkage.kv}`);
+}
+
+// ---------- a ZIP of every file, with its folders ----------
+{
+  await js(`document.querySelector('#tabs [data-view="files"]').click(), true`);
+  const nFiles = await js("document.querySelectorAll('#file-list li').length");
+  const n0 = await js("window.__downloads.length");
+  await js("(document.getElementById('zip').click(), true)");
+  await until(`window.__downloads.length > ${n0}`);
+  const z = await js(`fetch(window.__downloads[${n0}][1]).then((r) => r.arrayBuffer()).then((b) => { const d = new DataView(b); const e = b.byteLength - 22; const n = d.getUint16(e + 10, true); let o = d.getUint32(e + 16, true); const names = []; for (let i = 0; i < n; i++) { const l = d.getUint16(o + 28, true); names.push(new TextDecoder().decode(new Uint8Array(b, o + 46, l))); o += 46 + l; } return [window.__downloads[${n0}][0], names]; })`);
+  check("the ZIP holds every file with its folders", z[1].length === nFiles && z[1].includes("linkage/positions.svg") && z[1].includes("report.json"), `${z[0]}: ${z[1].length} files, list ${nFiles}`);
+}
+
+// ---------- edits are never lost ----------
+{
+  // kept in the browser: a page opened without a link restores the task
+  const mine = (await js("document.getElementById('editor').value")) + "\n# my note\n";
+  await setText(mine);
+  await sleep(100);
+  const bare = url.replace(/#.*$/, "");
+  await send("Page.navigate", { url: "about:blank" }); await sleep(100);
+  await send("Page.navigate", { url: bare });
+  check("the page is ready again", await until("document.body && document.body.dataset.ready === '1'"));
+  check("the edited task is restored from the browser's storage", (await js("document.getElementById('editor').value")) === mine);
+  // an example asks before it replaces an edited task
+  await js(`(window.__asked = 0, window.confirm = () => { window.__asked++; return false; }, true)`);
+  await js(`(() => { const s = document.getElementById('task-select'); s.value = 'gear-seed001.toml'; s.dispatchEvent(new Event('change')); return true; })()`);
+  check("an example asks before it replaces an edited task, and 'no' keeps it", (await js("window.__asked")) === 1 && (await js("document.getElementById('editor').value")) === mine);
+  // typed while the module loads on a slow link: kept, and a loading indicator shows
+  await send("Network.enable");
+  await send("Network.setCacheDisabled", { cacheDisabled: true });
+  await send("Network.emulateNetworkConditions", { offline: false, latency: 150, downloadThroughput: 400 * 1024, uploadThroughput: 100 * 1024 });
+  await js("(localStorage.clear(), true)");
+  await send("Page.navigate", { url: "about:blank" }); await sleep(100);
+  const tSlow = Date.now();
+  await send("Page.navigate", { url: bare });
+  await until("document.getElementById('editor') && !document.getElementById('loading').hidden", 10000);
+  const typed = readFileSync(new URL("../examples/seed-001-fourbar.toml", import.meta.url), "utf8");
+  const loadingShown = await js("!document.getElementById('loading').hidden && getComputedStyle(document.getElementById('loading')).display !== 'none'");
+  await js(`(() => { const e = document.getElementById('editor'); e.value = ${JSON.stringify(typed)}; e.dispatchEvent(new Event('input')); return true; })()`);
+  await sleep(1500);
+  const progress = await js("document.getElementById('loading-bytes').textContent");
+  await shot("numbers", "loading-slow-link");
+  check("the page is ready on a slow link", await until("document.body.dataset.ready === '1'", 60000));
+  results.figures.ready_slow_link_ms = Date.now() - tSlow;
+  check("a loading indicator shows while the module loads", loadingShown && /MB/.test(progress), progress);
+  check("text typed while the page loads is kept and analysed", (await js("document.getElementById('editor').value")) === typed && (await js("!!window.tmmPage.reply.report.linkage && !window.tmmPage.reply.report.cam")));
+  await send("Network.emulateNetworkConditions", { offline: false, latency: 0, downloadThroughput: -1, uploadThroughput: -1 });
+}
+
+// ---------- opened from the disk: the page says how to serve it ----------
+{
+  await send("Page.navigate", { url: "file://" + join(process.cwd(), distDir, "index.html") });
+  await sleep(800);
+  check("index.html opened from the disk says how to serve it", await js("!document.getElementById('file-note').hidden && /http\\.server/.test(document.getElementById('file-note').textContent)"));
 }
 
 // ---------- bundle size ----------

@@ -5,28 +5,60 @@
 import init, * as tmm from "./tmm_web.js";
 
 const $ = (id) => document.getElementById(id);
-const state = { reply: null, frames: null, frame: 0, playing: false, camPlaying: false, camIndex: 0, timings: [], name: "task.toml" };
+const state = { reply: null, frames: null, frame: 0, playing: false, camPlaying: false, camIndex: 0, timings: [], name: "task.toml", words: {}, lists: {} };
 window.tmmPage = state; // read by the browser test
 
-// Key numbers: [label, path in report.json, unit]
+// ---------- words ----------
+// The page's words come from the word files of the drawings (the `[web]`
+// area of crates/tmm-report/lang/*.toml), in the language chosen by the
+// switch or, by default, by the task's `[project] lang`.
+const W = (key, ...args) => (state.words[key] ?? key).replace(/\{(\d)\}/g, (_, i) => args[+i - 1]);
+function uiLang() { return $("lang").value || state.taskLang || "en"; }
+function applyWords() {
+  const lang = uiLang();
+  if (state.wordsLang !== lang) {
+    state.words = JSON.parse(tmm.words(lang)).words;
+    state.wordsLang = lang;
+  }
+  document.documentElement.lang = lang;
+  document.querySelectorAll("[data-w]").forEach((e) => (e.textContent = W(e.dataset.w)));
+  document.querySelectorAll("[data-w-aria]").forEach((e) => e.setAttribute("aria-label", W(e.dataset.wAria)));
+  $("play").textContent = W(state.playing ? "pause" : "play");
+  $("cam-play").textContent = W(state.camPlaying ? "pause" : "play");
+  const first = $("task-select").options[0];
+  if (first) first.textContent = W("default_task");
+}
+
+// ---------- numbers on screen: mm and degrees (the JSON stays SI) ----------
+const nf = (x, digits = 6) => (Number.isFinite(x) ? +x.toPrecision(digits) + "" : String(x));
+const fmt = (x) => (typeof x === "number" ? (Math.abs(x) >= 1e-3 || x === 0 ? +x.toPrecision(6) + "" : x.toExponential(5)) : String(x));
+const toMm = (m) => nf(m * 1000, 6);
+const toDeg = (r) => nf((r * 180) / Math.PI, 6);
+// Key numbers: [word key, path in report.json, kind]
 const KEYS = [
-  ["crank OA (synthesis)", "synthesis.lengths.OA", "m"],
-  ["coefficient of speed change Kv", "linkage.kv", ""],
-  ["output stroke", "linkage.stroke", "rad or m"],
-  ["overlap angle θ", "linkage.theta", "rad"],
-  ["max relative difference, force methods", "forces.max_relative_difference", ""],
-  ["flywheel inertia", "dynamics.flywheel_inertia", "kg·m²"],
-  ["shift x1", "gear.x1", ""],
-  ["shift x2", "gear.x2", ""],
-  ["centre distance aw", "gear.aw", "m"],
-  ["contact ratio εα", "gear.eps_alpha", ""],
-  ["planetary ratio (best)", "planetary.best.ratio", ""],
-  ["cam base radius r0", "cam.r0", "m"],
+  ["k_crank", "synthesis.lengths.OA", "len"],
+  ["k_kv", "linkage.kv", ""],
+  ["k_stroke", "linkage.stroke", "stroke"],
+  ["k_theta", "linkage.theta", "ang"],
+  ["k_forces_diff", "forces.max_relative_difference", ""],
+  ["k_flywheel", "dynamics.flywheel_inertia", "inertia"],
+  ["k_x1", "gear.x1", ""],
+  ["k_x2", "gear.x2", ""],
+  ["k_aw", "gear.aw", "len"],
+  ["k_eps", "gear.eps_alpha", ""],
+  ["k_planetary", "planetary.best.ratio", ""],
+  ["k_r0", "cam.r0", "len"],
 ];
 const get = (obj, path) => path.split(".").reduce((o, k) => (o == null ? undefined : o[k]), obj);
-const fmt = (x) => (typeof x === "number" ? (Math.abs(x) >= 1e-3 || x === 0 ? +x.toPrecision(6) + "" : x.toExponential(5)) : String(x));
+function shown(v, kind, report) {
+  if (kind === "stroke") kind = get(report, "linkage.output.kind") === "angular" ? "ang" : "len";
+  if (kind === "len") return [toMm(v), W("unit_mm")];
+  if (kind === "ang") return [toDeg(v), "°"];
+  if (kind === "inertia") return [fmt(v), W("unit_kgm2")];
+  return [fmt(v), ""];
+}
 
-// ---------- the task in the URL ----------
+// ---------- the task in the address: #lang=ru&task=… ----------
 async function packTask(text) {
   const s = new Blob([text]).stream().pipeThrough(new CompressionStream("deflate-raw"));
   const b = new Uint8Array(await new Response(s).arrayBuffer());
@@ -39,13 +71,21 @@ async function unpackTask(code) {
   const s = new Blob([b]).stream().pipeThrough(new DecompressionStream("deflate-raw"));
   return await new Response(s).text();
 }
-let urlTimer = 0;
-function keepInUrl(text) {
-  clearTimeout(urlTimer);
-  urlTimer = setTimeout(async () => history.replaceState(null, "", "#task=" + (await packTask(text))), 300);
+const hashParams = () => new URLSearchParams(location.hash.slice(1));
+function setHash(params) {
+  const h = [...params].map(([k, v]) => `${k}=${v}`).join("&");
+  history.replaceState(null, "", h ? "#" + h : location.pathname + location.search);
 }
+let urlTimer = 0;
+function keepTask(text) {
+  // the browser's storage at once (a closed tab loses nothing), the address a moment later
+  try { localStorage.setItem("tmm-task", JSON.stringify({ name: state.name, text, original: state.original })); } catch { /* storage full or refused */ }
+  clearTimeout(urlTimer);
+  urlTimer = setTimeout(async () => { const p = hashParams(); p.set("task", await packTask(text)); setHash(p); }, 300);
+}
+function keepLang() { const p = hashParams(); if ($("lang").value) p.set("lang", $("lang").value); else p.delete("lang"); setHash(p); }
 
-// ---------- the editor ----------
+// ---------- the editor, with its own undo history ----------
 function gutter(errLine) {
   const n = $("editor").value.split("\n").length;
   let h = "";
@@ -61,34 +101,85 @@ function showError(e) {
   box.textContent = e.message + (e.help ? "\nhelp: " + e.help : "");
   gutter(e.line || 0);
 }
+const hist = { stack: [], i: -1 };
+function record(text = $("editor").value) {
+  if (hist.stack[hist.i] === text) return;
+  hist.stack.length = hist.i + 1;
+  hist.stack.push(text);
+  if (hist.stack.length > 200) hist.stack.shift();
+  hist.i = hist.stack.length - 1;
+  undoButtons();
+}
+function undoButtons() {
+  $("undo").disabled = !(hist.i > 0 || $("editor").value !== hist.stack[hist.i]);
+  $("redo").disabled = hist.i >= hist.stack.length - 1;
+}
+function undo() {
+  if ($("editor").value !== hist.stack[hist.i]) record();
+  if (hist.i <= 0) return;
+  hist.i--; $("editor").value = hist.stack[hist.i]; afterEdit();
+}
+function redo() {
+  if (hist.i >= hist.stack.length - 1) return;
+  hist.i++; $("editor").value = hist.stack[hist.i]; afterEdit();
+}
+// A new text from the page (an example, a loaded file, a pick, a drag):
+// the old text stays one undo away.
+function setEditor(text, { original } = {}) {
+  record();
+  $("editor").value = text;
+  if (original !== undefined) state.original = original;
+  record(text);
+  afterEdit();
+}
+function afterEdit() { gutter(0); undoButtons(); analyse(); }
+let recordTimer = 0;
 
 // ---------- analysis ----------
 function analyse() {
   const text = $("editor").value;
-  keepInUrl(text);
+  keepTask(text);
   const t0 = performance.now();
   const out = tmm.analyse(state.name, text, $("lang").value);
   const t1 = performance.now();
   const r = JSON.parse(out);
   state.timings.push(t1 - t0);
-  $("status").textContent = `analysed in ${(t1 - t0).toFixed(0)} ms`;
-  if (!r.ok) { showError(r.error); $("status").classList.add("bad"); return; }
+  state.lists = {};
+  state.contour = null;
+  state.pick = null;
+  state.dirty = new Set(Object.keys(VIEWS));
+  if (!r.ok) {
+    // nothing of the last task stays on screen: every view says why it is empty
+    state.reply = null; state.frames = null; state.error = r.error;
+    showError(r.error);
+    applyWords();
+    $("status").textContent = r.error.line ? W("error_status", r.error.line) : W("error_status_noline");
+    $("status").classList.add("bad");
+    render(activeView());
+    return r;
+  }
+  state.error = null;
+  state.goodText = text;
+  state.taskLang = r.lang;
+  applyWords();
+  $("status").textContent = W("analysed", (t1 - t0).toFixed(0));
   $("status").classList.remove("bad");
   showError(null);
   state.reply = r;
-  state.lists = {};
-  state.frames = JSON.parse(tmm.frames(360));
-  if (!state.frames.ok) state.frames = null;
-  // every view is drawn anew when it is next shown; the shown one now
-  state.dirty = new Set(Object.keys(VIEWS));
+  const f = JSON.parse(tmm.frames(360));
+  state.frames = f.ok ? f : null;
+  state.framesWhy = f.ok ? null : f.none ? W("no_linkage") : W("no_full_turn") + "\n" + f.error.message;
+  state.bg = null;
   render(activeView());
+  return r;
 }
-// The views, each drawn only when shown after a new analysis (a section's
-// drawings are made by the module only when a view or a download asks).
+// The views, each drawn when shown after a new analysis; each first says
+// why it is empty when the task has an error or lacks its section.
 const VIEWS = {
   numbers: () => showNumbers(state.reply),
-  mechanism: () => setAngleIndex(+$("angle").value),
+  mechanism: () => showMechanism(),
   diagrams: () => showDiagrams(),
+  drawings: () => showDrawings(),
   gear: () => showGear(),
   planetary: () => showPlanetary(),
   cam: () => showCam(),
@@ -96,9 +187,24 @@ const VIEWS = {
 };
 state.dirty = new Set();
 const activeView = () => document.querySelector("#tabs button.active").dataset.view;
+// Show the view's body, or hide it and say why (`why` non-empty).
+function why(view, text) {
+  const v = $("view-" + view);
+  v.querySelector(".why").hidden = !text;
+  v.querySelector(".why").textContent = text || "";
+  v.querySelector(".body").hidden = !!text;
+  v.dataset.state = text ? "empty" : "shown";
+  return !!text;
+}
 function render(view) {
-  if (!state.reply || !state.dirty.has(view)) return;
+  if (!state.dirty.has(view)) return;
   state.dirty.delete(view);
+  if (!state.reply) {
+    const e = state.error;
+    why(view, e ? W("blocked") + "\n" + (e.line ? `${W("error_status", e.line)}: ` : "") + e.message : W("loading"));
+    if (view === "mechanism") stopPlay();
+    return;
+  }
   VIEWS[view]();
 }
 // The median time of n edits (for the browser test): the analyses of the
@@ -123,27 +229,92 @@ let analyseTimer = 0;
 function scheduleAnalyse() { clearTimeout(analyseTimer); analyseTimer = setTimeout(analyse, 150); }
 
 function showNumbers(r) {
-  let h = "<tr><th>quantity</th><th>value</th><th>unit</th></tr>";
-  for (const [label, path, unit] of KEYS) {
+  why("numbers", null);
+  let h = `<tr><th>${W("quantity")}</th><th>${W("value")}</th><th>${W("unit")}</th></tr>`;
+  for (const [label, path, kind] of KEYS) {
     const v = get(r.report, path);
     if (typeof v !== "number") continue;
-    h += `<tr><td>${label}</td><td class="num" data-key="${path}" data-value="${v}">${fmt(v)}</td><td>${unit}</td></tr>`;
+    const [text, unit] = shown(v, kind, r.report);
+    h += `<tr><td>${W(label)}</td><td class="num" data-key="${path}" data-value="${v}">${text}</td><td>${unit}</td></tr>`;
   }
   $("key-numbers").innerHTML = h;
-  $("texts").innerHTML = r.sections.map((s) => `<h3>${s.section}</h3><pre class="section-text"></pre>`).join("");
-  $("texts").querySelectorAll("pre").forEach((p, i) => (p.textContent = r.sections[i].text));
+  if (uiLang() === "en") {
+    $("texts").innerHTML = r.sections.map((s) => `<h3>${s.section}</h3><pre class="section-text"></pre>`).join("");
+    $("texts").querySelectorAll("pre").forEach((p, i) => (p.textContent = r.sections[i].text));
+  } else {
+    // the plain-text summaries are English: not on a Russian or Ukrainian screen
+    $("texts").innerHTML = `<p class="hint"></p>`;
+    $("texts").firstChild.textContent = W("texts_note");
+  }
 }
 
+// ---------- drawings, and a viewer that zooms and pans ----------
 function drawing(title, svg) {
   const d = document.createElement("div");
-  d.className = "drawing";
+  d.className = "drawing zoomable";
   d.innerHTML = `<h3></h3>` + (svg || "").replace(/^<\?xml[^>]*>\s*/, "");
   d.querySelector("h3").textContent = title;
+  const s = d.querySelector("svg");
+  if (s) { s.setAttribute("tabindex", "0"); s.setAttribute("role", "img"); s.setAttribute("aria-label", title); }
   return d;
 }
 function fill(id, items) {
   const el = $(id); el.replaceChildren(...items.map(([t, s]) => drawing(t, s)));
 }
+document.addEventListener("click", (e) => {
+  const s = e.target.closest(".drawing.zoomable svg");
+  if (s && !s.closest("#contour")) openViewer(s.closest(".drawing").querySelector("h3").textContent, s);
+});
+document.addEventListener("keydown", (e) => {
+  const s = e.target.closest?.(".drawing.zoomable svg");
+  if (s && (e.key === "Enter" || e.key === " ") && !s.closest("#contour")) { e.preventDefault(); openViewer(s.closest(".drawing").querySelector("h3").textContent, s); }
+});
+const viewer = { vb: null, svg: null, back: null };
+function openViewer(title, svg) {
+  const c = svg.cloneNode(true);
+  c.removeAttribute("width"); c.removeAttribute("height"); c.removeAttribute("tabindex");
+  const vb = svg.viewBox.baseVal;
+  viewer.vb = [vb.x, vb.y, vb.width, vb.height]; viewer.full = [...viewer.vb]; viewer.svg = c; viewer.back = document.activeElement;
+  $("viewer-title").textContent = title;
+  $("viewer-stage").replaceChildren(c);
+  $("viewer").hidden = false;
+  $("viewer-stage").focus();
+}
+function viewerSet() { viewer.svg.setAttribute("viewBox", viewer.vb.join(" ")); }
+function viewerZoom(k, fx = 0.5, fy = 0.5) {
+  const [x, y, w, h] = viewer.vb, nw = w * k, nh = h * k;
+  viewer.vb = [x + (w - nw) * fx, y + (h - nh) * fy, nw, nh]; viewerSet();
+}
+function closeViewer() { $("viewer").hidden = true; $("viewer-stage").replaceChildren(); viewer.back?.focus?.(); }
+$("viewer-close").onclick = closeViewer;
+$("viewer-stage").addEventListener("wheel", (e) => {
+  e.preventDefault();
+  const r = $("viewer-stage").getBoundingClientRect();
+  viewerZoom(e.deltaY > 0 ? 1.2 : 1 / 1.2, (e.clientX - r.left) / r.width, (e.clientY - r.top) / r.height);
+}, { passive: false });
+{
+  let pan = null;
+  const st = $("viewer-stage");
+  st.addEventListener("pointerdown", (e) => { pan = [e.clientX, e.clientY, [...viewer.vb]]; st.setPointerCapture(e.pointerId); });
+  st.addEventListener("pointermove", (e) => {
+    if (!pan) return;
+    const r = st.getBoundingClientRect(), [x, y, w, h] = pan[2], k = Math.max(w / r.width, h / r.height);
+    viewer.vb = [x - (e.clientX - pan[0]) * k, y - (e.clientY - pan[1]) * k, w, h]; viewerSet();
+  });
+  st.addEventListener("pointerup", () => (pan = null));
+  $("viewer").addEventListener("keydown", (e) => {
+    const [x, y, w, h] = viewer.vb, step = 0.1;
+    const keys = {
+      Escape: closeViewer, "+": () => viewerZoom(1 / 1.2), "=": () => viewerZoom(1 / 1.2), "-": () => viewerZoom(1.2),
+      "0": () => { viewer.vb = [...viewer.full]; viewerSet(); },
+      ArrowLeft: () => { viewer.vb = [x - w * step, y, w, h]; viewerSet(); }, ArrowRight: () => { viewer.vb = [x + w * step, y, w, h]; viewerSet(); },
+      ArrowUp: () => { viewer.vb = [x, y - h * step, w, h]; viewerSet(); }, ArrowDown: () => { viewer.vb = [x, y + h * step, w, h]; viewerSet(); },
+    };
+    if (keys[e.key] && !(e.key === "Escape" && false)) { e.preventDefault(); keys[e.key](); }
+    if (e.key === "Tab") { e.preventDefault(); (document.activeElement === $("viewer-close") ? $("viewer-stage") : $("viewer-close")).focus(); }
+  });
+}
+
 // The files of one section of the last run ("report" for report.json),
 // asked for once per analysis: the module makes the section's drawings then.
 function sectionFiles(section) {
@@ -156,6 +327,20 @@ function sectionFiles(section) {
   return state.lists[section];
 }
 const files = (prefix, ext = ".svg") => sectionFiles(prefix.split("/")[0]).map((f) => f.path).filter((p) => p.startsWith(prefix) && p.endsWith(ext));
+const allSections = () => ["report", ...state.reply.sections.map((s) => s.section), "sheets"];
+
+function showDrawings() {
+  why("drawings", null);
+  const box = $("all-drawings"); box.replaceChildren();
+  for (const sec of allSections().slice(1)) {
+    const svgs = files(sec + "/");
+    if (!svgs.length) continue;
+    const h = document.createElement("h2"); h.textContent = sec + "/";
+    const g = document.createElement("div"); g.className = "grid";
+    g.append(...svgs.map((p) => drawing(p, tmm.file_text(p))));
+    box.append(h, g);
+  }
+}
 
 // ---------- downloads ----------
 function download(name, bytes, type) {
@@ -165,21 +350,74 @@ function download(name, bytes, type) {
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 }
 function showFiles() {
+  why("files", null);
   const ul = $("file-list"); ul.replaceChildren();
   const add = (label, fn) => { const li = document.createElement("li"); const b = document.createElement("a"); b.href = "#"; b.textContent = label; b.onclick = (e) => { e.preventDefault(); fn(); }; li.append(b); ul.append(li); };
-  add("task.toml (the task in the editor)", () => download(state.name, $("editor").value, "text/plain"));
-  const all = ["report", ...state.reply.sections.map((s) => s.section), "sheets"].flatMap(sectionFiles);
-  for (const f of all) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
+  add(`task.toml (${W("task_file")})`, () => download(state.name, $("editor").value, "text/plain"));
+  for (const f of allSections().flatMap(sectionFiles)) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
 }
+// A ZIP of every file with its folders (stored, not compressed: the
+// drawings are small and the browser's own deflate stream has no raw
+// CRC-32), made here from the module's bytes.
+const CRC = (() => { const t = new Uint32Array(256); for (let n = 0; n < 256; n++) { let c = n; for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1; t[n] = c >>> 0; } return t; })();
+function crc32(b) { let c = 0xffffffff; for (let i = 0; i < b.length; i++) c = CRC[(c ^ b[i]) & 255] ^ (c >>> 8); return (c ^ 0xffffffff) >>> 0; }
+function zip(entries) {
+  const enc = new TextEncoder(), parts = [], central = [];
+  let off = 0;
+  for (const [name, data] of entries) {
+    const nm = enc.encode(name), crc = crc32(data);
+    const h = new DataView(new ArrayBuffer(30));
+    h.setUint32(0, 0x04034b50, true); h.setUint16(4, 20, true); h.setUint16(6, 0x0800, true);
+    h.setUint32(14, crc, true); h.setUint32(18, data.length, true); h.setUint32(22, data.length, true); h.setUint16(26, nm.length, true);
+    parts.push(new Uint8Array(h.buffer), nm, data);
+    const c = new DataView(new ArrayBuffer(46));
+    c.setUint32(0, 0x02014b50, true); c.setUint16(4, 20, true); c.setUint16(6, 20, true); c.setUint16(8, 0x0800, true);
+    c.setUint32(16, crc, true); c.setUint32(20, data.length, true); c.setUint32(24, data.length, true); c.setUint16(28, nm.length, true);
+    c.setUint32(42, off, true);
+    central.push(new Uint8Array(c.buffer), nm);
+    off += 30 + nm.length + data.length;
+  }
+  const size = central.reduce((s, p) => s + p.length, 0);
+  const e = new DataView(new ArrayBuffer(22));
+  e.setUint32(0, 0x06054b50, true); e.setUint16(8, entries.length, true); e.setUint16(10, entries.length, true);
+  e.setUint32(12, size, true); e.setUint32(16, off, true);
+  return new Blob([...parts, ...central, new Uint8Array(e.buffer)], { type: "application/zip" });
+}
+$("zip").onclick = () => {
+  if (!state.reply) return;
+  const entries = [[state.name.replace(/^.*[\\/]/, ""), new TextEncoder().encode($("editor").value)]];
+  for (const f of allSections().flatMap(sectionFiles)) entries.push([f.path, tmm.file_bytes(f.path)]);
+  download("tmm-" + state.name.replace(/\.toml$/, "").replace(/^.*[\\/]/, "") + ".zip", zip(entries), "application/zip");
+};
 
 // ---------- mechanism: animation, slider, dragging, plans at the angle ----------
+function showMechanism() {
+  if (why("mechanism", state.frames ? null : state.framesWhy)) { stopPlay(); clearMechanism(); return; }
+  $("drag-why").hidden = true;
+  sizeCanvas($("mech"), window.innerWidth < 760 ? 0.8 : 0.62);
+  state.bg = null;
+  setAngleIndex(state.frame);
+}
+function clearMechanism() {
+  const c = $("mech"); c.getContext("2d").clearRect(0, 0, c.width, c.height);
+  $("plans").replaceChildren(); $("force-plans").replaceChildren(); $("torque").textContent = "";
+}
+// A canvas as wide as its box, at the screen's pixel density.
+function sizeCanvas(c, aspect, maxCss = 1100) {
+  const w = Math.min(maxCss, Math.max(280, Math.round(c.parentElement.clientWidth - 2)));
+  const dpr = window.devicePixelRatio || 1;
+  const W_ = Math.round(w * dpr), H = Math.round(W_ * aspect);
+  if (c.width !== W_ || c.height !== H) { c.width = W_; c.height = H; }
+  c.style.width = w + "px"; c.style.height = H / dpr + "px";
+}
+const cssScale = (c) => c.width / c.getBoundingClientRect().width;
 function setAngleIndex(i) {
   const F = state.frames;
   $("angle").value = i;
-  if (!F) { $("angle-out").textContent = "no [linkage]"; return; }
+  if (!F) return;
   state.frame = ((i % F.phi.length) + F.phi.length) % F.phi.length;
   const phi = F.phi[state.frame];
-  $("angle-out").textContent = `φ = ${(phi * 180 / Math.PI).toFixed(1)}°`;
+  $("angle-out").textContent = `φ = ${((phi * 180) / Math.PI).toFixed(1)}°`;
   $("angle-out").dataset.phi = phi;
   drawMechanism();
   const t0 = performance.now();
@@ -194,11 +432,11 @@ function setAngleIndex(i) {
   }
   const a = JSON.parse(tmm.at_angle(phi, true));
   state.lastAngleMs = performance.now() - t0;
-  if (!a.ok) return;
-  fill("plans", [["Velocity plan", a.velocity_plan], ["Acceleration plan", a.acceleration_plan]]);
+  if (!a.ok) { $("plans").replaceChildren(); $("torque").textContent = a.error?.message ?? ""; return; }
+  fill("plans", [[W("velocity_plan"), a.velocity_plan], [W("acceleration_plan"), a.acceleration_plan]]);
   if (a.forces) {
     fill("force-plans", Object.entries(a.forces.files));
-    $("torque").textContent = `Mb = ${fmt(a.forces.balancing_moment)} N·m (Zhukovsky: ${fmt(a.forces.zhukovsky_moment)} N·m)`;
+    $("torque").textContent = W("mb", nf(a.forces.balancing_moment), nf(a.forces.zhukovsky_moment));
   } else { $("force-plans").replaceChildren(); $("torque").textContent = ""; }
   moveCursors(a.psi);
 }
@@ -208,7 +446,7 @@ function setAngleIndex(i) {
 function drawPlans(a) {
   let cs = [...document.querySelectorAll("#plans canvas")];
   if (cs.length !== 2) {
-    fill("plans", [["Velocity plan", ""], ["Acceleration plan", ""]]);
+    fill("plans", [[W("velocity_plan"), ""], [W("acceleration_plan"), ""]]);
     cs = [...document.querySelectorAll("#plans .drawing")].map((d) => { const c = document.createElement("canvas"); c.width = 420; c.height = 320; d.append(c); return c; });
   }
   [[a.velocity, "p"], [a.acceleration, "π"]].forEach(([vs, pole], i) => {
@@ -234,28 +472,40 @@ function drawPlans(a) {
   });
 }
 function mechTransform() {
-  const F = state.frames, c = $("mech");
+  const F = state.frames, c = $("mech"), pad = 30 * (window.devicePixelRatio || 1);
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
   for (const fr of F.xy) for (const [x, y] of fr) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); }
-  const s = Math.min((c.width - 40) / (x1 - x0 || 1), (c.height - 40) / (y1 - y0 || 1));
+  for (const gd of (F.guides || []).filter((g) => g.fixed)) for (const [x, y] of [gd.from, gd.to]) { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); }
+  const s = Math.min((c.width - 2 * pad) / (x1 - x0 || 1), (c.height - 2 * pad) / (y1 - y0 || 1));
   const ox = (c.width - s * (x1 - x0)) / 2 - s * x0, oy = (c.height + s * (y1 - y0)) / 2 + s * y0;
-  return { s, to: ([x, y]) => [ox + s * x, oy - s * y], from: (u, v) => [(u - ox) / s, (oy - v) / s] };
+  return { s, ox, oy, to: ([x, y]) => [ox + s * x, oy - s * y], from: (u, v) => [(u - ox) / s, (oy - v) / s] };
 }
 // The scale and the traced paths of every point, drawn once per set of
 // frames onto a canvas of their own; a frame copies it and draws the links.
 function mechBackground() {
   const F = state.frames, c = $("mech");
   if (state.bg && state.bg.frames === F && state.bg.canvas.width === c.width && state.bg.canvas.height === c.height) return state.bg;
-  const T = mechTransform();
+  const T = state.dragT || mechTransform();
   const canvas = document.createElement("canvas"); canvas.width = c.width; canvas.height = c.height;
-  const g = canvas.getContext("2d");
-  g.lineWidth = 1;
+  const g = canvas.getContext("2d"), dpr = window.devicePixelRatio || 1;
+  g.lineWidth = dpr;
   F.names.forEach((_, j) => {
     g.strokeStyle = `hsl(${(j * 67) % 360} 60% 60%)`;
     g.beginPath();
     F.xy.forEach((fr, k) => { const [u, v] = T.to(fr[j]); k ? g.lineTo(u, v) : g.moveTo(u, v); });
     g.closePath(); g.stroke();
   });
+  // the fixed guides of the sliders, hatched on one side
+  g.strokeStyle = "#333"; g.lineWidth = 1.5 * dpr;
+  for (const gd of F.guides || []) {
+    if (!gd.fixed) continue;
+    const [u1, v1] = T.to(gd.from), [u2, v2] = T.to(gd.to), L = Math.hypot(u2 - u1, v2 - v1) || 1;
+    g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke();
+    const nx = (v2 - v1) / L, ny = -(u2 - u1) / L, ux = (u2 - u1) / L, uy = (v2 - v1) / L, hs = 6 * dpr;
+    g.lineWidth = dpr;
+    for (let t = 0; t < L; t += 10 * dpr) { const a = u1 + ux * t, b = v1 + uy * t; g.beginPath(); g.moveTo(a, b); g.lineTo(a + nx * hs - ux * hs, b + ny * hs - uy * hs); g.stroke(); }
+    g.lineWidth = 1.5 * dpr;
+  }
   // the frame's pivots: the points that do not move over the cycle
   const half = F.xy[Math.floor(F.xy.length / 2)];
   const quarter = F.xy[Math.floor(F.xy.length / 4)];
@@ -265,47 +515,109 @@ function mechBackground() {
   return state.bg;
 }
 function drawMechanism() {
-  const F = state.frames, c = $("mech"), g = c.getContext("2d");
+  const F = state.frames, c = $("mech"), g = c.getContext("2d"), dpr = window.devicePixelRatio || 1;
   g.clearRect(0, 0, c.width, c.height);
   if (!F) return;
   const bg = mechBackground(), T = bg.T; state.T = T;
   g.drawImage(bg.canvas, 0, 0);
   const fr = F.xy[state.frame];
-  g.strokeStyle = "#1f4e9c"; g.lineWidth = 4; g.lineCap = "round";
+  g.strokeStyle = "#1f4e9c"; g.lineWidth = 4 * dpr; g.lineCap = "round";
   for (const [a, b] of F.segments) { const [u1, v1] = T.to(fr[a]), [u2, v2] = T.to(fr[b]); g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke(); }
-  g.font = "13px sans-serif"; g.fillStyle = "#000";
+  // the moving guides (on a rocker: the slotted link) and the sliders' blocks
+  for (const gd of F.guides || []) {
+    if (gd.fixed) continue;
+    const a = gd.frames[state.frame];
+    const [u1, v1] = T.to(a[0]), [u2, v2] = T.to(a[1]);
+    g.strokeStyle = "#1f4e9c"; g.lineWidth = 2 * dpr; g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke();
+  }
+  for (const sl of F.sliders || []) {
+    const [u, v] = T.to(fr[sl.point]), ang = sl.angle[state.frame], w = 16 * dpr, h = 10 * dpr;
+    g.save(); g.translate(u, v); g.rotate(-ang);
+    g.fillStyle = "#fff"; g.strokeStyle = "#000"; g.lineWidth = 1.5 * dpr;
+    g.fillRect(-w / 2, -h / 2, w, h); g.strokeRect(-w / 2, -h / 2, w, h); g.restore();
+  }
+  g.font = `${13 * dpr}px sans-serif`;
   F.names.forEach((n, j) => {
     const [u, v] = T.to(fr[j]);
-    g.beginPath(); g.arc(u, v, 4, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.lineWidth = 1.5; g.strokeStyle = "#000"; g.stroke();
-    g.fillStyle = "#000"; g.fillText(n, u + 6, v - 6);
+    const big = j === F.pin; // the crank pin: a handle a finger can take (≥ 24 px across)
+    g.beginPath(); g.arc(u, v, (big ? 12 : 4) * dpr, 0, 2 * Math.PI); g.fillStyle = big ? "rgba(240,160,0,.35)" : "#fff"; g.fill(); g.lineWidth = 1.5 * dpr; g.strokeStyle = "#000"; g.stroke();
+    if (big) { g.beginPath(); g.arc(u, v, 4 * dpr, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.stroke(); }
+    g.fillStyle = "#000"; g.fillText(n, u + 8 * dpr, v - 8 * dpr);
   });
   F.names.forEach((_, j) => {
     if (!bg.fixed[j]) return;
-    const [pu, pv] = T.to(fr[j]);
-    g.beginPath(); g.moveTo(pu, pv + 4); g.lineTo(pu - 8, pv + 14); g.lineTo(pu + 8, pv + 14); g.closePath(); g.stroke();
-    g.beginPath(); g.moveTo(pu - 12, pv + 14); g.lineTo(pu + 12, pv + 14); g.stroke();
+    const [pu, pv] = T.to(fr[j]), k = dpr;
+    g.beginPath(); g.moveTo(pu, pv + 4 * k); g.lineTo(pu - 8 * k, pv + 14 * k); g.lineTo(pu + 8 * k, pv + 14 * k); g.closePath(); g.stroke();
+    g.beginPath(); g.moveTo(pu - 12 * k, pv + 14 * k); g.lineTo(pu + 12 * k, pv + 14 * k); g.stroke();
   });
+  if (state.dragging?.edit) {
+    const [u, v] = state.dragging.at;
+    g.strokeStyle = "#f0a000"; g.lineWidth = 2 * dpr; g.beginPath(); g.arc(u, v, 10 * dpr, 0, 2 * Math.PI); g.stroke();
+  }
 }
 function nearestFrame(phi) {
   const F = state.frames; let best = 0, bd = Infinity;
   F.phi.forEach((p, k) => { const d = Math.abs(Math.atan2(Math.sin(p - phi), Math.cos(p - phi))); if (d < bd) { bd = d; best = k; } });
   return best;
 }
-let dragging = false;
+// The point under the pointer (within 24 CSS px), the crank pin first.
+function pointAt(e) {
+  const F = state.frames, c = $("mech"), r = c.getBoundingClientRect(), k = cssScale(c);
+  const u = (e.clientX - r.left) * k, v = (e.clientY - r.top) * k, fr = F.xy[state.frame];
+  let best = -1, bd = 24 * k;
+  F.names.forEach((_, j) => { const [pu, pv] = state.T.to(fr[j]); const d = Math.hypot(pu - u, pv - v) - (j === F.pin ? 4 * k : 0); if (d < bd) { bd = d; best = j; } });
+  return { j: best, u, v };
+}
 $("mech").addEventListener("pointerdown", (e) => {
-  if (!state.frames) return;
-  const fr = state.frames.xy[state.frame], [u, v] = state.T.to(fr[state.frames.pin]);
-  const r = $("mech").getBoundingClientRect(), k = $("mech").width / r.width;
-  if (Math.hypot((e.clientX - r.left) * k - u, (e.clientY - r.top) * k - v) < 20) { dragging = true; $("mech").setPointerCapture(e.pointerId); }
+  if (!state.frames || !state.T) return;
+  const { j, u, v } = pointAt(e);
+  if (j < 0) return;
+  const edit = $("edit-drag").checked;
+  if (!edit && j !== state.frames.pin) return;
+  e.preventDefault();
+  if (edit) { stopPlay(); record(); state.dragT = state.T; }
+  state.dragging = { j, name: state.frames.names[j], edit, at: [u, v], phi: state.frames.phi[state.frame], frame: state.frame };
+  $("mech").setPointerCapture(e.pointerId);
 });
 $("mech").addEventListener("pointermove", (e) => {
-  if (!dragging) return;
-  const r = $("mech").getBoundingClientRect(), k = $("mech").width / r.width;
-  const [x, y] = state.T.from((e.clientX - r.left) * k, (e.clientY - r.top) * k);
-  const pv = state.frames.xy[0][state.frames.pivot];
-  setAngleIndex(nearestFrame(Math.atan2(y - pv[1], x - pv[0])));
+  const d = state.dragging;
+  if (!d) return;
+  const c = $("mech"), r = c.getBoundingClientRect(), k = cssScale(c);
+  const u = (e.clientX - r.left) * k, v = (e.clientY - r.top) * k;
+  const [x, y] = state.T.from(u, v);
+  if (!d.edit) {
+    const pv = state.frames.xy[0][state.frames.pivot];
+    setAngleIndex(nearestFrame(Math.atan2(y - pv[1], x - pv[0])));
+    return;
+  }
+  d.at = [u, v];
+  const out = JSON.parse(tmm.drag(state.goodText, d.name, x, y, d.phi));
+  if (!out.ok) { $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + out.error.message; drawMechanism(); return; }
+  if (out.text === $("editor").value) { drawMechanism(); return; }
+  $("editor").value = out.text; gutter(0);
+  const last = { frames: state.frames, bg: state.bg };
+  const res = analyse();
+  if (!res.ok) {
+    // the dragged mechanism does not assemble: the view stays, showing the
+    // last mechanism that did with the pointer marked, and saying why
+    state.dirty.delete("mechanism"); why("mechanism", null);
+    state.frames = last.frames; state.bg = last.bg;
+    $("plans").replaceChildren(); $("force-plans").replaceChildren(); $("torque").textContent = "";
+    $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + res.error.message;
+    drawMechanism();
+  } else $("drag-why").hidden = true;
 });
-$("mech").addEventListener("pointerup", () => (dragging = false));
+const endDrag = () => {
+  const d = state.dragging; state.dragging = null;
+  if (d?.edit) { state.dragT = null; state.bg = null; record(); undoButtons(); if (state.frames) drawMechanism(); }
+};
+$("mech").addEventListener("pointerup", endDrag);
+$("mech").addEventListener("pointercancel", endDrag);
+$("mech").addEventListener("keydown", (e) => {
+  if (!state.frames) return;
+  const step = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 30, PageDown: -30 }[e.key];
+  if (step) { e.preventDefault(); setAngleIndex(state.frame + step); }
+});
 $("angle").addEventListener("input", () => setAngleIndex(+$("angle").value));
 function playLoop() {
   if (!state.playing || !state.frames) return;
@@ -313,16 +625,19 @@ function playLoop() {
   setAngleIndex(state.frame + 1);
   requestAnimationFrame(playLoop);
 }
+function stopPlay() { if (state.playing) { state.playing = false; $("play").textContent = W("play"); } }
 $("play").onclick = () => {
   state.playing = !state.playing;
-  $("play").textContent = state.playing ? "❚❚ Pause" : "▶ Play";
+  $("play").textContent = W(state.playing ? "pause" : "play");
   if (state.playing) { $("torque").textContent = ""; $("force-plans").replaceChildren(); requestAnimationFrame(playLoop); }
   else setAngleIndex(state.frame);
 };
 
 // ---------- diagrams with a cursor ----------
 function showDiagrams() {
-  fill("diagrams", [...files("linkage/diagram-"), ...files("dynamics/")].map((p) => [p, tmm.file_text(p)]));
+  const list = [...files("linkage/diagram-"), ...files("dynamics/"), ...files("forces/strength-"), ...files("forces/balancing-torque")];
+  if (why("diagrams", list.length ? null : W("no_diagrams"))) return;
+  fill("diagrams", list.map((p) => [p, tmm.file_text(p)]));
   moveCursors(state.frames ? cursorPsi() : null);
 }
 function cursorPsi() {
@@ -332,14 +647,16 @@ function cursorPsi() {
 // The diagrams run over one revolution: the longest curve (polyline or
 // path) spans ψ = 0…2π.
 function moveCursors(psi) {
-  document.querySelectorAll("#diagrams svg").forEach((svg) => {
+  document.querySelectorAll("#diagrams .drawing").forEach((d) => {
+    if (!/diagram-|dynamics\//.test(d.querySelector("h3").textContent)) return;
+    const svg = d.querySelector("svg");
     svg.querySelector(".cursor")?.remove();
     if (psi == null) return;
     let best = null, bl = 0;
     svg.querySelectorAll("polyline, path").forEach((pl) => { const n = (pl.getAttribute("points") || pl.getAttribute("d") || "").length; if (n > bl) { bl = n; best = pl; } });
     if (!best) return;
     const bb = best.getBBox();
-    const x = bb.x + bb.width * psi / (2 * Math.PI);
+    const x = bb.x + (bb.width * psi) / (2 * Math.PI);
     const vb = svg.viewBox.baseVal;
     const l = document.createElementNS("http://www.w3.org/2000/svg", "line");
     l.setAttribute("class", "cursor"); l.setAttribute("x1", x); l.setAttribute("x2", x);
@@ -350,99 +667,238 @@ function moveCursors(psi) {
 }
 
 // ---------- gear: the contour picks (x1, x2) ----------
-function gearNumbers(g, err) {
-  if (err) { $("gear-numbers").innerHTML = `<p class="bad"></p>`; $("gear-numbers").firstChild.textContent = err; return; }
-  const rows = [["x1", g.x1], ["x2", g.x2], ["aw, m", g.aw], ["αw, rad", g.alpha_w], ["εα", g.eps_alpha], ["sa1, m", g.sa1], ["sa2, m", g.sa2], ["all checks pass", g.all_checks_pass]];
-  $("gear-numbers").innerHTML = "<table>" + rows.map(([k, v]) => `<tr><td>${k}</td><td class="num" data-gear="${k.split(",")[0]}" data-value="${v}">${fmt(v)}</td></tr>`).join("") + "</table>";
+function gearNumbers(g, err, at) {
+  const box = $("gear-numbers");
+  box.dataset.pickX1 = at ? at[0] : ""; box.dataset.pickX2 = at ? at[1] : "";
+  if (err) { box.innerHTML = `<p class="bad"></p>`; box.firstChild.textContent = err; $("gear-checks").replaceChildren(); $("gear-write").hidden = true; return; }
+  const rows = [["x1", g.x1, nf(g.x1)], ["x2", g.x2, nf(g.x2)], [`aw, ${W("unit_mm")}`, g.aw, toMm(g.aw)], ["αw, °", g.alpha_w, toDeg(g.alpha_w)], ["εα", g.eps_alpha, nf(g.eps_alpha)],
+    [`sa1, ${W("unit_mm")}`, g.sa1, toMm(g.sa1)], [`sa2, ${W("unit_mm")}`, g.sa2, toMm(g.sa2)], [W("gear_all"), g.all_checks_pass, W(g.all_checks_pass ? "yes" : "no")]];
+  box.innerHTML = "<table>" + rows.map(([k, v, t]) => `<tr><td>${k}</td><td class="num" data-gear="${k.split(",")[0]}" data-value="${v}">${t}</td></tr>`).join("") + "</table>";
+  // each check's verdict
+  const mmKeys = /^(interference|pointing)/;
+  let h = `<h3>${W("gear_checks")}</h3><table><tr><th></th><th>${W("value")}</th><th>${W("limit")}</th><th></th></tr>`;
+  for (const [k, c] of Object.entries(g.checks || {})) {
+    const v = mmKeys.test(k) ? toMm(c.value) + " " + W("unit_mm") : nf(c.value), l = mmKeys.test(k) ? toMm(c.limit) + " " + W("unit_mm") : nf(c.limit);
+    h += `<tr data-check="${k}" data-pass="${c.pass}"><td>${W("chk_" + k)}</td><td class="num">${v}</td><td class="num">${l}</td><td class="${c.pass ? "pass" : "fail"}">${W(c.pass ? "pass" : "fail")}</td></tr>`;
+  }
+  $("gear-checks").innerHTML = h + "</table>";
 }
 function showGear(svgs) {
-  const has = state.reply && state.reply.report.gear;
-  if (!has) { $("contour").replaceChildren(); $("gear-drawings").replaceChildren(); $("gear-numbers").textContent = "no [gear] in the task"; return; }
+  const g0 = state.reply.report.gear;
+  if (why("gear", g0 ? null : W("no_gear"))) return;
   const text = (p) => (svgs ? svgs[p] : tmm.file_text(p));
-  if (!svgs) gearNumbers(state.reply.report.gear);
-  if (!svgs) state.contourAxes = null; // a new task: its contour is computed on the first click
+  if (!svgs) { gearNumbers(g0, null, [g0.x1, g0.x2]); $("gear-write").hidden = true; }
   $("contour").replaceChildren(drawing("gear/contour.svg", text("gear/contour.svg")));
+  $("contour").firstChild.classList.remove("zoomable");
   fill("gear-drawings", ["gear/mesh.svg", "gear/sliding.svg", "gear/profiles.svg"].map((p) => [p, text(p)]));
   const svg = $("contour").querySelector("svg");
-  svg.style.cursor = "crosshair";
+  state.contour ??= JSON.parse(tmm.gear_contour());
+  if (state.contour.ok) shadePasses(svg, state.contour);
   svg.addEventListener("click", (e) => {
-    const A = (state.contourAxes ??= JSON.parse(tmm.gear_contour())); if (!A.ok) return;
+    const A = state.contour; if (!A.ok) return;
     const pt = new DOMPoint(e.clientX, e.clientY).matrixTransform(svg.getScreenCTM().inverse());
-    const x1 = (pt.x - A.origin[0]) / A.scale, x2 = (A.origin[1] - pt.y) / A.scale;
-    const r = JSON.parse(tmm.gear_at(+x1.toFixed(3), +x2.toFixed(3)));
-    if (r.ok) { gearNumbers(r.gear); showGear(r.files); }
-    else gearNumbers(null, `x1 = ${x1.toFixed(3)}, x2 = ${x2.toFixed(3)}: ${r.error.message}${r.error.help ? " — " + r.error.help : ""}`);
+    const x1 = +((pt.x - A.origin[0]) / A.scale).toFixed(3), x2 = +((A.origin[1] - pt.y) / A.scale).toFixed(3);
+    const r = JSON.parse(tmm.gear_at(x1, x2));
+    if (r.ok) { gearNumbers(r.gear, null, [x1, x2]); state.pick = [x1, x2]; showGear(r.files); $("gear-write").hidden = false; }
+    else { gearNumbers(null, `x1 = ${x1}, x2 = ${x2}: ${r.error.message}${r.error.help ? " — " + r.error.help : ""}`, [x1, x2]); state.pick = null; }
   });
 }
+// The nodes where every check of the task passes, shaded over the drawing
+// in the cells the drawing shades (all four corners inside), row by row.
+function shadePasses(svg, A) {
+  const n = A.n, ns = "http://www.w3.org/2000/svg";
+  const g = document.createElementNS(ns, "g"); g.id = "passes";
+  const at = (i, j) => [A.origin[0] + A.scale * (A.x1[0] + ((A.x1[1] - A.x1[0]) * i) / (n - 1)), A.origin[1] - A.scale * (A.x2[0] + ((A.x2[1] - A.x2[0]) * j) / (n - 1))];
+  const ok = (i, j) => A.passes[j * n + i] === "1";
+  for (let j = 0; j < n - 1; j++) {
+    for (let i = 0; i < n - 1; i++) {
+      if (!(ok(i, j) && ok(i + 1, j) && ok(i, j + 1) && ok(i + 1, j + 1))) continue;
+      let k = i; while (k + 1 < n - 1 && ok(k + 1, j) && ok(k + 2, j) && ok(k + 1, j + 1) && ok(k + 2, j + 1)) k++;
+      const [u0, v0] = at(i, j + 1), [u1, v1] = at(k + 1, j);
+      const r = document.createElementNS(ns, "rect");
+      r.setAttribute("x", u0); r.setAttribute("y", v0); r.setAttribute("width", u1 - u0 + 0.02); r.setAttribute("height", v1 - v0 + 0.02);
+      g.append(r); i = k;
+    }
+  }
+  const allowed = svg.querySelector("#allowed");
+  allowed ? allowed.after(g) : svg.append(g);
+}
+$("gear-write").onclick = () => {
+  if (!state.pick) return;
+  const r = JSON.parse(tmm.gear_write($("editor").value, state.pick[0], state.pick[1]));
+  if (r.ok) setEditor(r.text);
+};
 
 // ---------- planetary ----------
 function showPlanetary() {
-  const p = state.reply && state.reply.report.planetary;
-  if (!p) { $("planetary-table").innerHTML = "<tr><td>no [planetary] in the task</td></tr>"; $("planetary-drawings").replaceChildren(); return; }
+  const p = state.reply.report.planetary;
+  if (why("planetary", p ? null : W("no_planetary"))) return;
   const best = JSON.stringify(p.best && p.best.z);
-  let h = "<tr><th>z</th><th>ratio</th><th>error</th><th>radial size, m</th><th>assembly positions</th><th>equal spacing</th></tr>";
-  for (const c of p.candidates) h += `<tr class="${JSON.stringify(c.z) === best ? "best" : ""}"><td>${c.z.join(", ")}</td><td class="num">${fmt(c.ratio)}</td><td class="num">${fmt(c.error)}</td><td class="num">${fmt(c.radial_size)}</td><td class="num">${c.assembly_positions}</td><td>${c.equal_spacing}</td></tr>`;
+  let h = `<tr><th>${W("z")}</th><th>${W("ratio")}</th><th>${W("ratio_error")}</th><th>${W("radial_modules")}</th><th>${W("assembly_positions")}</th><th>${W("equal_spacing")}</th></tr>`;
+  for (const c of p.candidates) h += `<tr class="${JSON.stringify(c.z) === best ? "best" : ""}"><td>${c.z.join(", ")}</td><td class="num">${fmt(c.ratio)}</td><td class="num">${fmt(c.error)}</td><td class="num">${fmt(c.radial_size)}</td><td class="num">${c.assembly_positions}</td><td>${W(c.equal_spacing ? "yes" : "no")}</td></tr>`;
   $("planetary-table").innerHTML = h;
   fill("planetary-drawings", files("planetary/").map((f) => [f, tmm.file_text(f)]));
 }
 
 // ---------- cam: animation and diagrams ----------
 function showCam() {
-  const c = state.reply && state.reply.report.cam;
+  const c = state.reply.report.cam;
+  if (why("cam", c ? null : W("no_cam"))) { state.camPlaying = false; return; }
   fill("cam-drawings", files("cam/").map((f) => [f, tmm.file_text(f)]));
+  $("cam-slider").max = c.phi.length - 1;
+  sizeCanvas($("cam-canvas"), 0.9, 600);
   drawCam();
-  if (!c) $("cam-angle").textContent = "no [cam] in the task";
 }
+// The cam turned to the angle φ_i and the follower where the profile puts
+// it. The report gives the pitch point (the roller's centre, the flat
+// face's point on the follower's axis, or an oscillating flat face's contact
+// point) in the cam's own frame: turning the cam by φ (its sense of
+// rotation) brings it to the follower in the frame of the machine.
 function drawCam() {
   const c = state.reply && state.reply.report.cam, cv = $("cam-canvas"), g = cv.getContext("2d");
   g.clearRect(0, 0, cv.width, cv.height);
   if (!c) return;
-  const i = state.camIndex % c.phi.length;
-  const R = Math.max(...c.working_x.map((x, k) => Math.hypot(x, c.working_y[k]))) + (c.roller_radius || 0) + c.stroke;
-  const s = (cv.width / 2 - 20) / (R * 1.2), cx = cv.width / 2, cy = cv.height / 2 + R * 0.2 * s;
-  // turn the cam so that its pitch point of this angle sits on the follower
-  const px = c.pitch_x[i], py = c.pitch_y[i];
-  const target = Math.atan2(c.s0 + c.s[i], c.e || 0), rot = target - Math.atan2(py, px);
-  const to = (x, y) => [cx + s * (x * Math.cos(rot) - y * Math.sin(rot)), cy - s * (x * Math.sin(rot) + y * Math.cos(rot))];
-  g.beginPath(); c.working_x.forEach((x, k) => { const [u, v] = to(x, c.working_y[k]); k ? g.lineTo(u, v) : g.moveTo(u, v); });
-  g.closePath(); g.fillStyle = "#dfe8f5"; g.fill(); g.strokeStyle = "#1f4e9c"; g.lineWidth = 2; g.stroke();
-  const [ru, rv] = to(px, py);
-  g.strokeStyle = "#000"; g.beginPath(); g.arc(ru, rv, Math.max(2, s * (c.roller_radius || 0)), 0, 2 * Math.PI); g.stroke();
-  if (String(c.follower).startsWith("translating")) { g.beginPath(); g.moveTo(ru, rv); g.lineTo(ru, 10); g.lineWidth = 4; g.stroke(); }
-  g.beginPath(); g.arc(cx, cy, 4, 0, 2 * Math.PI); g.fillStyle = "#000"; g.fill();
-  $("cam-angle").textContent = `φ = ${(c.phi[i] * 180 / Math.PI).toFixed(1)}°, s = ${(c.s[i] * 1000).toFixed(2)} mm`;
+  const i = ((state.camIndex % c.phi.length) + c.phi.length) % c.phi.length;
+  $("cam-slider").value = i;
+  const sg = c.rotation === "cw" ? -1 : 1, rot = sg * c.phi[i];
+  const R = (x, y) => [x * Math.cos(rot) - y * Math.sin(rot), x * Math.sin(rot) + y * Math.cos(rot)];
+  const follower = String(c.follower), osc = follower.startsWith("oscillating");
+  // the box: the cam turning (a disc of its largest radius), the pitch
+  // points' circle, the pivot with the arm or face around it, the stem
+  let ext = 0;
+  c.working_x.forEach((x, k) => (ext = Math.max(ext, Math.hypot(x, c.working_y[k]))));
+  c.pitch_x.forEach((x, k) => (ext = Math.max(ext, Math.hypot(x, c.pitch_y[k]) + (c.roller_radius || 0))));
+  let [x0, x1, y0, y1] = [-ext, ext, -ext, ext];
+  const top = ext * 1.35;
+  if (osc && c.pivot) {
+    const reach = Math.max(c.arm || 0, (c.face_contact_max || 0) + (c.face_margin || 0)) + (c.roller_radius || 0);
+    x0 = Math.min(x0, c.pivot[0] - reach); x1 = Math.max(x1, c.pivot[0] + reach);
+    y0 = Math.min(y0, c.pivot[1] - reach); y1 = Math.max(y1, c.pivot[1] + reach);
+  } else y1 = Math.max(y1, top);
+  const pad = 12 * (window.devicePixelRatio || 1);
+  const sc = Math.min((cv.width - 2 * pad) / (x1 - x0), (cv.height - 2 * pad) / (y1 - y0));
+  const cx = (cv.width - sc * (x1 - x0)) / 2 - sc * x0, cy = (cv.height + sc * (y1 - y0)) / 2 + sc * y0;
+  const to = ([x, y]) => [cx + sc * x, cy - sc * y];
+  const dpr = window.devicePixelRatio || 1;
+  g.beginPath(); c.working_x.forEach((x, k) => { const [u, v] = to(R(x, c.working_y[k])); k ? g.lineTo(u, v) : g.moveTo(u, v); });
+  g.closePath(); g.fillStyle = "#dfe8f5"; g.fill(); g.strokeStyle = "#1f4e9c"; g.lineWidth = 2 * dpr; g.stroke();
+  g.beginPath(); g.arc(cx, cy, 4 * dpr, 0, 2 * Math.PI); g.fillStyle = "#000"; g.fill();
+  const P = R(c.pitch_x[i], c.pitch_y[i]), [pu, pv] = to(P);
+  g.strokeStyle = "#000"; g.lineWidth = 3 * dpr; g.lineCap = "round";
+  const line = (a, b) => { const [u1, v1] = to(a), [u2, v2] = to(b); g.beginPath(); g.moveTo(u1, v1); g.lineTo(u2, v2); g.stroke(); };
+  if (follower === "translating-flat") {
+    const m = c.face_margin || 0;
+    line([P[0] + (c.face_contact_min ?? -0.5 * c.face_width) - m, P[1]], [P[0] + (c.face_contact_max ?? 0.5 * c.face_width) + m, P[1]]);
+    line(P, [P[0], top]);
+  } else if (follower.startsWith("translating")) {
+    line(P, [P[0], top]);
+    g.lineWidth = 1.5 * dpr; g.beginPath(); g.arc(pu, pv, Math.max(2, sc * (c.roller_radius || 0)), 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.stroke();
+  } else if (follower === "oscillating-roller") {
+    line(c.pivot, P);
+    g.lineWidth = 1.5 * dpr; g.beginPath(); g.arc(pu, pv, Math.max(2, sc * (c.roller_radius || 0)), 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.stroke();
+  } else {
+    // oscillating flat: the face from the pivot through the contact point
+    const dx = P[0] - c.pivot[0], dy = P[1] - c.pivot[1], L = Math.hypot(dx, dy) || 1, len = (c.face_contact_max ?? L) + (c.face_margin || 0);
+    line(c.pivot, [c.pivot[0] + (dx / L) * len, c.pivot[1] + (dy / L) * len]);
+  }
+  if (c.pivot) { const [au, av] = to(c.pivot); g.lineWidth = 1.5 * dpr; g.beginPath(); g.arc(au, av, 5 * dpr, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.stroke(); }
+  const phiDeg = ((c.phi[i] * 180) / Math.PI).toFixed(1);
+  $("cam-angle").textContent = osc ? W("cam_oscillating", phiDeg, ((c.s[i] * 180) / Math.PI).toFixed(2)) : W("cam_translating", phiDeg, (c.s[i] * 1000).toFixed(2));
+  $("cam-angle").dataset.index = i;
 }
 function camLoop() { if (!state.camPlaying) return; state.camIndex += 2; drawCam(); requestAnimationFrame(camLoop); }
-$("cam-play").onclick = () => { state.camPlaying = !state.camPlaying; $("cam-play").textContent = state.camPlaying ? "❚❚ Pause" : "▶ Play"; if (state.camPlaying) requestAnimationFrame(camLoop); };
+$("cam-play").onclick = () => { state.camPlaying = !state.camPlaying; $("cam-play").textContent = W(state.camPlaying ? "pause" : "play"); if (state.camPlaying) requestAnimationFrame(camLoop); };
+$("cam-slider").addEventListener("input", () => { state.camIndex = +$("cam-slider").value; drawCam(); });
 
-// ---------- start ----------
-document.querySelectorAll("#tabs button").forEach((b) => (b.onclick = () => {
-  document.querySelectorAll("#tabs button, .view").forEach((x) => x.classList.remove("active"));
-  b.classList.add("active"); $("view-" + b.dataset.view).classList.add("active");
+// ---------- tabs (arrow keys move between them) ----------
+function selectTab(b, focus) {
+  document.querySelectorAll("#tabs button").forEach((x) => { x.classList.remove("active"); x.setAttribute("aria-selected", "false"); x.tabIndex = -1; });
+  document.querySelectorAll(".view").forEach((x) => x.classList.remove("active"));
+  b.classList.add("active"); b.setAttribute("aria-selected", "true"); b.tabIndex = 0;
+  if (focus) b.focus();
+  $("view-" + b.dataset.view).classList.add("active");
   render(b.dataset.view);
   if (b.dataset.view === "diagrams" && state.frames) moveCursors(cursorPsi());
-}));
+}
+const tabs = [...document.querySelectorAll("#tabs button")];
+tabs.forEach((b, k) => {
+  b.onclick = () => selectTab(b);
+  b.onkeydown = (e) => {
+    const to = { ArrowRight: k + 1, ArrowLeft: k - 1, Home: 0, End: tabs.length - 1 }[e.key];
+    if (to !== undefined) { e.preventDefault(); selectTab(tabs[(to + tabs.length) % tabs.length], true); }
+  };
+});
+
+// ---------- start ----------
+// The module is fetched with a progress bar (a slow link takes seconds);
+// the editor takes typing meanwhile, and what was typed is kept.
+async function loadModule() {
+  const url = new URL("tmm_web_bg.wasm", import.meta.url);
+  const res = await fetch(url);
+  const total = +res.headers.get("content-length") || 0;
+  if (!res.body || !total) return init({ module_or_path: res });
+  const reader = res.body.getReader(), chunks = []; let got = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    chunks.push(value); got += value.length;
+    $("loading-bar").value = got / total;
+    $("loading-bytes").textContent = `${(got / 1e6).toFixed(1)} / ${(total / 1e6).toFixed(1)} MB`;
+  }
+  const bytes = new Uint8Array(got); let o = 0; for (const c of chunks) { bytes.set(c, o); o += c.length; }
+  return init({ module_or_path: bytes });
+}
 async function main() {
-  await init();
+  const params = hashParams();
+  if (["ru", "uk", "en"].includes(params.get("lang"))) $("lang").value = params.get("lang");
+  $("editor").addEventListener("input", () => {
+    gutter(0); undoButtons();
+    if (!state.ready) return;
+    clearTimeout(recordTimer); recordTimer = setTimeout(() => { record(); undoButtons(); }, 600);
+    keepTask($("editor").value);
+    scheduleAnalyse();
+  });
+  $("editor").addEventListener("scroll", () => ($("gutter").scrollTop = $("editor").scrollTop));
+  $("editor").addEventListener("keydown", (e) => {
+    const k = e.key.toLowerCase();
+    if ((e.ctrlKey || e.metaKey) && (k === "z" || k === "y")) { e.preventDefault(); (k === "y" || e.shiftKey ? redo : undo)(); }
+  });
+  await loadModule();
+  $("loading").hidden = true;
+  window.tmmWords = (l) => tmm.words(l); // read by the browser test
   const examples = JSON.parse(tmm.examples());
   const sel = $("task-select");
   sel.add(new Option("default course project", ""));
   for (const e of examples) sel.add(new Option(e.name, e.name));
+  let shownExample = "";
   sel.onchange = () => {
     const e = examples.find((x) => x.name === sel.value);
+    const edited = $("editor").value !== state.original;
+    if (edited && !confirm(W("replace_confirm", e ? e.name : W("default_task")))) { sel.value = shownExample; return; }
+    shownExample = sel.value;
     state.name = e ? e.name : "task.toml";
-    $("editor").value = e ? e.text : tmm.default_task();
-    analyse();
+    setEditor(e ? e.text : tmm.default_task(), { original: e ? e.text : tmm.default_task() });
   };
-  const m = location.hash.match(/task=([A-Za-z0-9_-]+)/);
-  $("editor").value = m ? await unpackTask(m[1]).catch(() => tmm.default_task()) : tmm.default_task();
-  $("editor").addEventListener("input", () => { gutter(0); scheduleAnalyse(); });
-  $("editor").addEventListener("scroll", () => ($("gutter").scrollTop = $("editor").scrollTop));
-  $("lang").onchange = analyse;
+  $("lang").onchange = () => { keepLang(); state.wordsLang = null; analyse(); };
   $("save").onclick = () => download(state.name, $("editor").value, "text/plain");
-  $("load").onchange = async (e) => { const f = e.target.files[0]; if (!f) return; state.name = f.name; $("editor").value = await f.text(); analyse(); };
-  analyse();
+  $("load-btn").onclick = () => $("load").click();
+  $("load").onchange = async (e) => { const f = e.target.files[0]; if (!f) return; state.name = f.name; const t = await f.text(); setEditor(t, { original: t }); e.target.value = ""; };
+  $("undo").onclick = undo; $("redo").onclick = redo;
+  // the text: typed while loading, else the link's, else the one kept in
+  // the browser, else the default task
+  const typed = $("editor").value;
+  let kept = null;
+  try { kept = JSON.parse(localStorage.getItem("tmm-task") || "null"); } catch { kept = null; }
+  let text, note = "";
+  if (typed.trim()) { text = typed; state.original = ""; }
+  else if (params.get("task")) { text = await unpackTask(params.get("task")).catch(() => tmm.default_task()); state.original = text; }
+  else if (kept && typeof kept.text === "string") { text = kept.text; state.name = kept.name || "task.toml"; state.original = kept.original ?? kept.text; note = "restored"; }
+  else { text = tmm.default_task(); state.original = text; }
+  $("editor").value = text;
+  record(text);
   state.ready = true;
+  analyse();
+  if (note && state.reply) $("status").textContent += " · " + W(note);
   document.body.dataset.ready = "1";
 }
 main();

@@ -14,6 +14,11 @@ use tmm_linkage::mechanism::Pair;
 use crate::page::Page;
 use crate::reply;
 
+/// A guide's line at one frame: a point of it, its unit direction (both in
+/// the frame of the machine, m) and the slider's place along it from that
+/// point, m.
+type GuidePose = ([f64; 2], [f64; 2], f64);
+
 /// The links drawn as segments between their turning joints, as pairs of
 /// point indices (a link with more than three joints is drawn as a chain).
 fn link_segments(m: &tmm_linkage::Mechanism) -> Vec<(usize, usize)> {
@@ -40,7 +45,10 @@ fn link_segments(m: &tmm_linkage::Mechanism) -> Vec<(usize, usize)> {
 /// The mechanism at `n` crank angles equally spaced over one revolution from
 /// the start of the working stroke, in the direction of rotation:
 /// `{"names", "segments", "pivot", "pin", "start", "direction", "phi": [n],
-/// "xy": [n][points][2]}` (m, rad). `{"none": true}` without a linkage.
+/// "xy": [n][points][2], "sliders": [{"point", "angle": [n]}], "guides":
+/// [{"fixed": true, "from", "to"} | {"fixed": false, "frames": [n][2][2]}]}`
+/// (m, rad; a guide spans its slider's travel and a fifth more at each end).
+/// `{"none": true}` without a linkage.
 pub fn frames(p: &Page, n: usize) -> String {
     let n = n.clamp(2, 3600);
     let Some(loaded) = &p.linkage else {
@@ -55,6 +63,9 @@ pub fn frames(p: &Page, n: usize) -> String {
     let mut sol = m.solution();
     let mut phis = Vec::with_capacity(n);
     let mut xy = Vec::with_capacity(n);
+    // per prismatic pair: the guide's pose and the slider's place along it
+    let prismatic: Vec<&Pair> = m.pairs.iter().filter(|p| matches!(p, Pair::P { .. })).collect();
+    let mut guide_poses: Vec<Vec<GuidePose>> = vec![Vec::with_capacity(n); prismatic.len()];
     for k in 0..n {
         let phi = tmm_geom::angle::wrap_2pi(cycle.start + sg * TAU * k as f64 / n as f64);
         if let Err(e) = m.solve(phi, &mut sol) {
@@ -62,7 +73,44 @@ pub fn frames(p: &Page, n: usize) -> String {
         }
         phis.push(phi);
         let pts: Vec<[f64; 2]> = sol.points.iter().map(|s| [s.p.x, s.p.y]).collect();
+        for (pp, poses) in prismatic.iter().zip(guide_poses.iter_mut()) {
+            if let Pair::P { guide, q, d, point, .. } = **pp {
+                let l = &sol.links[guide];
+                let rot = |v: tmm_geom::Vec2| [l.u.x * v.x - l.u.y * v.y, l.u.y * v.x + l.u.x * v.y];
+                let (qg, dg) = (rot(q), rot(d));
+                let qg = [l.o.x + qg[0], l.o.y + qg[1]];
+                let pt = pts[point];
+                let t = (pt[0] - qg[0]) * dg[0] + (pt[1] - qg[1]) * dg[1];
+                poses.push((qg, dg, t));
+            }
+        }
         xy.push(pts);
+    }
+    // the guides: a line along each prismatic pair over the slider's travel
+    // (a fifth longer at each end), fixed or carried by its link
+    let mut sliders = Vec::new();
+    let mut guides = Vec::new();
+    for (pp, poses) in prismatic.iter().zip(&guide_poses) {
+        let Pair::P { guide, point, .. } = **pp else { continue };
+        let (lo, hi) = poses
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.2), b.max(p.2)));
+        let pad = 0.2 * (hi - lo).max(0.02);
+        let seg = |(q, d, _): &GuidePose| {
+            [
+                [q[0] + d[0] * (lo - pad), q[1] + d[1] * (lo - pad)],
+                [q[0] + d[0] * (hi + pad), q[1] + d[1] * (hi + pad)],
+            ]
+        };
+        let angles: Vec<f64> = poses.iter().map(|(_, d, _)| d[1].atan2(d[0])).collect();
+        sliders.push(json!({ "point": point, "angle": angles }));
+        if guide == 0 {
+            let [a, b] = seg(&poses[0]);
+            guides.push(json!({ "fixed": true, "from": a, "to": b }));
+        } else {
+            let fr: Vec<[[f64; 2]; 2]> = poses.iter().map(seg).collect();
+            guides.push(json!({ "fixed": false, "frames": fr }));
+        }
     }
     let names: Vec<&str> = m.points.iter().map(|q| q.name.as_str()).collect();
     let segs: Vec<[usize; 2]> = link_segments(m).into_iter().map(|(a, b)| [a, b]).collect();
@@ -76,6 +124,8 @@ pub fn frames(p: &Page, n: usize) -> String {
         "direction": sg,
         "phi": phis,
         "xy": xy,
+        "sliders": sliders,
+        "guides": guides,
     })
     .to_string()
 }

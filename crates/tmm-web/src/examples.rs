@@ -13,6 +13,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         include_str!("../../../examples/cam-seed-001-roller.toml"),
     ),
     ("class3-triad.toml", include_str!("../../../examples/class3-triad.toml")),
+    (
+        "compressor-two-stage.toml",
+        include_str!("../../../examples/compressor-two-stage.toml"),
+    ),
     ("crank-slider-axial.toml", include_str!("../../../examples/crank-slider-axial.toml")),
     (
         "crank-slider-offset.toml",
@@ -45,6 +49,10 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     (
         "synth-seed-002-ex1-crank-rocker.toml",
         include_str!("../../../examples/synth-seed-002-ex1-crank-rocker.toml"),
+    ),
+    (
+        "synth-seed-002-ex2-knee-press-bell-crank.toml",
+        include_str!("../../../examples/synth-seed-002-ex2-knee-press-bell-crank.toml"),
     ),
     (
         "synth-seed-002-ex2-knee-press.toml",

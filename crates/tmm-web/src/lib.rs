@@ -13,17 +13,21 @@
 //! | [`frames`] | the mechanism over the cycle for the animation and traced paths |
 //! | [`at_angle`] | the plans, forces and Zhukovsky's lever at one crank angle |
 //! | [`plan_vectors`] | the plans' vectors at one crank angle, for a frame of the animation |
-//! | [`gear_contour`], [`gear_at`] | the blocking contour's axes; the pair at a picked (x1, x2) |
+//! | [`gear_contour`], [`gear_at`], [`gear_write`] | the blocking contour's axes and the nodes where every check passes; the pair at a picked (x1, x2); the pick written into the task |
+//! | [`drag`] | the task with a dragged point's coordinates or its links' lengths changed |
+//! | [`words`] | the page's own words in Russian, Ukrainian or English |
 //!
 //! The state between calls is the last successful run ([`page::Page`]); the
 //! logic lives in plain Rust modules that the native tests exercise, and the
 //! exports below only hold that state.
 
 pub mod angle;
+pub mod drag;
 pub mod examples;
 pub mod gear_pick;
 pub mod page;
 pub mod reply;
+pub mod ui_words;
 
 use std::cell::RefCell;
 
@@ -117,6 +121,34 @@ pub fn gear_contour() -> String {
 #[wasm_bindgen]
 pub fn gear_at(x1: f64, x2: f64) -> String {
     with_page(|p| gear_pick::gear_at(p, x1, x2))
+}
+
+/// The task `text` with the picked shifts written into its `[gear]`
+/// section, as JSON `{"ok", "text"}` (see [`gear_pick::write_shifts`]).
+#[wasm_bindgen]
+pub fn gear_write(text: &str, x1: f64, x2: f64) -> String {
+    match gear_pick::write_shifts(text, x1, x2) {
+        Ok(t) => serde_json::json!({ "ok": true, "text": t }).to_string(),
+        Err(m) => reply::error_json(&m, None, None),
+    }
+}
+
+/// The task `text` after the mechanism's point `point` is dragged to
+/// `(x, y)` (m) with the crank at `phi` (rad), as JSON `{"ok", "text"}` or
+/// the reason it cannot be (see [`drag::drag`]).
+#[wasm_bindgen]
+pub fn drag(text: &str, point: &str, x: f64, y: f64, phi: f64) -> String {
+    with_page(|p| match drag::drag(p, text, point, x, y, phi) {
+        Ok(t) => serde_json::json!({ "ok": true, "text": t }).to_string(),
+        Err(m) => reply::error_json(&m, None, None),
+    })
+}
+
+/// The page's own words in `lang` (`ru`, `uk`, `en`; anything else:
+/// English), as JSON (see [`ui_words::json`]).
+#[wasm_bindgen]
+pub fn words(lang: &str) -> String {
+    ui_words::json(lang)
 }
 
 fn with_page(f: impl FnOnce(&page::Page) -> String) -> String {

@@ -275,7 +275,8 @@ fn single(d: &Document) -> Documents {
 }
 
 /// Run the task and build the page's reply: on success
-/// `{"ok": true, "report", "sections": [{"section", "text"}], "rerun": [names]}`
+/// `{"ok": true, "report", "sections": [{"section", "text"}], "rerun": [names],
+/// "lang": the drawings' language code}`
 /// and the new state; on failure the located error (see
 /// [`reply::from_error`]) and no state. The files of a section are listed
 /// by [`Page::files`].
@@ -300,7 +301,7 @@ pub fn analyse_reply_after(prev: Option<&Page>, name: &str, text: &str, lang: &s
                 .sections()
                 .map(|(_, s)| json!({ "section": s.output.section, "text": s.output.text }))
                 .collect();
-            let rest = json!({ "sections": sections, "rerun": p.rerun }).to_string();
+            let rest = json!({ "sections": sections, "rerun": p.rerun, "lang": p.task.lang.code() }).to_string();
             // the report goes in as the text kept per section
             let v = format!("{{\"ok\":true,\"report\":{},{}", p.report_text(), &rest[1..]);
             (v, Some(p))

@@ -244,3 +244,179 @@ fn the_frames_plan_vectors_are_the_velocities() {
     }
     assert_eq!(parse(&tmm_web::angle::plan_vectors(&p, f64::INFINITY))["ok"], false);
 }
+
+/// The linear fit `a + b·t` of the pairs `(t, value)`.
+fn line_fit(p: &[(f64, f64)]) -> (f64, f64) {
+    let n = p.len() as f64;
+    let (mx, my) = (p.iter().map(|q| q.0).sum::<f64>() / n, p.iter().map(|q| q.1).sum::<f64>() / n);
+    let b = p.iter().map(|q| (q.0 - mx) * (q.1 - my)).sum::<f64>() / p.iter().map(|q| (q.0 - mx).powi(2)).sum::<f64>();
+    (my - b * mx, b)
+}
+
+/// The attribute `name` of an SVG element's text.
+fn attr(el: &str, name: &str) -> Option<f64> {
+    let k = el.find(&format!(" {name}=\""))? + name.len() + 3;
+    el[k..].split('"').next()?.parse().ok()
+}
+
+#[test]
+fn the_contour_axes_are_those_of_the_drawing() {
+    // The drawing's own axes: its grey grid lines and the numbers written
+    // at them, fitted by least squares, for every sheet format.
+    for sheet in ["A1", "A2"] {
+        let text = DEFAULT_TASK.replace("sheet = \"A1\"", &format!("sheet = \"{sheet}\""));
+        let p = Page::new("t.toml", &text, None).unwrap();
+        let svg = p.file("gear/contour.svg").unwrap().as_text().unwrap().to_string();
+        let lines: Vec<&str> = svg.split("<line").skip(1).filter(|l| l.contains("#bbbbbb")).collect();
+        let vx: Vec<f64> = lines
+            .iter()
+            .filter(|l| attr(l, "x1") == attr(l, "x2"))
+            .filter_map(|l| attr(l, "x1"))
+            .collect();
+        let hy: Vec<f64> = lines
+            .iter()
+            .filter(|l| attr(l, "y1") == attr(l, "y2"))
+            .filter_map(|l| attr(l, "y1"))
+            .collect();
+        let near = |a: &[f64], v: f64| {
+            a.iter()
+                .copied()
+                .fold(f64::INFINITY, |b, x| if (x - v).abs() < (b - v).abs() { x } else { b })
+        };
+        let (bottom, left) = (
+            hy.iter().copied().fold(f64::MIN, f64::max),
+            vx.iter().copied().fold(f64::MAX, f64::min),
+        );
+        let (mut xs, mut ys) = (Vec::new(), Vec::new());
+        for t in svg.split("<text ").skip(1) {
+            let Some(body) = t
+                .split("<tspan")
+                .nth(1)
+                .and_then(|s| s.split('>').nth(1))
+                .and_then(|s| s.split('<').next())
+            else {
+                continue;
+            };
+            let Ok(v) = body.replace(',', ".").parse::<f64>() else { continue };
+            let (x, y) = (attr(t, "x").unwrap(), attr(t, "y").unwrap());
+            // x1 under the plot, from its left edge on; x2 left of the plot
+            if y > bottom && x >= left - 0.5 {
+                xs.push((v, near(&vx, x)));
+            } else if x < left - 0.5 && y <= bottom + 2.0 {
+                ys.push((v, near(&hy, y)));
+            }
+        }
+        assert!(xs.len() >= 4 && ys.len() >= 4, "{sheet}: {} and {} ticks", xs.len(), ys.len());
+        let (ax, bx) = line_fit(&xs);
+        let (ay, by) = line_fit(&ys);
+        let a = tmm_web::gear_pick::axes(&p.task).unwrap().unwrap();
+        assert!(
+            (a.origin.0 - ax).abs() < 2e-3 && (a.origin.1 - ay).abs() < 2e-3,
+            "{sheet}: origin {:?}, drawing ({ax}, {ay})",
+            a.origin
+        );
+        assert!(
+            (a.scale - bx).abs() < 1e-3 * bx && (a.scale + by).abs() < 1e-3 * bx,
+            "{sheet}: scale {}, drawing {bx}, {by}",
+            a.scale
+        );
+    }
+}
+
+#[test]
+fn the_nodes_marked_passing_pass_every_check() {
+    let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
+    let a = tmm_web::gear_pick::axes(&p.task).unwrap().unwrap();
+    let n = a.n;
+    let node = |i: usize, j: usize| {
+        (
+            a.x1.0 + (a.x1.1 - a.x1.0) * i as f64 / (n - 1) as f64,
+            a.x2.0 + (a.x2.1 - a.x2.0) * j as f64 / (n - 1) as f64,
+        )
+    };
+    assert!(a.passes.iter().filter(|&&b| b).count() > 10);
+    // a sample of nodes of both kinds, run as whole tasks with those shifts
+    let mut seen = [0, 0];
+    for k in (0..n * n).step_by(997) {
+        let (i, j) = (k % n, k / n);
+        if !a.feasible[k] {
+            continue;
+        }
+        let (x1, x2) = node(i, j);
+        let v = parse(&tmm_web::gear_pick::gear_at(&p, x1, x2));
+        let all = v["ok"] == true && v["gear"]["all_checks_pass"] == true;
+        assert_eq!(a.passes[k], all, "node ({x1}, {x2}): {v}");
+        seen[usize::from(all)] += 1;
+    }
+    assert!(seen[0] > 0 && seen[1] > 0, "{seen:?}");
+    // the task's own pair passes every check (its report says so)
+    let (i, j) = (
+        ((0.2 - a.x1.0) / (a.x1.1 - a.x1.0) * (n - 1) as f64).round() as usize,
+        ((0.85 - a.x2.0) / (a.x2.1 - a.x2.0) * (n - 1) as f64).round() as usize,
+    );
+    assert!(a.feasible[j * n + i]);
+}
+
+#[test]
+fn a_written_pick_runs_as_those_shifts() {
+    let t = tmm_web::gear_pick::write_shifts(DEFAULT_TASK, 0.3, 0.6999999).unwrap();
+    assert!(t.contains("\nx1 = 0.3\nx2 = 0.7\n"));
+    assert_eq!(t.matches("\nx1 =").count(), 1);
+    let p = Page::new("t.toml", &t, None).unwrap();
+    let g = &p.report()["gear"];
+    assert_eq!((g["x1"].as_f64(), g["x2"].as_f64()), (Some(0.3), Some(0.7)));
+    // every other line kept
+    let kept = |s: &str| {
+        s.lines()
+            .filter(|l| !l.starts_with("x1 =") && !l.starts_with("x2 ="))
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(kept(&t), kept(DEFAULT_TASK));
+    assert!(tmm_web::gear_pick::write_shifts("[cam]\n", 0.1, 0.1).is_err());
+}
+
+#[test]
+fn dragging_a_joint_sets_its_links_to_the_distances() {
+    let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
+    let phi = 0.7f64;
+    // the crank pin of the default four-bar in closed form: A = (0, 0), AB = 120 mm
+    let b = (0.12 * phi.cos(), 0.12 * phi.sin());
+    let (x, y) = (0.30, -0.25);
+    let t = tmm_web::drag::drag(&p, DEFAULT_TASK, "C", x, y, phi).unwrap();
+    let bc = ((x - b.0).hypot(y - b.1) * 1000.0).round();
+    let dc = ((x - 0.51f64).hypot(y) * 1000.0).round();
+    assert!(t.contains(&format!("length = \"{bc} mm\"")), "BC {bc}");
+    assert!(t.contains(&format!("length = \"{dc} mm\"")), "DC {dc}");
+    assert!(t.contains("length = \"120 mm\""));
+    assert!(t.contains("assembly = [\"C below AD\"]"));
+    // a fixed point moves, rounded to whole millimetres
+    let t = tmm_web::drag::drag(&p, DEFAULT_TASK, "D", 0.5004, -0.0206, phi).unwrap();
+    assert!(t.contains("D = [\"500 mm\", \"-21 mm\"]"), "{}", &t[..400]);
+    // a text other than the page's is refused, as are non-finite places
+    assert!(tmm_web::drag::drag(&p, "[linkage]\n", "C", x, y, phi).is_err());
+    assert!(tmm_web::drag::drag(&p, DEFAULT_TASK, "C", f64::NAN, y, phi).is_err());
+}
+
+#[test]
+fn every_word_the_page_asks_for_is_in_every_language() {
+    let js = include_str!("../../../web/app.js");
+    let html = include_str!("../../../web/index.html");
+    let mut asked: Vec<String> = Vec::new();
+    for (src, pat) in [(js, "W(\""), (html, "data-w=\""), (html, "data-w-aria=\"")] {
+        for part in src.split(pat).skip(1) {
+            asked.push(part.split('"').next().unwrap().to_string());
+        }
+    }
+    for part in js.split("[\"k_").skip(1) {
+        asked.push(format!("k_{}", part.split('"').next().unwrap()));
+    }
+    asked.retain(|k| !k.ends_with('_'));
+    assert!(asked.len() > 40, "{}", asked.len());
+    for lang in ["ru", "uk", "en"] {
+        let v = parse(&tmm_web::ui_words::json(lang));
+        for k in &asked {
+            assert!(v["words"][k].is_string(), "{lang}: no word {k}");
+        }
+    }
+}

@@ -56,6 +56,33 @@ fn line_name(b: &Boundary, lang: Language) -> String {
     }
 }
 
+/// The paper of the contour drawing for `sheet` with the contour's
+/// (x1, x2) box fitted into its plot area: the map from (x1, x2) to the
+/// drawing's coordinates (mm, y down) is `canvas.to_paper(x1, x2)`. The
+/// drawing of [`contour_svg`] is made on this canvas, so a click on the
+/// drawing maps back through the same numbers.
+///
+/// ```
+/// use tmm_gears::{PairSpec, contour::{blocking_contour, ContourOptions}};
+/// use tmm_report::{gear::contour_plot::plot_canvas, project::SheetFormat};
+/// let c = blocking_contour(&PairSpec::external(15, 20, 0.005, 0.0, 0.0), &ContourOptions::default()).unwrap();
+/// let cv = plot_canvas(&c, SheetFormat::A1);
+/// let (a, b) = (cv.to_paper(c.x1.0, c.x2.0), cv.to_paper(c.x1.1, c.x2.1));
+/// assert!(a.0 < b.0 && a.1 > b.1); // x1 to the right, x2 up
+/// ```
+pub fn plot_canvas(c: &Contour, sheet: SheetFormat) -> Canvas {
+    let (pw, ph) = slot_mm(Slot::Small, sheet);
+    let h = if pw >= 190.0 { 3.5 } else { 2.5 };
+    let hs = 2.5;
+    let mut cv = Canvas::new(pw, ph);
+    let legend_w = 0.34 * pw;
+    let (left, bottom) = (10.0 + 2.0 * hs, 6.0 + 2.5 * h);
+    let (aw, ah) = (pw - legend_w - left - 4.0, ph - bottom - 4.0 - 2.0 * h);
+    let world = (c.x1.0, c.x1.1, c.x2.0, c.x2.1);
+    cv.fit(world, (left, bottom, aw, ah));
+    cv
+}
+
 /// The contour as SVG for the Small slot of `sheet`; `chosen` marks a point
 /// with its label (the label is written in English drawings only; the
 /// shifts are written in every language).
@@ -63,13 +90,9 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
     let (pw, ph) = slot_mm(Slot::Small, sheet);
     let h = if pw >= 190.0 { 3.5 } else { 2.5 };
     let hs = 2.5;
-    let mut cv = Canvas::new(pw, ph);
+    let mut cv = plot_canvas(c, sheet);
     let mut lab = Placer::new(pw, ph);
     let legend_w = 0.34 * pw;
-    let (left, bottom) = (10.0 + 2.0 * hs, 6.0 + 2.5 * h);
-    let (aw, ah) = (pw - legend_w - left - 4.0, ph - bottom - 4.0 - 2.0 * h);
-    let world = (c.x1.0, c.x1.1, c.x2.0, c.x2.1);
-    cv.fit(world, (left, bottom, aw, ah));
     lab.put_left(
         (2.0, 1.0 + 0.6 * h),
         &format!("{}: z_1 = {}, z_2 = {}", word(lang, "gear.contour_title"), c.base.z1, c.base.z2),
