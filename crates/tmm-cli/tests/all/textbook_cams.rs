@@ -16,7 +16,11 @@ fn tmp(name: &str) -> PathBuf {
 
 /// `tmm run FILE --no-pdf --json` and the tables of `tmm run FILE --no-pdf`.
 fn run_example(file: &str) -> (serde_json::Value, String) {
-    let d = tmp(file);
+    // a folder of its own for each call: several tests run the same example
+    // at once
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let d = tmp(&format!("{file}-{n}"));
     let f = common::repo().join("examples/textbook").join(file);
     let out = d.join("out");
     let (code, stdout, err) = run(&["run", "--no-pdf", f.to_str().unwrap(), "-o", out.to_str().unwrap(), "--json"]);
