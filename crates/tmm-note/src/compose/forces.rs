@@ -104,6 +104,39 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             results.push(f);
         }
     }
+    // the reactions over the cycle the task asked to draw (П3: R50, M50, R54; the hodographs of R21)
+    if let Some(rc) = fo.get("reaction_cycle") {
+        let names = |k: &str| -> Vec<String> {
+            rc.get(k)
+                .and_then(Value::as_array)
+                .map(|v| v.iter().filter_map(|x| x.as_str().map(str::to_string)).collect())
+                .unwrap_or_default()
+        };
+        let mut figs: Vec<(String, &str, String)> = Vec::new();
+        for n in names("diagrams") {
+            figs.push((format!("forces/reaction-{n}.svg"), "fig_reaction_cycle", n));
+        }
+        for n in names("hodographs") {
+            figs.push((format!("forces/hodograph-{n}.svg"), "fig_hodograph", n.clone()));
+            figs.push((format!("forces/hodograph-{n}-polar.svg"), "fig_hodograph_polar", n));
+        }
+        for (path, key, name) in figs {
+            if let Some(Block::Figure {
+                caption,
+                svg,
+                width_mm,
+                label,
+            }) = cx.figure(&path, key)?
+            {
+                results.push(Block::Figure {
+                    caption: format!("{caption} {name}"),
+                    svg,
+                    width_mm,
+                    label,
+                });
+            }
+        }
+    }
     let strength = fo.get("strength").filter(|s| !s.is_null());
     if strength.is_some() {
         results.push(cx.quantities(

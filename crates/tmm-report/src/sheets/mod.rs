@@ -82,6 +82,8 @@ const TEMPLATES: [Template; 4] = [
             "!dynamics/stroke-moments",
             "!dynamics/stroke-omega",
             "!dynamics/stroke-time",
+            "!forces/hodograph-*",
+            "forces/reaction-*",
             "dynamics/epsilon",
             "dynamics/stroke-epsilon",
             "dynamics/energy-constant",
@@ -179,6 +181,25 @@ pub fn caption(path: &str, lang: Language) -> String {
         if word(lang, &k) != k {
             return format!("{} {n}", word(lang, &k));
         }
+    }
+    // the reactions over the cycle, named by the reaction they draw
+    if let Some(r) = stem.strip_prefix("forces/hodograph-") {
+        return match r.strip_suffix("-polar") {
+            Some(r) => format!(
+                "{} {r} ({})",
+                word(lang, "forces.hodograph_title"),
+                word(lang, "forces.hodograph_polar")
+            ),
+            None => format!("{} {r}", word(lang, "forces.hodograph_title")),
+        };
+    }
+    if let Some(r) = stem.strip_prefix("forces/reaction-") {
+        let title = if r.starts_with('M') {
+            "forces.couple_title"
+        } else {
+            "forces.reaction_title"
+        };
+        return format!("{}: {r}", word(lang, title));
     }
     let name = stem.rsplit('/').next().unwrap_or(stem);
     format!("{} «{name}»", word(lang, "sheet.figure"))
