@@ -557,3 +557,19 @@ fn bad_shaper_input_is_refused_and_located() {
         "motor_speed",
     );
 }
+
+/// The assumptions say that friction is neglected only where the task gives
+/// none: П3's friction on the ram's guide is taken, the four-bar's pairs
+/// have no friction at all.
+#[test]
+fn the_assumptions_name_the_given_friction() {
+    let assumptions = |file: &str| {
+        let o = crate::common::tmm_in(&crate::common::repo(), &["forces", file, "--json"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        crate::common::json(&o)["assumptions"].as_str().unwrap().to_string()
+    };
+    let p3 = assumptions("examples/textbook/p3-shaper.toml");
+    assert!(p3.contains("the given sliding friction on the guides taken"), "{p3}");
+    let fourbar = assumptions("examples/seed-001-fourbar.toml");
+    assert!(fourbar.contains("friction neglected (seed 000"), "{fourbar}");
+}

@@ -100,10 +100,18 @@ pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
     let max_diff = a.curve.iter().map(|c| rel(c[2], c[3])).fold(0.0, f64::max);
     let mut doc = json!({
         "units": "SI",
-        "assumptions": match t.crank_motion {
-            super::CrankMotion::Constant => "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); crank speed ω1 constant as given",
-            super::CrankMotion::Dynamics => "rigid links, one-DOF pairs without clearances, friction neglected (seed 000, assumptions 1.1–1.4); the crank moves with its true ω1(φ), ε1(φ) from [dynamics]",
-        },
+        "assumptions": format!(
+            "rigid links, one-DOF pairs without clearances, {} (seed 000, assumptions 1.1–1.4); {}",
+            if super::text::has_friction(t) {
+                "friction neglected in the pairs, the given sliding friction on the guides taken"
+            } else {
+                "friction neglected"
+            },
+            match t.crank_motion {
+                super::CrankMotion::Constant => "crank speed ω1 constant as given",
+                super::CrankMotion::Dynamics => "the crank moves with its true ω1(φ), ε1(φ) from [dynamics]",
+            }
+        ),
         "structure": m.structure.formula,
         "gravity": [num(t.loads.gravity.x), num(t.loads.gravity.y)],
         "omega1": num(m.crank.omega),

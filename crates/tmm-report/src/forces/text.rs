@@ -197,23 +197,38 @@ fn position(out: &mut String, l: &Loaded, r: &Row) {
     );
 }
 
+/// Whether the task gives a sliding friction force on a slider
+/// (`[[forces.friction]]`): the assumptions then say that friction is
+/// neglected only in the pairs, not everywhere.
+pub(crate) fn has_friction(t: &ForcesTask) -> bool {
+    t.loads
+        .sliders
+        .iter()
+        .any(|s| matches!(s.kind, tmm_linkage::forces::SliderLoadKind::Friction { .. }))
+}
+
 /// The report.
 pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
     let m = &l.mech;
     let mut out = String::new();
     let _ = writeln!(out, "Kinetostatics (force analysis) — {}", m.structure.formula);
+    let friction = if has_friction(t) {
+        "Friction neglected in the pairs, the given sliding friction on the guides taken"
+    } else {
+        "Friction neglected"
+    };
     match t.crank_motion {
         super::CrankMotion::Constant => {
             let _ = writeln!(
                 out,
-                "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.",
+                "{friction}; rigid links, no clearances (seed 000, assumptions 1.1–1.4). ω1 = {:.4} rad/s constant.",
                 m.crank.omega
             );
         }
         super::CrankMotion::Dynamics => {
             let _ = writeln!(
                 out,
-                "Friction neglected; rigid links, no clearances (seed 000, assumptions 1.1–1.4). The crank moves with its true ω1(φ), ε1(φ) from [dynamics] (nominal ω1 = {:.4} rad/s); the balancing torque is the drive's M_d less the inertia torque of the flywheel and the other constant masses on the crank shaft.",
+                "{friction}; rigid links, no clearances (seed 000, assumptions 1.1–1.4). The crank moves with its true ω1(φ), ε1(φ) from [dynamics] (nominal ω1 = {:.4} rad/s); the balancing torque is the drive's M_d less the inertia torque of the flywheel and the other constant masses on the crank shaft.",
                 m.crank.omega
             );
         }
