@@ -28,6 +28,7 @@ pub mod dynamics;
 pub mod error;
 pub mod forces;
 pub mod limits;
+pub mod linear;
 pub mod mechanism;
 pub mod model;
 pub mod plans;

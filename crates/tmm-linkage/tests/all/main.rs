@@ -10,6 +10,7 @@ mod engine;
 mod forces;
 mod fourbar_closed_form;
 mod hardening;
+mod linear;
 mod properties;
 mod shaper;
 mod single_stroke;
