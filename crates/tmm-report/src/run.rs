@@ -3,7 +3,7 @@
 //! before anything is handed out, so a bad section leaves no partial run.
 
 use crate::output::{Documents, to_json_text};
-use crate::{Error, SectionOutput, TaskSource, cam, dynamics, forces, gear, linkage, planetary, synthesis};
+use crate::{Error, SectionOutput, TaskSource, cam, cylinder, dynamics, forces, gear, linkage, planetary, synthesis};
 
 /// The embedded default course project (`tmm run` with no file).
 pub const DEFAULT_TASK: &str = include_str!("../tasks/default.toml");
@@ -22,6 +22,7 @@ const RUNNERS: &[Runner] = &[
     gear::run_section,
     planetary::run_section,
     cam::run_section,
+    cylinder::run_section,
 ];
 
 /// Everything a run produces, in memory.
@@ -122,6 +123,7 @@ pub const SECTION_TABLES: &[(&str, &[&str])] = &[
     ("gear", &["title", "project", "gear"]),
     ("planetary", &["title", "project", "planetary"]),
     ("cam", &["title", "project", "cam"]),
+    ("cylinder", &["title", "project", "cylinder"]),
 ];
 
 /// Run one section (a name of [`SECTION_TABLES`]) of a task made ready by

@@ -37,6 +37,7 @@ pub const SECTIONS: &[&str] = &[
     "gear",
     "planetary",
     "cam",
+    "cylinder",
 ];
 
 impl TaskSource {

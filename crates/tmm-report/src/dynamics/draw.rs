@@ -12,6 +12,7 @@
 
 use tmm_linkage::dynamics::Dynamics;
 
+pub(crate) mod cylinder;
 pub(crate) mod stroke;
 
 use crate::Error;
