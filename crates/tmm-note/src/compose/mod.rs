@@ -20,6 +20,7 @@ mod appendix;
 mod assignment;
 mod cam;
 mod context;
+mod cylinder;
 mod dynamics;
 mod forces;
 mod gear;
@@ -103,7 +104,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         designation,
     };
     let mut sections = Vec::new();
-    let builders: [SectionBuilder; 8] = [
+    let builders: [SectionBuilder; 9] = [
         synthesis::section,
         linkage::section,
         forces::section,
@@ -112,6 +113,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         gear::section,
         planetary::section,
         cam::section,
+        cylinder::section,
     ];
     for b in builders {
         if let Some(s) = b(&cx)? {

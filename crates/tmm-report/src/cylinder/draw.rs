@@ -26,9 +26,9 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> String {
     let last = a.table[a.table.len() - 1];
     let poses: [(&CylinderState, &'static str, bool); 3] = [(&first, BLUE, false), (&last, RED, false), (&a.at, BLACK, true)];
     // the barrel: from D to h_max + a tenth of the travel along the axis, its
-    // width a fifth of h_min + travel
+    // width 0.06·(h_max + l_шт)
     let barrel_len = d.h_max + 0.1 * d.travel();
-    let half_w = 0.05 * (d.h_max + d.rod).max(1e-6);
+    let half_w = 0.03 * (d.h_max + d.rod).max(1e-6);
     let mut b = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut grow = |p: Vec2| {
         b = (b.0.min(p.x), b.1.max(p.x), b.2.min(p.y), b.3.max(p.y));

@@ -5,7 +5,8 @@
 //! 1. the lever mechanism — synthesis, the 12 positions, the velocity and
 //!    acceleration plans, the kinematic diagrams (`synthesis/`, `linkage/`);
 //! 2. dynamics and kinetostatics — the diagrams of the dynamics section,
-//!    the force plans of each group, Zhukovsky's lever (`dynamics/`, `forces/`);
+//!    the force plans of each group, Zhukovsky's lever (`dynamics/`, `forces/`),
+//!    and a cylinder-driven mechanism's drawings (`cylinder/`);
 //! 3. the gear pair and the planetary train (`gear/`, `planetary/`);
 //! 4. the cam (`cam/`).
 //!
@@ -68,7 +69,7 @@ const TEMPLATES: [Template; 4] = [
         ],
     },
     Template {
-        folders: &["dynamics", "forces"],
+        folders: &["dynamics", "forces", "cylinder"],
         order: &[
             "!forces/group-*",
             "!forces/input-link",
@@ -88,6 +89,12 @@ const TEMPLATES: [Template; 4] = [
             "dynamics/stroke-epsilon",
             "dynamics/energy-constant",
             "forces/strength-*",
+            "!cylinder/mechanism",
+            "!cylinder/speed",
+            "!cylinder/time",
+            "!cylinder/forces",
+            "cylinder/mass",
+            "cylinder/accel",
         ],
     },
     Template {
