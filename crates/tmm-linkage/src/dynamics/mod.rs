@@ -11,6 +11,7 @@
 //! - [`reduced`]: I_II, I_II′ and M_c at one crank angle, from the analogues;
 //! - [`reduction`]: the same over the cycle, the work and ΔT;
 //! - [`extremum`]: extremes over the cycle, refined between the nodes;
+//! - [`load_period`]: the period of the summed loads within the cycle;
 //! - [`mertsalov`], [`wittenbauer`], [`exact`]: the three ways to the inertia;
 //! - [`flywheel`]: the flywheel's size;
 //! - [`motion`]: ω(φ), ε(φ), t(φ) over the steady cycle;
@@ -56,6 +57,7 @@ pub mod exact;
 pub mod extremum;
 pub mod flywheel;
 pub mod kloss;
+pub mod load_period;
 pub mod mertsalov;
 pub mod motion;
 pub mod ode;
@@ -151,6 +153,11 @@ pub struct Dynamics {
     pub reducer: Reducer,
     /// The reduced model and energy over the cycle.
     pub cycle: ReducedCycle,
+    /// The least period of the summed loads M_c and of I_II within the
+    /// machine's cycle, rad ([`load_period`]): the cycle itself, or a part
+    /// of it (one turn of П2's opposed engine, whose cylinders' cycles are
+    /// two turns), over which the flywheel is the same.
+    pub load_period: f64,
     /// The constant inertia already on the crank shaft.
     pub inertia_given: GivenInertia,
     /// Mertsalov's method in detail.
@@ -190,6 +197,7 @@ impl Dynamics {
             DrivingMoment::Engine => ReducedCycle::for_engine(&red, spec.points, &mut sol)?,
             _ => ReducedCycle::new(&red, spec.points, &mut sol)?,
         };
+        let load_period = load_period::of_cycle(&cycle, red.period, loads.cycle.turns);
         let md = cycle.driving_moment;
         let ratio = spec.motor_ratio(omega_m);
         if let Some(mo) = spec.motor() {
@@ -203,9 +211,21 @@ impl Dynamics {
         };
         let delta = spec.delta;
         let (wmax, wmin) = (omega_m * (1.0 + 0.5 * delta), omega_m * (1.0 - 0.5 * delta));
-        let mertsalov = mertsalov::mertsalov(&red, &cycle, &mut sol, omega_m, delta)?;
-        let wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin)?;
-        let exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), mertsalov.inertia)?;
+        let mut mertsalov = mertsalov::mertsalov(&red, &cycle, &mut sol, omega_m, delta)?;
+        let mut wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin)?;
+        let mut exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), mertsalov.inertia)?;
+        // where the summed loads repeat within the cycle, so do the extremes:
+        // each is given at its first angle, within 0…load_period, as the
+        // book gives П2's (Φ_A in 140°…180°, Φ_B in 0°…30°)
+        if load_period < red.period {
+            let first = |phi: &mut f64| *phi = phi.rem_euclid(load_period);
+            first(&mut mertsalov.phi_max);
+            first(&mut mertsalov.phi_min);
+            first(&mut wittenbauer.upper.phi);
+            first(&mut wittenbauer.lower.phi);
+            first(&mut exact.phi_max);
+            first(&mut exact.phi_min);
+        }
         let required = RequiredInertia {
             mertsalov: mertsalov.inertia,
             wittenbauer: wittenbauer.inertia,
@@ -267,6 +287,7 @@ impl Dynamics {
             omega_nominal: omega_m,
             reducer: red,
             cycle,
+            load_period,
             inertia_given: given,
             mertsalov,
             wittenbauer,

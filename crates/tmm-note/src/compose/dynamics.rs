@@ -28,6 +28,16 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("dy_method", &[])?,
         cx.para("dy_sought", &[])?,
     ];
+    let mut statement = statement;
+    // the summed loads repeat within the machine's cycle (П2's opposed engine)
+    if let (Some(lp), Some(cp)) = (cx.opt("/dynamics/load_period"), cx.opt("/dynamics/cycle_period"))
+        && lp < cp * (1.0 - 1e-9)
+    {
+        statement.push(cx.para(
+            "dy_load_period",
+            &[cx.deg("/dynamics/load_period")?, cx.deg("/dynamics/cycle_period")?],
+        )?);
+    }
     let formulas = vec![
         cx.para("dy_f_inertia", &[])?,
         formula("I_(I I)(phi) = sum_(i != 1) [m_i (v_(S i) / omega_1)^2 + J_(S i) (omega_i / omega_1)^2]"),
@@ -67,6 +77,24 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 (cx.w("q_fw_mass")?, cx.qv("/dynamics/flywheel/mass", 1.0, "u_kg")?),
             ],
         )?);
+    }
+    // the indicator diagram of each cylinder, as the task gives its tables
+    for k in 1.. {
+        let Some(Block::Figure {
+            caption,
+            svg,
+            width_mm,
+            label,
+        }) = cx.figure(&format!("dynamics/indicator-{k}.svg"), "fig_dy_indicator")?
+        else {
+            break;
+        };
+        results.push(Block::Figure {
+            caption: format!("{caption} {k}"),
+            svg,
+            width_mm,
+            label,
+        });
     }
     for (path, key) in [
         ("dynamics/moments.svg", "fig_dy_moments"),

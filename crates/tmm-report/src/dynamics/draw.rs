@@ -13,6 +13,7 @@
 use tmm_linkage::dynamics::Dynamics;
 
 pub(crate) mod cylinder;
+mod indicator;
 pub(crate) mod stroke;
 
 use crate::Error;
@@ -518,7 +519,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
         );
         docs.add_text(format!("{prefix}runup.svg"), ch.finish())?;
     }
-    Ok(())
+    indicator::draw_all(d, prefix, lang, sheet, docs)
 }
 
 /// Wittenbauer's energy–mass diagram: ΔT against I_II over the cycle with

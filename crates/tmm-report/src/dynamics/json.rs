@@ -96,6 +96,8 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         "reduced_inertia_derivative": arr(&c.inertia_derivative, s),
         "reduced_moment": arr(&c.moment, s),
         "driving_moment": num(c.driving_moment),
+        "cycle_period": num(d.reducer.period),
+        "load_period": num(d.load_period),
         "work": arr(&c.work_loads, s),
         "work_driving": arr(&c.work_driving, s),
         "kinetic_energy_change": arr(&c.energy, s),

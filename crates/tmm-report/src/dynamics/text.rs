@@ -57,6 +57,19 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
         "Grid: {} intervals; the work by 3-point Gauss–Legendre; every extremum refined between the nodes.",
         c.len()
     );
+    if d.load_period < d.reducer.period {
+        let _ = writeln!(
+            o,
+            "The summed loads repeat every {:.0}° of the {:.0}° cycle (M_c and I_II at φ and φ + {:.0}° agree to {:e} at every node), though each cylinder's cycle is {:.0}°: the flywheel over 0…{:.0}° is the one over the whole cycle, as the book restricts its analysis; the extremes below are given within 0…{:.0}°.",
+            d.load_period.to_degrees(),
+            d.reducer.period.to_degrees(),
+            d.load_period.to_degrees(),
+            tmm_linkage::dynamics::load_period::TOLERANCE,
+            d.reducer.period.to_degrees(),
+            d.load_period.to_degrees(),
+            d.load_period.to_degrees()
+        );
+    }
     let _ = writeln!(o, "\nThe 12 positions (ω₁, ε₁ in the direction of rotation, with the flywheel):");
     let _ = writeln!(
         o,

@@ -75,6 +75,7 @@ const TEMPLATES: [Template; 4] = [
             "!forces/input-link",
             "!forces/zhukovsky-lever",
             "!forces/balancing-torque",
+            "!dynamics/indicator-*",
             "!dynamics/moments",
             "!dynamics/work",
             "!dynamics/inertia",
