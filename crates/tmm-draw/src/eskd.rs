@@ -89,6 +89,9 @@ pub struct TitleBlock {
     pub teacher: String,
     /// The organisation (графа 9): university, department, group.
     pub organisation: String,
+    /// The document's letter (литера, графа 4: "У" for a student's
+    /// document, GOST 2.103), in the first of the three cells.
+    pub letter: String,
 }
 
 /// A text that did not fit its cell at 2.5 mm and was cut.
@@ -250,6 +253,7 @@ fn title_block(s: &mut Scene, top_left: Point, tb: &TitleBlock, cut: &mut Vec<Ov
     cell(s, 150.0, 15.0, 17.0, 5.0, TextHeight::H2_5, Anchor::Middle, &c.right[1])?;
     cell(s, 167.0, 15.0, 18.0, 5.0, TextHeight::H2_5, Anchor::Middle, &c.right[2])?;
     cell(s, 167.0, 20.0, 18.0, 15.0, TextHeight::H5, Anchor::Middle, &tb.scale)?;
+    cell(s, 135.0, 20.0, 5.0, 15.0, TextHeight::H5, Anchor::Middle, &tb.letter)?;
     cell(s, 135.0, 35.0, 10.0, 5.0, TextHeight::H2_5, Anchor::Start, &c.right[3])?;
     cell(s, 145.0, 35.0, 10.0, 5.0, TextHeight::H2_5, Anchor::Middle, &tb.sheet.to_string())?;
     cell(s, 155.0, 35.0, 16.0, 5.0, TextHeight::H2_5, Anchor::Start, &c.right[4])?;

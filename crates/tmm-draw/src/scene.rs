@@ -296,9 +296,141 @@ impl Scene {
         self.add(layer, Shape::Text(text))
     }
 
+    /// Place every element of `other` into this scene moved by `offset`
+    /// (paper mm), each on the layer of the same name (declared here, with
+    /// `other`'s colour and line type, when it is not yet). A sheet places
+    /// its drawings this way: each keeps its own scale, written in its
+    /// caption.
+    ///
+    /// ```
+    /// use tmm_draw::{Geom, LineType, Scale, Scene, Thickness};
+    /// use kurbo::{Point, Vec2};
+    /// let mut d = Scene::new(50.0, 50.0, Scale::NATURAL, Thickness::A1).unwrap();
+    /// d.layer("C_0050C0", 5, LineType::Thin);
+    /// d.stroke("C_0050C0", LineType::Thin, Geom::Line(Point::new(0.0, 0.0), Point::new(10.0, 0.0))).unwrap();
+    /// let mut sheet = Scene::new(841.0, 594.0, Scale::NATURAL, Thickness::A1).unwrap();
+    /// sheet.insert(&d, Vec2::new(100.0, 200.0));
+    /// assert!(sheet.layers().iter().any(|l| l.name == "C_0050C0" && l.aci == 5));
+    /// match &sheet.items()[0].shape {
+    ///     tmm_draw::Shape::Stroke { geom: Geom::Line(a, _), .. } => assert_eq!(*a, Point::new(100.0, 200.0)),
+    ///     _ => unreachable!(),
+    /// }
+    /// ```
+    pub fn insert(&mut self, other: &Scene, offset: kurbo::Vec2) {
+        let map: Vec<usize> = other
+            .layers
+            .iter()
+            .map(|l| match self.layers.iter().position(|m| m.name == l.name) {
+                Some(i) => i,
+                None => {
+                    self.layers.push(l.clone());
+                    self.layers.len() - 1
+                }
+            })
+            .collect();
+        for it in &other.items {
+            self.items.push(Item {
+                layer: map[it.layer],
+                shape: translated(&it.shape, offset),
+            });
+        }
+    }
+
     /// The scale's caption with the "М" prefix (масштаб), as written under
     /// a view or in the title block: "М 1:2,5".
     pub fn scale_caption(&self, decimal: char) -> String {
         format!("М {}", self.scale.caption(decimal))
+    }
+}
+
+fn moved_geom(g: &Geom, v: kurbo::Vec2) -> Geom {
+    match g {
+        Geom::Line(a, b) => Geom::Line(*a + v, *b + v),
+        Geom::Polyline { points, closed } => Geom::Polyline {
+            points: points.iter().map(|&p| p + v).collect(),
+            closed: *closed,
+        },
+        Geom::Circle { center, radius } => Geom::Circle {
+            center: *center + v,
+            radius: *radius,
+        },
+        Geom::Arc {
+            center,
+            radius,
+            start_deg,
+            end_deg,
+        } => Geom::Arc {
+            center: *center + v,
+            radius: *radius,
+            start_deg: *start_deg,
+            end_deg: *end_deg,
+        },
+        Geom::Curve(c) => Geom::Curve(
+            c.iter()
+                .map(|b| kurbo::CubicBez::new(b.p0 + v, b.p1 + v, b.p2 + v, b.p3 + v))
+                .collect(),
+        ),
+    }
+}
+
+/// A shape moved by `v` on the paper.
+fn translated(s: &Shape, v: kurbo::Vec2) -> Shape {
+    match s {
+        Shape::Stroke { line, geom } => Shape::Stroke {
+            line: *line,
+            geom: moved_geom(geom, v),
+        },
+        Shape::Arrow(a) => Shape::Arrow(Arrow {
+            tip: a.tip + v,
+            dir: a.dir,
+        }),
+        Shape::Hatch(h) => Shape::Hatch(Hatch {
+            loops: h.loops.iter().map(|l| l.iter().map(|&p| p + v).collect()).collect(),
+            ..h.clone()
+        }),
+        Shape::Text(t) => Shape::Text(Text { at: t.at + v, ..t.clone() }),
+        Shape::Dimension(d) => Shape::Dimension(match d {
+            Dimension::Linear {
+                a,
+                b,
+                offset,
+                text,
+                height,
+            } => Dimension::Linear {
+                a: *a + v,
+                b: *b + v,
+                offset: *offset,
+                text: text.clone(),
+                height: *height,
+            },
+            Dimension::Angular {
+                center,
+                radius,
+                start_deg,
+                end_deg,
+                text,
+                height,
+            } => Dimension::Angular {
+                center: *center + v,
+                radius: *radius,
+                start_deg: *start_deg,
+                end_deg: *end_deg,
+                text: text.clone(),
+                height: *height,
+            },
+            Dimension::Radius {
+                center,
+                radius,
+                angle_deg,
+                text,
+                height,
+            } => Dimension::Radius {
+                center: *center + v,
+                radius: *radius,
+                angle_deg: *angle_deg,
+                text: text.clone(),
+                height: *height,
+            },
+        }),
     }
 }

@@ -257,6 +257,33 @@ pub fn render(scene: &Scene) -> String {
     g.out
 }
 
+/// The elements of `scene` that `keep` accepts, as SVG markup without the
+/// root, in a document of the scene's size (y flipped as in [`render`]):
+/// a sheet writes its frame, graph 26 and title block in groups of their
+/// own this way.
+///
+/// ```
+/// use tmm_draw::{Geom, LineType, Scale, Scene, Thickness};
+/// use kurbo::Point;
+/// let mut s = Scene::new(100.0, 50.0, Scale::NATURAL, Thickness::A1).unwrap();
+/// s.stroke("MAIN", LineType::Main, Geom::Line(Point::new(0.0, 0.0), Point::new(10.0, 0.0))).unwrap();
+/// s.stroke("THIN", LineType::Thin, Geom::Line(Point::new(0.0, 5.0), Point::new(10.0, 5.0))).unwrap();
+/// let m = tmm_draw::svg::items_markup(&s, |it| it.layer == 0);
+/// assert!(m.contains("y1=\"50\"") && !m.contains("y1=\"45\""));
+/// ```
+pub fn items_markup(scene: &Scene, keep: impl Fn(&crate::Item) -> bool) -> String {
+    let mut g = Svg {
+        out: String::new(),
+        h: scene.height,
+        s: scene.s,
+    };
+    for item in scene.items().iter().filter(|it| keep(it)) {
+        let layer = scene.layers()[item.layer].name.clone();
+        draw(&mut g, &layer, &item.shape);
+    }
+    g.out
+}
+
 fn draw(g: &mut Svg, layer: &str, shape: &Shape) {
     match shape {
         Shape::Stroke { line, geom } => g.geom(layer, *line, geom),

@@ -8,11 +8,10 @@
 //! [`finish`], which also writes the drawing's standard scale on the root
 //! element (`data-scale="1:2"`, read by the sheets' title block).
 
-use std::fmt::Write as _;
-
 use crate::line_grid::LineGrid;
+use crate::picture::Picture;
 use crate::project::Language;
-use crate::svg::{Style, escape};
+use crate::svg::Style;
 
 /// Lettering heights of GOST 2.304, mm (шрифт чертёжный): labels of points
 /// and circles, headings, titles.
@@ -183,7 +182,8 @@ pub fn label_box(c: (f64, f64), chars: usize, h: f64) -> Rect {
 pub struct Placer {
     paper: Rect,
     taken: Vec<Rect>,
-    svg: String,
+    /// The labels written, in order.
+    items: Vec<crate::picture::Element>,
     /// The drawn lines to keep off, once [`Placer::avoid_lines`] is called.
     lines: Option<LineGrid>,
 }
@@ -217,7 +217,7 @@ impl Placer {
                 y1: height - 0.5,
             },
             taken: Vec::new(),
-            svg: String::new(),
+            items: Vec::new(),
             lines: None,
         }
     }
@@ -316,30 +316,13 @@ impl Placer {
         let w = CHAR_WIDTH * h * n as f64;
         let centre = if start { (c.0 + 0.5 * w, c.1) } else { c };
         self.taken.push(label_box(centre, n, h));
-        // the baseline: the box's middle plus a third of the height
-        let _ = write!(
-            self.svg,
-            "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
-            c.0,
-            c.1 + 0.35 * h,
-            if start { "start" } else { "middle" }
-        );
-        let mut level = 0i8;
-        for (t, s) in parts(text) {
-            let dy = f64::from(level - s) * 0.35 * h;
-            if s == 0 {
-                let _ = write!(self.svg, "<tspan dy=\"{dy:.3}\">{}</tspan>", escape(&t));
-            } else {
-                let _ = write!(
-                    self.svg,
-                    "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>",
-                    0.7 * h,
-                    escape(&t)
-                );
-            }
-            level = s;
-        }
-        self.svg.push_str("</text>\n");
+        self.items.push(crate::picture::Element::Label {
+            c,
+            text: text.to_string(),
+            size: h,
+            color: color.to_string(),
+            start,
+        });
     }
 
     /// Candidate centres around a point `p` (paper mm) for a label of
@@ -371,24 +354,28 @@ impl Placer {
         &self.taken
     }
 
+    /// The labels as elements of a drawing.
+    pub fn elements(&self) -> &[crate::picture::Element] {
+        &self.items
+    }
+
     /// The labels as SVG elements.
-    pub fn svg(&self) -> &str {
-        &self.svg
+    pub fn svg(&self) -> String {
+        let p = crate::picture::Picture::new(1.0, 1.0, Vec::new(), self.items.clone());
+        p.body("")
     }
 }
 
-/// Finish a drawing: the labels go in before the closing tag, the dash-dot
-/// markers become GOST 2.303 patterns, the root carries `data-scale` when the
-/// drawing is at a length scale.
-pub fn finish(svg: String, labels: &Placer, scale: Option<&str>) -> String {
-    let mut s = svg
-        .replace("stroke-dasharray=\"12.01 1.25 0.50 1.25\"", "stroke-dasharray=\"12 3 1 3\"")
-        .replace("stroke-dasharray=\"12.02 1.25 0.50 1.25\"", "stroke-dasharray=\"12 3 1 3 1 3\"");
-    if let Some(i) = s.rfind("</svg>") {
-        s.insert_str(i, labels.svg());
-    }
-    if let Some(sc) = scale {
-        s = s.replacen("<svg xmlns=", &format!("<svg data-scale=\"{}\" xmlns=", escape(sc)), 1);
-    }
-    s
+/// Finish a drawing: the labels go in after its elements, the root carries
+/// `data-scale` when the drawing is at a length scale (read by the sheets'
+/// title block).
+pub fn finish(pic: Picture, labels: &Placer, scale: Option<&str>) -> Picture {
+    finish_all(pic, &[labels], scale)
+}
+
+/// [`finish`] with the labels of several placers, in order.
+pub fn finish_all(pic: Picture, placers: &[&Placer], scale: Option<&str>) -> Picture {
+    let more: Vec<crate::picture::Element> = placers.iter().flat_map(|p| p.items.iter().cloned()).collect();
+    let root = scale.map(|sc| vec![("data-scale".to_string(), sc.to_string())]).unwrap_or_default();
+    pic.extended(more, root)
 }

@@ -18,7 +18,8 @@
 //! sheet format), [`words`] the drawings' words in ru/uk/en, [`paper`] the drawings'
 //! slots on the sheets, standard scales and round μ. Shared pieces: [`error`] (the one error type, exit codes), [`task`]
 //! (sources, quantities with units), [`user_text`] (names and titles: length,
-//! control characters), [`svg`] (a canvas and a plotter),
+//! control characters), [`svg`] (a canvas and a plotter), [`picture`] (a
+//! drawing's typed elements, rendered to SVG and to a `tmm_draw` scene),
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
 pub mod cam;
@@ -34,6 +35,7 @@ pub mod linkage;
 pub mod message_numbers;
 pub mod output;
 pub mod paper;
+pub mod picture;
 pub mod planetary;
 pub mod project;
 pub mod run;

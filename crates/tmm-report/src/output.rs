@@ -10,6 +10,7 @@
 //! apart from a number and passes as written.
 
 use crate::Error;
+use crate::picture::Picture;
 
 /// One output file in memory: its path relative to the output folder
 /// (`/`-separated, e.g. `linkage/positions.svg`) and its bytes.
@@ -53,6 +54,40 @@ impl Document {
 pub struct Documents {
     docs: Vec<Document>,
     excused: std::sync::Arc<Vec<String>>,
+    /// The drawings among the documents, by path: what the sheets place.
+    pictures: Vec<(String, std::sync::Arc<Picture>)>,
+}
+
+/// What [`Documents::add_text`] takes: a text, or a drawing ([`Picture`]),
+/// whose SVG text is the document and whose elements are kept beside it
+/// for the sheets.
+pub trait IntoText {
+    /// The text and, for a drawing, the drawing.
+    fn into_text(self) -> (String, Option<Picture>);
+}
+
+impl IntoText for String {
+    fn into_text(self) -> (String, Option<Picture>) {
+        (self, None)
+    }
+}
+
+impl IntoText for &str {
+    fn into_text(self) -> (String, Option<Picture>) {
+        (self.to_string(), None)
+    }
+}
+
+impl IntoText for &String {
+    fn into_text(self) -> (String, Option<Picture>) {
+        (self.clone(), None)
+    }
+}
+
+impl IntoText for Picture {
+    fn into_text(self) -> (String, Option<Picture>) {
+        (self.svg().to_string(), Some(self))
+    }
 }
 
 impl Documents {
@@ -77,6 +112,7 @@ impl Documents {
         Documents {
             docs: Vec::new(),
             excused: std::sync::Arc::new(crate::user_text::excused(task)),
+            pictures: Vec::new(),
         }
     }
 
@@ -85,6 +121,7 @@ impl Documents {
         Documents {
             docs: Vec::new(),
             excused: other.excused.clone(),
+            pictures: Vec::new(),
         }
     }
 
@@ -95,11 +132,25 @@ impl Documents {
 
     /// Add a text document at `path` after checking it for non-finite
     /// numbers ([`check_finite_in`]).
-    pub fn add_text(&mut self, path: impl Into<String>, text: impl Into<String>) -> Result<(), Error> {
+    pub fn add_text(&mut self, path: impl Into<String>, text: impl IntoText) -> Result<(), Error> {
+        let (text, pic) = text.into_text();
         let d = Document::text(path, text);
         check_finite_in(&d, &self.excused)?;
+        if let Some(p) = pic {
+            self.pictures.push((d.path.clone(), std::sync::Arc::new(p)));
+        }
         self.docs.push(d);
         Ok(())
+    }
+
+    /// [`Documents::picture`], shared.
+    pub fn picture_shared(&self, path: &str) -> Option<std::sync::Arc<Picture>> {
+        self.pictures.iter().find(|(p, _)| p == path).map(|(_, d)| d.clone())
+    }
+
+    /// The drawing a document at `path` was written from, if it is one.
+    pub fn picture(&self, path: &str) -> Option<&Picture> {
+        self.pictures.iter().find(|(p, _)| p == path).map(|(_, d)| d.as_ref())
     }
 
     /// Add a JSON document, pretty-printed.
@@ -122,6 +173,7 @@ impl Documents {
             self.excused = other.excused;
         }
         self.docs.extend(other.docs);
+        self.pictures.extend(other.pictures);
     }
 
     /// The documents.

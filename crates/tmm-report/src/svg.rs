@@ -7,6 +7,8 @@
 
 use std::fmt::Write as _;
 
+use crate::picture::{Element, PathData, Picture};
+
 /// Line style of a stroke.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Style {
@@ -86,9 +88,10 @@ pub struct Canvas {
     scale: f64,
     ox: f64,
     oy: f64,
-    body: String,
+    /// The elements drawn, in order.
+    els: Vec<Element>,
     /// Attributes of the root element (`data-scale="1:2"`).
-    root: String,
+    root: Vec<(String, String)>,
     /// Every straight piece drawn, on paper (mm, y down): what labels avoid.
     segs: crate::seg_index::SegIndex,
     /// The boxes of the texts written and of the places kept free.
@@ -105,8 +108,8 @@ impl Canvas {
             scale: 1.0,
             ox: 0.0,
             oy: 0.0,
-            body: String::new(),
-            root: String::new(),
+            els: Vec::new(),
+            root: Vec::new(),
             segs: crate::seg_index::SegIndex::new(width_mm, height_mm),
             boxes: Vec::new(),
         }
@@ -144,25 +147,6 @@ impl Canvas {
         (self.ox + self.scale * x, self.height - (self.oy + self.scale * y))
     }
 
-    fn style_attr(s: &Style) -> String {
-        let mut a = format!(
-            "stroke=\"{}\" stroke-width=\"{:.3}\" fill=\"{}\"",
-            s.color,
-            s.width,
-            s.fill.unwrap_or("none")
-        );
-        if let Some((d, g)) = s.dash {
-            if d > 8.0 {
-                // dash-dot: the dot in the middle of the gap
-                let h = 0.5 * (g - 0.5).max(0.5);
-                let _ = write!(a, " stroke-dasharray=\"{d:.2} {h:.2} 0.50 {h:.2}\"");
-            } else {
-                let _ = write!(a, " stroke-dasharray=\"{d:.2} {g:.2}\"");
-            }
-        }
-        a
-    }
-
     /// A line segment between two world points.
     pub fn line(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
         if !finite(&[a.0, a.1, b.0, b.1]) {
@@ -171,11 +155,12 @@ impl Canvas {
         let (x1, y1) = self.to_paper(a.0, a.1);
         let (x2, y2) = self.to_paper(b.0, b.1);
         self.segs.push(((x1, y1), (x2, y2)));
-        let _ = writeln!(
-            self.body,
-            "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {} stroke-linecap=\"round\"/>",
-            Self::style_attr(&s)
-        );
+        self.els.push(Element::Line {
+            a: (x1, y1),
+            b: (x2, y2),
+            style: s,
+            round: true,
+        });
     }
 
     /// An open polyline through world points (non-finite points are skipped).
@@ -197,7 +182,7 @@ impl Canvas {
             .collect();
         let closed = closed && runs.len() == 1;
         for run in runs {
-            let mut d = String::new();
+            let mut points = Vec::with_capacity(run.len());
             let mut prev: Option<(f64, f64)> = None;
             let first = self.to_paper(run[0].0, run[0].1);
             for &(x, y) in run {
@@ -206,18 +191,12 @@ impl Canvas {
                     self.segs.push((q, (px, py)));
                 }
                 prev = Some((px, py));
-                let _ = write!(d, "{px:.3},{py:.3} ");
+                points.push((px, py));
             }
             if let (true, Some(a)) = (closed, prev) {
                 self.segs.push((a, first));
             }
-            let tag = if closed { "polygon" } else { "polyline" };
-            let _ = writeln!(
-                self.body,
-                "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>",
-                d.trim_end(),
-                Self::style_attr(&s)
-            );
+            self.els.push(Element::Poly { points, style: s, closed });
         }
     }
 
@@ -227,12 +206,11 @@ impl Canvas {
             return;
         }
         let (x, y) = self.to_paper(c.0, c.1);
-        let _ = writeln!(
-            self.body,
-            "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{:.3}\" {}/>",
-            (r * self.scale).abs(),
-            Self::style_attr(&s)
-        );
+        self.els.push(Element::Circle {
+            c: (x, y),
+            r: (r * self.scale).abs(),
+            style: s,
+        });
     }
 
     /// A dot of paper radius `r_mm` (a joint, a point of a plan).
@@ -241,10 +219,7 @@ impl Canvas {
             return;
         }
         let (x, y) = self.to_paper(c.0, c.1);
-        let _ = writeln!(
-            self.body,
-            "<circle cx=\"{x:.3}\" cy=\"{y:.3}\" r=\"{r_mm:.3}\" fill=\"{fill}\" stroke=\"#000\" stroke-width=\"0.25\"/>"
-        );
+        self.els.push(Element::Dot { c: (x, y), r: r_mm, fill });
     }
 
     /// A revolute joint: a small open circle of paper radius `r_mm`.
@@ -259,31 +234,21 @@ impl Canvas {
             return;
         }
         let h = 3.0 * r_mm;
-        let _ = writeln!(
-            self.body,
-            "<polygon points=\"{x:.3},{y:.3} {:.3},{:.3} {:.3},{:.3}\" fill=\"none\" stroke=\"#000\" stroke-width=\"0.35\"/>",
-            x - h,
-            y + 1.6 * h,
-            x + h,
-            y + 1.6 * h
-        );
         // labels keep off the ground symbol too
         let (l, r, b) = ((x - h, y + 1.6 * h), (x + h, y + 1.6 * h), (x, y));
         for s in [(b, l), (l, r), (r, b)] {
             self.segs.push(s);
         }
+        let mut hatch = Vec::with_capacity(5);
         for i in 0..5 {
             let hx = x - 1.3 * h + i as f64 * 0.65 * h;
             self.segs.push(((hx + 0.6 * h, y + 1.6 * h), (hx, y + 2.3 * h)));
-            let _ = writeln!(
-                self.body,
-                "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" stroke=\"#000\" stroke-width=\"0.25\"/>",
-                hx + 0.6 * h,
-                y + 1.6 * h,
-                hx,
-                y + 2.3 * h
-            );
+            hatch.push(((hx + 0.6 * h, y + 1.6 * h), (hx, y + 2.3 * h)));
         }
+        self.els.push(Element::Ground {
+            triangle: [b, l, r],
+            hatch,
+        });
         self.joint(c, r_mm);
     }
 
@@ -317,11 +282,12 @@ impl Canvas {
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = (dx * dx + dy * dy).sqrt();
         self.segs.push(((x1, y1), (x2, y2)));
-        let _ = writeln!(
-            self.body,
-            "<line x1=\"{x1:.3}\" y1=\"{y1:.3}\" x2=\"{x2:.3}\" y2=\"{y2:.3}\" {}/>",
-            Self::style_attr(&Style { fill: None, ..s })
-        );
+        self.els.push(Element::Line {
+            a: (x1, y1),
+            b: (x2, y2),
+            style: Style { fill: None, ..s },
+            round: false,
+        });
         if len < 1e-9 {
             return;
         }
@@ -329,15 +295,10 @@ impl Canvas {
         let (ux, uy) = (dx / len, dy / len);
         let (bx, by) = (x2 - h * ux, y2 - h * uy);
         let w = 0.3 * h;
-        let _ = writeln!(
-            self.body,
-            "<polygon points=\"{x2:.3},{y2:.3} {:.3},{:.3} {:.3},{:.3}\" fill=\"{}\" stroke=\"none\"/>",
-            bx - w * uy,
-            by + w * ux,
-            bx + w * uy,
-            by - w * ux,
-            s.color
-        );
+        self.els.push(Element::Head {
+            points: [(x2, y2), (bx - w * uy, by + w * ux), (bx + w * uy, by - w * ux)],
+            color: s.color,
+        });
     }
 
     /// Text at a world point, `size_mm` high.
@@ -356,56 +317,117 @@ impl Canvas {
 
     /// Text at a paper position (mm from the top-left corner).
     pub fn text_paper(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor, color: &str) {
-        let a = match anchor {
-            Anchor::Start => "start",
-            Anchor::Middle => "middle",
-            Anchor::End => "end",
-        };
-        let _ = writeln!(
-            self.body,
-            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
-            at.0,
-            at.1,
-            escape(text)
-        );
+        self.els.push(Element::Text {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+            anchor,
+            color: color.to_string(),
+            rich: false,
+        });
         self.reserve(text_box(at, size_mm, anchor, text.chars().count()));
     }
 
     /// A line on paper coordinates (mm from the top-left corner).
     pub fn line_paper(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
         self.segs.push((a, b));
-        let _ = writeln!(
-            self.body,
-            "<line x1=\"{:.3}\" y1=\"{:.3}\" x2=\"{:.3}\" y2=\"{:.3}\" {}/>",
-            a.0,
-            a.1,
-            b.0,
-            b.1,
-            Self::style_attr(&s)
-        );
+        self.els.push(Element::Line {
+            a,
+            b,
+            style: s,
+            round: false,
+        });
     }
 
     /// Open a group (`<g>`) with an id, e.g. a layer; close it with [`Canvas::end_group`].
     pub fn begin_group(&mut self, id: &str) {
-        let _ = writeln!(self.body, "<g id=\"{}\">", escape(id));
+        self.els.push(Element::GroupOpen {
+            id: Some(id.to_string()),
+            class: None,
+            data: Vec::new(),
+        });
+    }
+
+    /// A segment of a class on paper, its ends written to 0.1 µm (a chord
+    /// whose length a reader measures); labels keep off it only when it is
+    /// reserved ([`Canvas::reserve_segment`]).
+    pub fn line_classed(&mut self, class: &str, a: (f64, f64), b: (f64, f64), s: Style) {
+        self.els.push(Element::Classed {
+            class: class.to_string(),
+            a,
+            b,
+            style: s,
+        });
+    }
+
+    /// Open a group of a class with data attributes (`data-label`,
+    /// `data-kind` of a plan's vector); close it with [`Canvas::end_group`].
+    pub fn begin_group_data(&mut self, class: &str, data: &[(&str, &str)]) {
+        self.els.push(Element::GroupOpen {
+            id: None,
+            class: Some(class.to_string()),
+            data: data.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect(),
+        });
     }
 
     /// Close the last group.
     pub fn end_group(&mut self) {
-        self.body.push_str("</g>\n");
+        self.els.push(Element::GroupClose);
     }
 
     /// An attribute of the root element, e.g. `data-scale="1:2"` that the
     /// sheet's title block reads.
     pub fn root_attr(&mut self, name: &str, value: &str) {
-        let _ = write!(self.root, " {name}=\"{}\"", escape(value));
+        self.root.push((name.to_string(), value.to_string()));
     }
 
-    /// Raw SVG markup appended to the body (a group's opening with data
-    /// attributes, say).
-    pub fn raw(&mut self, markup: &str) {
-        self.body.push_str(markup);
-        self.body.push('\n');
+    /// A path of a class through paper points (mm from the top-left
+    /// corner): a non-finite point lifts the pen. The labels placed later
+    /// do not see it (reserve its chords with [`Canvas::reserve_segment`]).
+    pub fn path_paper(&mut self, class: Option<&str>, pts: &[(f64, f64)], s: Style) {
+        let runs: Vec<Vec<(f64, f64)>> = pts
+            .split(|p| !(p.0.is_finite() && p.1.is_finite()))
+            .filter(|r| !r.is_empty())
+            .map(<[(f64, f64)]>::to_vec)
+            .collect();
+        self.els.push(Element::Path {
+            class: class.map(str::to_string),
+            data: PathData::Runs(runs),
+            style: s,
+        });
+    }
+
+    /// Separate segments on paper drawn as one path of a class (a grid),
+    /// not seen by the labels.
+    pub fn segments_paper(&mut self, class: Option<&str>, segs: Vec<((f64, f64), (f64, f64))>, s: Style) {
+        self.els.push(Element::Path {
+            class: class.map(str::to_string),
+            data: PathData::Segments(segs),
+            style: s,
+        });
+    }
+
+    /// An open marker circle of a class at a paper point (the points of a
+    /// curve, a legend's sample), `r_mm` in radius.
+    pub fn marker_paper(&mut self, class: &str, at: (f64, f64), r_mm: f64, s: Style) {
+        if finite(&[at.0, at.1]) {
+            self.els.push(Element::Marker {
+                class: class.to_string(),
+                c: at,
+                r: r_mm,
+                style: s,
+            });
+        }
+    }
+
+    /// Text turned to read upwards, its baseline's middle at a paper point
+    /// (the name of a vertical axis).
+    pub fn text_upward(&mut self, at: (f64, f64), text: &str, size_mm: f64) {
+        self.els.push(Element::Upward {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+        });
     }
 
     /// The paper size, mm.
@@ -442,18 +464,14 @@ impl Canvas {
 
     /// Typeset text (see [`rich`]) at a paper point, its box kept free.
     pub fn rich_paper(&mut self, at: (f64, f64), text: &str, size_mm: f64, anchor: Anchor, color: &str) {
-        let a = match anchor {
-            Anchor::Start => "start",
-            Anchor::Middle => "middle",
-            Anchor::End => "end",
-        };
-        let _ = writeln!(
-            self.body,
-            "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size_mm:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\" xml:space=\"preserve\">{}</text>",
-            at.0,
-            at.1,
-            rich(text, size_mm)
-        );
+        self.els.push(Element::Text {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+            anchor,
+            color: color.to_string(),
+            rich: true,
+        });
         self.reserve(text_box(at, size_mm, anchor, shown_len(text)));
     }
 
@@ -551,15 +569,9 @@ impl Canvas {
         best
     }
 
-    /// The SVG document.
-    pub fn finish(&self) -> String {
-        format!(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\"{r}>\n<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{}</svg>\n",
-            self.body,
-            w = self.width,
-            h = self.height,
-            r = self.root
-        )
+    /// The drawing: its SVG text and its scene ([`Picture`]).
+    pub fn finish(&self) -> Picture {
+        Picture::new(self.width, self.height, self.root.clone(), self.els.clone())
     }
 }
 
@@ -798,7 +810,7 @@ pub struct Series<'a> {
 /// A line plot with axes, ticks, labels and a legend on a `width × height` mm
 /// paper: the kinematic diagrams, the balancing torque over the cycle, the
 /// specific sliding, the motion laws.
-pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], width: f64, height: f64) -> String {
+pub fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[Series<'_>], width: f64, height: f64) -> Picture {
     plot_with_impulses(title, xlabel, ylabel, series, &[], width, height)
 }
 
@@ -820,7 +832,7 @@ pub fn plot_in(
     series: &[Series<'_>],
     width: f64,
     height: f64,
-) -> String {
+) -> Picture {
     plot_with_impulses_in(lang, title, xlabel, ylabel, series, &[], width, height)
 }
 
@@ -846,7 +858,7 @@ pub fn plot_with_impulses(
     impulses: &[Impulse],
     width: f64,
     height: f64,
-) -> String {
+) -> Picture {
     plot_with_impulses_in(crate::project::Language::En, title, xlabel, ylabel, series, impulses, width, height)
 }
 
@@ -861,7 +873,7 @@ pub fn plot_with_impulses_in(
     impulses: &[Impulse],
     width: f64,
     height: f64,
-) -> String {
+) -> Picture {
     let mut c = Canvas::new(width, height);
     let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     for s in series {
@@ -930,30 +942,28 @@ pub fn plot_with_impulses_in(
     let (_, by1) = map(xt0, yt1);
     c.line_paper((bx, by0), (bx, by1), Style::THIN.widened(0.35));
     c.text_paper(((ax0 + ax1) / 2.0, height - 3.0), xlabel, 3.0, Anchor::Middle, "#000");
-    let _ = writeln!(
-        c.body,
-        "<text x=\"5\" y=\"{:.2}\" font-size=\"3.5\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"middle\" transform=\"rotate(-90 5 {:.2})\">{}</text>",
-        height / 2.0,
-        height / 2.0,
-        escape(ylabel)
-    );
+    c.text_upward((5.0, height / 2.0), ylabel, 3.5);
     for (k, s) in series.iter().enumerate() {
-        let mut d = String::new();
-        let mut pen = false;
-        for &(x, y) in s.points {
-            if !(x.is_finite() && y.is_finite()) {
-                pen = false;
-                continue;
-            }
-            let (px, py) = map(x, y);
-            let _ = write!(d, "{}{px:.3},{py:.3} ", if pen { "L" } else { "M" });
-            pen = true;
-        }
-        let _ = writeln!(
-            c.body,
-            "<path d=\"{}\" stroke=\"{}\" stroke-width=\"0.45\" fill=\"none\"/>",
-            d.trim_end(),
-            s.color
+        let pts: Vec<(f64, f64)> = s
+            .points
+            .iter()
+            .map(|&(x, y)| {
+                if x.is_finite() && y.is_finite() {
+                    map(x, y)
+                } else {
+                    (f64::NAN, f64::NAN)
+                }
+            })
+            .collect();
+        c.path_paper(
+            None,
+            &pts,
+            Style {
+                width: 0.45,
+                color: s.color,
+                dash: None,
+                fill: None,
+            },
         );
         if series.len() > 1 || !s.name.is_empty() {
             let ly = 14.0 + 4.5 * k as f64;

@@ -14,6 +14,7 @@ use tmm_cams::program::PhaseKind;
 
 use crate::labels::{H_LABEL, H_TITLE, Placer, finish};
 use crate::paper::{Slot, round_mu, slot_mm};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Canvas, Style, mu_text};
 use crate::words::word;
@@ -96,7 +97,7 @@ const BOTTOM: f64 = 16.0;
 
 /// Draw `panels` one under another, each in a `Slot::Diagram` box of
 /// `sheet`; `omega` (rad/s) adds the time scale μ_t to the scale line.
-pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat, omega: Option<f64>) -> String {
+pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat, omega: Option<f64>) -> Picture {
     let (w, ph) = slot_mm(Slot::Diagram, sheet);
     let total = ph * panels.len().max(1) as f64;
     let mut c = Canvas::new(w, total);
@@ -124,10 +125,16 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
         let used = (ymax - ymin) / mu_y;
         let y_zero = y_off + TOP + 0.5 * (avail - used) + ymax / mu_y;
         let map = |x: f64, y: f64| (LEFT + x / mu_p, y_zero - y / mu_y);
-        c.raw(&format!(
-            "<g class=\"diagram\" data-quantity=\"{}\" data-mu-y=\"{mu_y}\" data-mu-phi=\"{mu_p}\" data-x0=\"{LEFT}\" data-y-zero=\"{y_zero:.4}\">",
-            crate::svg::escape(&p.mu_sym)
-        ));
+        c.begin_group_data(
+            "diagram",
+            &[
+                ("data-quantity", &p.mu_sym),
+                ("data-mu-y", &format!("{mu_y}")),
+                ("data-mu-phi", &format!("{mu_p}")),
+                ("data-x0", &format!("{LEFT}")),
+                ("data-y-zero", &format!("{y_zero:.4}")),
+            ],
+        );
         // the title and, under it, the scale factors
         lab.put((0.5 * w, y_off + 6.0), &p.title, H_TITLE - 2.0, "#000");
         let unit_per = if p.unit.contains('/') {
@@ -176,10 +183,10 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
         }
         // the phase boundaries: thin lines across the panel, the phases named
         // under the plot
-        c.raw("<g class=\"phase-marks\">");
+        c.begin_group_data("phase-marks", &[]);
         for &b in &bounds {
             let (xp, _) = map(b, 0.0);
-            c.raw(&format!("<g class=\"phase-mark\" data-phi=\"{b}\">"));
+            c.begin_group_data("phase-mark", &[("data-phi", &format!("{b}"))]);
             c.line_paper((xp, ytop.min(yz) - 2.0), (xp, ybot.max(yz) + 2.0), Style::THIN.colored("#777777"));
             c.end_group();
         }
@@ -210,21 +217,18 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
             lab.place(&cands, &l.label, H_SMALL, "#c62828");
         }
         // the curve, thick
-        let mut d = String::new();
-        let mut pen = false;
-        for &(x, y) in &p.pts {
-            if !(x.is_finite() && y.is_finite()) {
-                pen = false;
-                continue;
-            }
-            let (xp, yp) = map(x, y);
-            d.push_str(&format!("{}{xp:.3},{yp:.3} ", if pen { "L" } else { "M" }));
-            pen = true;
-        }
-        c.raw(&format!(
-            "<path class=\"curve\" d=\"{}\" stroke=\"#000\" stroke-width=\"0.7\" fill=\"none\"/>",
-            d.trim_end()
-        ));
+        let curve: Vec<(f64, f64)> = p
+            .pts
+            .iter()
+            .map(|&(x, y)| {
+                if x.is_finite() && y.is_finite() {
+                    map(x, y)
+                } else {
+                    (f64::NAN, f64::NAN)
+                }
+            })
+            .collect();
+        c.path_paper(Some("curve"), &curve, Style::THICK.widened(0.7).colored("#000"));
         // impacts: arrows from the axis, labels beside them
         for a in &p.arrows {
             let (xp, _) = map(a.phi_deg, 0.0);

@@ -12,6 +12,7 @@ use tmm_cams::program::{JumpKind, Motion, PhaseKind};
 
 use crate::labels::{DASH_DOT, H_LABEL, Placer, finish, num};
 use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Style};
 
@@ -38,7 +39,7 @@ fn units(task: &CamTask, lang: Language) -> [String; 5] {
 
 /// s, ds/dφ, d²s/dφ² over the cam angle 0 … 360° (mm, or degrees for an
 /// oscillating follower), one `Slot::Diagram` panel each, words in `lang`.
-pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
+pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> Picture {
     let osc = task.follower.oscillating();
     let k = if osc { 180.0 / std::f64::consts::PI } else { 1e3 };
     let [su, au, ..] = units(task, lang);
@@ -76,7 +77,7 @@ pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
 /// time scale μ_t written beside μ_φ), the impacts as arrows: a jump of
 /// velocity is an impulse of acceleration (rigid impact), a jump of
 /// acceleration an impulse of jerk (soft impact), as the course marks them.
-pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> String {
+pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> Picture {
     let osc = task.follower.oscillating();
     let w = task.omega;
     let diag = task.program.diagram(720);
@@ -149,7 +150,7 @@ fn signed3(lang: Language, v: f64) -> String {
 
 /// The pressure angle ϑ over the cam angle 0 … 360° (degrees) with the
 /// allowed values on the rise and the return as dashed levels.
-pub fn pressure(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
+pub fn pressure(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> Picture {
     let p = &d.profile;
     let th: Vec<(f64, f64)> = (0..p.phi.len())
         .map(|i| (p.phi[i].to_degrees(), p.pressure[i].to_degrees()))
@@ -181,7 +182,7 @@ pub fn pressure(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetForma
 /// the curve of points K, the admissible region of the cam centre, the
 /// chosen centre O and the lowest roller centre B₀. Flat faces get Geronimus'
 /// s(d²s/dφ²) diagram instead. Coordinates in mm.
-pub fn sizing_diagram(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
+pub fn sizing_diagram(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> Picture {
     let sigma = task.rotation.sign();
     let prog = &task.program;
     let n = d.profile.phi.len();
@@ -383,7 +384,7 @@ fn clip_line(b: (f64, f64, f64, f64), p: Vec2, q: Vec2) -> Option<(Vec2, Vec2)> 
 /// ω_1 as an arc arrow, the rays dividing the phases at the cam angles of the
 /// task (turned against the rotation: the profile meets the follower at
 /// θ0 − σ·φ), the phase angles, and a legend of the circles and profiles.
-pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> String {
+pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) -> Picture {
     let p = &d.profile;
     let work: Vec<(f64, f64)> = p.working.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();
     let pitch: Vec<(f64, f64)> = p.pitch.iter().map(|v| (v.x * 1e3, v.y * 1e3)).collect();

@@ -19,6 +19,7 @@ pub(crate) mod stroke;
 use crate::Error;
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Style, mu_text, num};
 use crate::words::word;
@@ -201,18 +202,18 @@ impl Chart {
         };
         // the grid (not kept as lines to avoid: the names sit on the frame)
         let (x1, y1) = (fx + x.len, fy + y.len);
-        let mut grid = String::new();
+        let mut grid = Vec::new();
         for k in 0..=y.steps() {
             let v = y.grid(k);
             let (_, py) = ch.map(0.0, v);
-            grid.push_str(&format!("M{fx:.3},{py:.3}H{x1:.3}"));
+            grid.push(((fx, py), (x1, py)));
             ch.c.rich_paper((fx - 1.2, py + 0.9), &num(v, y.decimals(), lang), H_SMALL, Anchor::End, "#000");
         }
         match &xk {
             XKind::Phi(marks) => {
                 for (i, phi) in marks.iter().chain(std::iter::once(&xr.1)).enumerate() {
                     let (px, _) = ch.map(*phi, 0.0);
-                    grid.push_str(&format!("M{px:.3},{fy:.3}V{y1:.3}"));
+                    grid.push(((px, fy), (px, y1)));
                     let n = if *phi >= xr.1 - 1e-9 { marks.len() } else { i };
                     ch.c.rich_paper((px, y1 + 4.2), &n.to_string(), H_SMALL, Anchor::Middle, "#000");
                 }
@@ -222,7 +223,7 @@ impl Chart {
                 for k in 0..=x.steps() {
                     let v = x.grid(k);
                     let (px, _) = ch.map(v, 0.0);
-                    grid.push_str(&format!("M{px:.3},{fy:.3}V{y1:.3}"));
+                    grid.push(((px, fy), (px, y1)));
                     if k % 2 == 0 {
                         ch.c.rich_paper((px, y1 + 4.2), &num(v, x.decimals(), lang), H_SMALL, Anchor::Middle, "#000");
                     }
@@ -230,9 +231,8 @@ impl Chart {
                 ch.c.rich_paper((x1, y1 + 8.6), &format!("{s}, {u}"), H_SMALL + 0.5, Anchor::End, "#000");
             }
         }
-        ch.c.raw(&format!(
-            "<path class=\"grid\" d=\"{grid}\" stroke=\"#bbbbbb\" stroke-width=\"0.1\" fill=\"none\"/>"
-        ));
+        let thin = Style::THIN.widened(0.1).colored("#bbbbbb");
+        ch.c.segments_paper(Some("grid"), grid, thin);
         let frame = Style::THIN.widened(0.3);
         for (a, b) in [
             ((fx, fy), (x1, fy)),
@@ -264,7 +264,7 @@ impl Chart {
 
     /// A curve (a path of the data points) with a legend entry.
     fn curve(&mut self, pts: &[(f64, f64)], color: &'static str, name: &str, dash: Option<(f64, f64)>) {
-        let mut d = String::new();
+        let mut d: Vec<(f64, f64)> = Vec::new();
         let mut pen = false;
         let mut kept: Option<(f64, f64)> = None;
         for &(x, y) in pts {
@@ -274,7 +274,10 @@ impl Chart {
                 continue;
             }
             let (px, py) = self.map(x, y);
-            d.push_str(&format!("{}{px:.3},{py:.3} ", if pen { "L" } else { "M" }));
+            if !pen {
+                d.push((f64::NAN, f64::NAN));
+            }
+            d.push((px, py));
             pen = true;
             // the labels placed later keep off the curve: its chords of ≥ 1 mm
             match kept {
@@ -292,11 +295,13 @@ impl Chart {
                 self.c.reserve_segment(k, p);
             }
         }
-        let dash_attr = dash.map_or(String::new(), |(a, b)| format!(" stroke-dasharray=\"{a} {b}\""));
-        self.c.raw(&format!(
-            "<path class=\"curve\" d=\"{}\" stroke=\"{color}\" stroke-width=\"0.6\" fill=\"none\"{dash_attr}/>",
-            d.trim_end()
-        ));
+        let st = Style {
+            width: 0.6,
+            color,
+            dash,
+            fill: None,
+        };
+        self.c.path_paper(Some("curve"), &d, st);
         self.legend_entry(
             name,
             Style {
@@ -364,7 +369,7 @@ impl Chart {
     }
 
     #[doc(hidden)]
-    pub fn finish(&self) -> String {
+    pub fn finish(&self) -> Picture {
         self.c.finish()
     }
 }
@@ -526,7 +531,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
 /// the two tangents of slopes ω_max²/2 and ω_min²/2, at round μ_I and μ_T,
 /// on the Small slot. The tangents meet at O′ = (−I_I, −T₀), far off the
 /// drawing; both are clipped to the frame.
-fn wittenbauer(d: &Dynamics, lang: Language, sheet: SheetFormat) -> String {
+fn wittenbauer(d: &Dynamics, lang: Language, sheet: SheetFormat) -> Picture {
     let wd = |k: &str| word(lang, &format!("dynamics.{k}")).to_string();
     let c = &d.cycle;
     let w = &d.wittenbauer;

@@ -11,6 +11,7 @@ use super::{Analysis, Row, json::pair_name};
 use crate::linkage::Loaded;
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm};
+use crate::picture::Picture;
 use crate::project::Language;
 use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot_in};
 use crate::words::word;
@@ -64,7 +65,7 @@ struct Arrow {
 /// forces are the core's polygon number `which` (the groups in order, then
 /// the input link with the balancing force), so the drawn polygon is the one
 /// whose closure the core guarantees.
-fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, task: &TaskSource) -> String {
+fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, task: &TaskSource) -> Picture {
     let lang = task.lang;
     let m = &l.mech;
     let f = &r.fs;
@@ -274,7 +275,7 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
 /// Zhukovsky's lever: the velocity plan turned by 90° with the forces at
 /// the images of their points, at a round μ_v; the labels placed clear of
 /// the lines and of each other.
-fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
+fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let lang = task.lang;
     let m = &l.mech;
     let r = &a.detail;

@@ -15,6 +15,7 @@ use tmm_geom::Vec2;
 use tmm_linkage::forces::ForceSolution;
 
 use crate::output::num;
+use crate::picture::Picture;
 use crate::project::Language;
 use crate::svg::{Anchor, Canvas, Series, Style, plot_in};
 use crate::words::word;
@@ -320,7 +321,7 @@ impl ReactionCycle {
 
     /// The diagram of `name` over the cycle: a reaction's x and y
     /// components and magnitude, or a guide couple.
-    pub fn diagram(&self, lang: Language, name: &str) -> Option<String> {
+    pub fn diagram(&self, lang: Language, name: &str) -> Option<Picture> {
         let (j, couple) = self.index(name)?;
         let x = |k: usize| self.psi[k].to_degrees();
         let xl = word(lang, "forces.cycle_angle");
@@ -383,7 +384,7 @@ impl ReactionCycle {
     /// origin over the cycle, on equal scales, marked every 30° of the
     /// cycle; `polar` draws it on a polar grid (circles of |R|, rays every
     /// 30° of its angle) instead of Cartesian axes.
-    pub fn hodograph(&self, lang: Language, name: &str, polar: bool) -> Option<String> {
+    pub fn hodograph(&self, lang: Language, name: &str, polar: bool) -> Option<Picture> {
         let (j, couple) = self.index(name)?;
         if couple {
             return None;

@@ -7,6 +7,7 @@ use tmm_gears::contour::{Boundary, Contour};
 
 use crate::labels::{CHAR_WIDTH, Placer, finish, num, plain};
 use crate::paper::{Slot, slot_mm};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Canvas, Style};
 use crate::words::word;
@@ -86,7 +87,7 @@ pub fn plot_canvas(c: &Contour, sheet: SheetFormat) -> Canvas {
 /// The contour as SVG for the Small slot of `sheet`; `chosen` marks a point
 /// with its label (the label is written in English drawings only; the
 /// shifts are written in every language).
-pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Language, sheet: SheetFormat) -> String {
+pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Language, sheet: SheetFormat) -> Picture {
     let (pw, ph) = slot_mm(Slot::Small, sheet);
     let h = if pw >= 190.0 { 3.5 } else { 2.5 };
     let hs = 2.5;

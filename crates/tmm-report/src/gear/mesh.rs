@@ -15,8 +15,9 @@ use tmm_gears::generate::ToothProfile;
 use tmm_gears::{Kind, Pair};
 
 use crate::dxf_out::DxfDoc;
-use crate::labels::{CHAR_WIDTH, DASH_DOT, DASH_DOT_DOT, H_HEAD, H_LABEL, Placer, Rect, finish, label_box, num, plain};
+use crate::labels::{CHAR_WIDTH, DASH_DOT, DASH_DOT_DOT, H_HEAD, H_LABEL, Placer, Rect, finish_all, label_box, num, plain};
 use crate::paper::{Scale, Slot, slot_mm, standard_scale};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Canvas, Style};
 use crate::words::word;
@@ -291,7 +292,7 @@ fn key_points(pair: &Pair) -> Vec<Pt> {
 /// and the pole P, the working parts of the profiles, the arcs of action,
 /// the centre distance a_w and the working pressure angle α_w dimensioned,
 /// the parameter table and the legend.
-pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Language, sheet: SheetFormat) -> String {
+pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Language, sheet: SheetFormat) -> Picture {
     let sc = scene(pair, t1, t2);
     let Some(lay) = mesh_layout(pair, sheet) else {
         return Canvas::new(10.0, 10.0).finish();
@@ -530,11 +531,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
         c.line_paper((tx, y), (tx + 12.0, y), st);
         side.put_left((tx + 14.0, y), &name, 3.0, "#000");
     }
-    let mut svg = finish(c.finish(), &lab, Some(lay.scale.text));
-    if let Some(i) = svg.rfind("</svg>") {
-        svg.insert_str(i, side.svg());
-    }
-    svg
+    finish_all(c.finish(), &[&lab, &side], Some(lay.scale.text))
 }
 
 /// The paper x of the centre distance's dimension line: 10 mm from the

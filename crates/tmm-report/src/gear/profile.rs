@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 use tmm_gears::generate::ToothProfile;
 
 use crate::dxf_out::DxfDoc;
+use crate::picture::Picture;
 use crate::project::Language;
 use crate::svg::{Anchor, Canvas, Style};
 use crate::words::word;
@@ -30,7 +31,7 @@ pub fn profiles_csv(t1: &ToothProfile, t2: &ToothProfile) -> String {
 }
 
 /// One tooth of each wheel side by side as SVG polylines, captioned in `lang`.
-pub fn profiles_svg(t1: &ToothProfile, t2: &ToothProfile, lang: Language) -> String {
+pub fn profiles_svg(t1: &ToothProfile, t2: &ToothProfile, lang: Language) -> Picture {
     let mut c = Canvas::new(297.0, 210.0);
     for (k, t) in [t1, t2].iter().enumerate() {
         let pts: Vec<(f64, f64)> = t.tooth_outline().iter().map(|&(x, y)| (x * 1e3, y * 1e3)).collect();

@@ -4,12 +4,13 @@
 use tmm_gears::Pair;
 
 use crate::paper::{Slot, slot_mm};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Series, plot_in};
 use crate::words::word;
 
 /// The specific-sliding diagram over the active line (ϑ clipped to [−4, 1]).
-pub fn sliding_svg(pair: &Pair, lang: Language, sheet: SheetFormat) -> String {
+pub fn sliding_svg(pair: &Pair, lang: Language, sheet: SheetFormat) -> Picture {
     let tab = pair.sliding_table(101);
     let clip = |v: f64| if v.is_finite() { v.clamp(-4.0, 1.0) } else { f64::NAN };
     let a: Vec<(f64, f64)> = tab.iter().map(|q| (q.s * 1e3, clip(q.theta1))).collect();
@@ -35,11 +36,8 @@ pub fn sliding_svg(pair: &Pair, lang: Language, sheet: SheetFormat) -> String {
         w,
         h,
     );
-    if lang == Language::En {
-        return svg;
-    }
-    // the plot's tick labels are numbers: ru and uk write the decimal comma
-    decimal_comma(&svg)
+    // the plot writes its tick labels with the decimal comma of ru and uk
+    svg
 }
 
 /// Turn the decimal points of the numbers inside `<text>` elements into

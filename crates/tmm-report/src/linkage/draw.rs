@@ -14,6 +14,7 @@ use tmm_linkage::plans::{PlanVector, VectorKind};
 use super::{Analysis, Loaded};
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
+use crate::picture::Picture;
 use crate::project::Language;
 use crate::svg::{Anchor, Canvas, Style, comma, mu_text, num};
 use crate::words::word;
@@ -79,8 +80,8 @@ pub fn plans_at(l: &Loaded, sol: &Solution, phi: f64, task: &TaskSource) -> (Str
     let p = tmm_linkage::plans::plans(&l.mech, sol);
     let pos = format!("φ_1 = {}°", num(phi.to_degrees(), 1, task.lang));
     (
-        plan(task, Kind::Velocity, &p.velocity, &pos),
-        plan(task, Kind::Acceleration, &p.acceleration, &pos),
+        plan(task, Kind::Velocity, &p.velocity, &pos).into(),
+        plan(task, Kind::Acceleration, &p.acceleration, &pos).into(),
     )
 }
 
@@ -150,7 +151,7 @@ fn xy(v: Vec2) -> (f64, f64) {
 /// paths of the joints sampled every degree, the positions numbered at the
 /// crank pin, the analysed one bold with its joints lettered and its links
 /// numbered, the ω1 arrow.
-fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
+fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let lang = task.lang;
     let m = &l.mech;
     let (w, h) = slot_mm(Slot::Scheme, task.sheet);
@@ -347,7 +348,7 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> String {
 }
 
 /// The kinematic diagrams: (file, SVG).
-fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, String)> {
+fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, Picture)> {
     let lang = task.lang;
     let w = l.mech.crank.omega.abs();
     let lin = a.reading.output.kind == tmm_linkage::cycle::OutputKind::Linear;
@@ -430,7 +431,7 @@ pub(crate) fn cycle_diagram(
     marks: &[(f64, String)],
     omega: f64,
     dots: Option<CycleDots<'_>>,
-) -> String {
+) -> Picture {
     let lang = task.lang;
     let (w, h) = slot_mm(Slot::Diagram, task.sheet);
     let mut c = Canvas::new(w, h);
@@ -504,35 +505,18 @@ pub(crate) fn cycle_diagram(
     }
     // the curve, thick
     let curve: Vec<(f64, f64)> = pts.iter().map(|p| map(p.0, p.1)).collect();
-    let mut d = String::new();
-    let mut pen = false;
-    for &(x, y) in &curve {
-        if !(x.is_finite() && y.is_finite()) {
-            pen = false;
-            continue;
-        }
-        d.push_str(&format!("{}{x:.3},{y:.3} ", if pen { "L" } else { "M" }));
-        pen = true;
-    }
-    c.raw(&format!(
-        "<path class=\"curve\" d=\"{}\" stroke=\"#000\" stroke-width=\"0.7\" fill=\"none\"/>",
-        d.trim_end()
-    ));
+    c.path_paper(Some("curve"), &curve, Style::THICK.widened(0.7).colored("#000"));
     let dot_paper: Vec<(f64, f64)> = dot_pts.iter().map(|p| map(p.0, p.1)).collect();
     if let Some(dots) = &dots {
-        let circle = |class: &str, (px, py): (f64, f64)| {
-            format!(
-                "<circle class=\"{class}\" cx=\"{px:.3}\" cy=\"{py:.3}\" r=\"1.1\" stroke=\"#0050c0\" stroke-width=\"0.35\" fill=\"none\"/>"
-            )
-        };
+        let mark = Style::THIN.widened(0.35).colored("#0050c0");
         for &(x, y) in dots.points.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
-            c.raw(&circle("dot", map(x, y)));
+            c.marker_paper("dot", map(x, y), 1.1, mark);
         }
         // the legend, top right inside the paper
         let (lx, ly) = (w - right - 52.0, top - 3.0);
         c.line_paper((lx, ly - 0.9), (lx + 6.0, ly - 0.9), Style::THIN.widened(0.7));
         c.rich_paper((lx + 7.5, ly), dots.curve_name, H_SMALL, Anchor::Start, "#000");
-        c.raw(&circle("legend", (lx + 3.0, ly + 3.5 - 0.9)));
+        c.marker_paper("legend", (lx + 3.0, ly + 3.5 - 0.9), 1.1, mark);
         c.rich_paper((lx + 7.5, ly + 3.5), dots.dots_name, H_SMALL, Anchor::Start, "#000");
     }
     // position numbers under the axis, clear of the curve
@@ -596,7 +580,7 @@ fn vector_label(label: &str) -> String {
 /// images of the points (a, b, c, s2 …), the points n of the normal
 /// accelerations, each vector in its `<g class="plan-vector">` with its
 /// label and kind for reading back.
-fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> String {
+fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> Picture {
     let lang = task.lang;
     let (w, h) = slot_mm(Slot::Plan, task.sheet);
     let mut c = Canvas::new(w, h);
@@ -649,11 +633,7 @@ fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> Stri
             VectorKind::Absolute => Style::THICK.widened(0.5),
             _ => Style::THIN.widened(0.35),
         };
-        c.raw(&format!(
-            "<g class=\"plan-vector\" data-label=\"{}\" data-kind=\"{:?}\">",
-            crate::svg::escape(&p.label),
-            p.kind
-        ));
+        c.begin_group_data("plan-vector", &[("data-label", &p.label), ("data-kind", &format!("{:?}", p.kind))]);
         c.arrow(xy(p.from), xy(p.to), st, 3.0);
         c.end_group();
     }

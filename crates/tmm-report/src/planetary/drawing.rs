@@ -9,6 +9,7 @@ use super::analysis::Analysis;
 use super::text::{fraction_text, teeth_text};
 use crate::labels::{H_LABEL, Placer, finish, num};
 use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Style};
 use crate::words::word;
@@ -20,7 +21,7 @@ const RED: &str = "#c0392b";
 #[derive(Debug, Clone)]
 pub struct Sheet {
     /// The SVG text.
-    pub svg: String,
+    pub svg: Picture,
     /// `u_1H` read off the drawn velocity picture (paper slopes).
     pub ratio_picture: f64,
     /// `u_1H` read off the drawn angular-velocity diagram (paper segments).

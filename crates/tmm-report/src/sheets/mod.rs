@@ -10,30 +10,35 @@
 //! 3. the gear pair and the planetary train (`gear/`, `planetary/`);
 //! 4. the cam (`cam/`).
 //!
-//! Each sheet is `sheets/sheet-N.svg` (self-contained: size in mm, the
-//! drawings nested as `<svg>` viewports with their own viewBox, so their
-//! scales and μ stay true) and `sheets/sheet-N.dxf`, the same sheet read
-//! back by [`svg_to_dxf`]. The drawings are packed by [`layout`] without
-//! overlap and off the title block; what does not fit goes to a
-//! continuation sheet (the drawings the course requires) or is left out
-//! with a note on the sheet (the optional ones). See `docs/sheets.md`.
+//! The sheets place the drawings as made ([`Picture`], kept by the run's
+//! [`Documents`] beside their SVG text), nothing is read back from SVG:
+//! `sheets/sheet-N.svg` nests each drawing's elements as an `<svg>`
+//! viewport of its own size (so its scales and μ stay true) and draws the
+//! frame, graph 26 and the title block form 1 of [`tmm_draw::eskd`];
+//! `sheets/sheet-N.dxf` is [`tmm_draw::dxf`]'s rendering of one scene
+//! holding the same frame and every drawing's scene moved to its place.
+//! The drawings are packed by [`layout`] without overlap and off the title
+//! block; what does not fit goes to a continuation sheet (the drawings the
+//! course requires) or is left out with a note on the sheet (the optional
+//! ones). See `docs/sheets.md`.
 
 pub mod frame;
 pub mod layout;
-pub mod svg_to_dxf;
 pub mod title_block;
-pub mod xml;
 
-use std::collections::HashSet;
 use std::fmt::Write as _;
+use std::sync::Arc;
+
+use kurbo::{Point, Vec2};
+use tmm_draw::{Scene, TextHeight};
 
 use crate::Error;
-use crate::dxf_out::DxfDoc;
 use crate::output::Documents;
+use crate::picture::Picture;
 use crate::project::{Language, Project};
 use crate::svg::escape;
 use crate::words::word;
-use frame::{Align, FONTS, Mark, inner_frame, marks_svg, text_width};
+use frame::{FONTS, inner_frame, text_width};
 use layout::{Packer, Rect};
 
 /// The clear distance between drawings and from the frame, mm.
@@ -129,9 +134,11 @@ pub struct Drawing {
     pub required: bool,
     pub w: f64,
     pub h: f64,
-    pub view_box: [f64; 4],
     pub scale: Option<String>,
-    pub body: String,
+    /// The drawing as made.
+    pub pic: Arc<Picture>,
+    /// Its number on the sheets: the prefix of its ids (`d7-`).
+    pub id: usize,
 }
 
 /// A drawing as placed on a sheet.
@@ -152,7 +159,7 @@ pub struct Sheet {
     pub number: usize,
     /// The sheet's title (наименование) in the title block.
     pub title: String,
-    /// The scale of the main drawing (`1:2`), empty when none carries one.
+    /// The scale of the main drawing (`1:2`), "—" when none carries one.
     pub scale: String,
     /// The drawings on it.
     pub placed: Vec<Placed>,
@@ -162,6 +169,8 @@ pub struct Sheet {
     pub note: Option<Rect>,
     /// The SVG text.
     pub svg: String,
+    /// The whole sheet as one scene (its DXF's source).
+    pub scene: Scene,
 }
 
 /// The caption of a drawing in `lang`: the `[sheet]` word for its path
@@ -220,135 +229,50 @@ fn matches(pattern: &str, stem: &str) -> bool {
     }
 }
 
-/// Read a drawing's size, viewBox, scale and inner markup; `None` when it
-/// is not an SVG with a size in absolute units.
+/// A drawing of the run at `path` as the sheets take it: its size, scale
+/// and caption; `None` when the document is no drawing made by the canvas.
 #[doc(hidden)]
-pub fn read_drawing(path: &str, text: &str, lang: Language, required: bool, k: usize) -> Option<Drawing> {
-    let toks = xml::tokens(text).ok()?;
-    let (root, body_from) = toks.iter().find_map(|t| match t {
-        xml::Token::Start {
-            name: "svg",
-            to,
-            empty: false,
-            ..
-        } => Some((t, *to)),
-        _ => None,
-    })?;
-    let body_to = text.rfind("</svg>")?;
-    if body_to < body_from {
+pub fn drawing_of(docs: &Documents, path: &str, lang: Language, required: bool, id: usize) -> Option<Drawing> {
+    let pic = docs.picture_shared(path)?;
+    if !(pic.width > 0.0 && pic.height > 0.0) {
         return None;
     }
-    let w = root.attr("width").and_then(svg_to_dxf::length_mm)?;
-    let h = root.attr("height").and_then(svg_to_dxf::length_mm)?;
-    if !(w > 0.0 && h > 0.0) {
-        return None;
-    }
-    let vb: Vec<f64> = root
-        .attr("viewBox")
-        .map(|v| {
-            v.split([' ', ','])
-                .filter(|s| !s.is_empty())
-                .filter_map(|s| s.parse().ok())
-                .collect()
-        })
-        .unwrap_or_default();
-    let view_box = if vb.len() == 4 && vb[2] > 0.0 && vb[3] > 0.0 {
-        [vb[0], vb[1], vb[2], vb[3]]
-    } else {
-        [0.0, 0.0, w, h]
-    };
-    // unique ids: every id of the drawing gets the drawing's prefix
-    let ids: HashSet<String> = toks.iter().filter_map(|t| t.attr("id")).map(escape).collect();
-    let body = prefix_ids(&text[body_from..body_to], &ids, &format!("d{k}-"));
     Some(Drawing {
         path: path.to_string(),
         caption: caption(path, lang),
         required,
-        w,
-        h,
-        view_box,
-        scale: root.attr("data-scale").map(str::to_string).filter(|s| !s.trim().is_empty()),
-        body,
+        w: pic.width,
+        h: pic.height,
+        scale: pic.attr("data-scale").map(str::to_string).filter(|s| !s.trim().is_empty()),
+        pic,
+        id,
     })
-}
-
-/// The markup `body` with `prefix` put before every id of `ids` (as
-/// written in the markup, escaped) where it is defined, `id="X"`, and where
-/// it is referred to, `#X"` (`href="#X"`) and `#X)` (`url(#X)`), in one
-/// pass over the text: at each `id="` or `#` the name up to the closing
-/// `"` (or `)`) is looked up in the set, so that an id that begins another
-/// (`a` and `ab`) takes only its own places. Anything else (`fill="#abc"`
-/// when `abc` is no id) is copied as it is.
-fn prefix_ids(body: &str, ids: &HashSet<String>, prefix: &str) -> String {
-    if ids.is_empty() {
-        return body.to_string();
-    }
-    let bytes = body.as_bytes();
-    // no name is longer than the longest id: the search for its end stops there
-    let longest = ids.iter().map(String::len).max().unwrap_or(0);
-    let end_of = |start: usize, c: u8| {
-        let lim = bytes.len().min(start + longest + 1);
-        bytes[start..lim].iter().position(|&b| b == c).map(|e| start + e)
-    };
-    let mut out = String::with_capacity(body.len() + body.len() / 16);
-    let mut copied = 0;
-    let mut i = 0;
-    while let Some(off) = body[i..].find(['#', 'i']) {
-        let at = i + off;
-        // where a name may start, and the candidates for its end: the first
-        // `"`, and after `#` also the first `)`, the longer name first
-        let (start, ends) = if bytes[at] == b'#' {
-            let start = at + 1;
-            match (end_of(start, b'"'), end_of(start, b')')) {
-                (Some(q), Some(p)) => (start, [Some(q.max(p)), Some(q.min(p))]),
-                (q, p) => (start, [q.or(p), None]),
-            }
-        } else if body[at..].starts_with("id=\"") {
-            let start = at + 4;
-            (start, [end_of(start, b'"'), None])
-        } else {
-            i = at + 1;
-            continue;
-        };
-        match ends.into_iter().flatten().find(|&end| ids.contains(&body[start..end])) {
-            Some(end) => {
-                out.push_str(&body[copied..start]);
-                out.push_str(prefix);
-                out.push_str(&body[start..end]);
-                copied = end;
-                i = end;
-            }
-            None => i = at + 1,
-        }
-    }
-    out.push_str(&body[copied..]);
-    out
 }
 
 /// The drawings of one template found in the run, in the course's order.
 fn collect(docs: &Documents, t: &Template, lang: Language, next_id: &mut usize) -> (Vec<Drawing>, Vec<String>) {
-    let svgs: Vec<(&str, &str)> = docs
+    let svgs: Vec<&str> = docs
         .iter()
         .filter(|d| d.extension() == "svg")
         .filter(|d| t.folders.iter().any(|f| d.path.starts_with(&format!("{f}/"))))
-        .filter_map(|d| d.as_text().map(|s| (d.path.as_str(), s)))
+        .map(|d| d.path.as_str())
         .collect();
-    let mut picked: Vec<(usize, bool, &str, &str)> = Vec::new();
-    for (path, text) in &svgs {
+    let mut picked: Vec<(usize, bool, &str)> = Vec::new();
+    for path in &svgs {
         let stem = path.trim_end_matches(".svg");
         let pos = t.order.iter().position(|p| matches(p.trim_start_matches('!'), stem));
         let (rank, required) = match pos {
             Some(p) => (p, t.order[p].starts_with('!')),
             None => (t.order.len(), false),
         };
-        picked.push((rank, required, path, text));
+        picked.push((rank, required, path));
     }
     picked.sort_by_key(|p| p.0); // stable: the run's order within a rank
     let mut out = Vec::new();
     let mut unreadable = Vec::new();
-    for (_, required, path, text) in picked {
+    for (_, required, path) in picked {
         *next_id += 1;
-        match read_drawing(path, text, lang, required, *next_id) {
+        match drawing_of(docs, path, lang, required, *next_id) {
             Some(d) => out.push(d),
             None => unreadable.push(caption(path, lang)),
         }
@@ -469,13 +393,16 @@ type Packing = (Vec<(usize, Rect)>, Option<Rect>);
 /// A page before numbering: template, drawings, placed, left out, note, continued.
 type Page = (usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool);
 
-const NOTE_MM: f64 = 3.5;
+/// The note's lettering, mm (GOST 2.304).
+const NOTE_H: TextHeight = TextHeight::H3_5;
 const NOTE_LINE_MM: f64 = 5.5;
-const NOTE_CHARS: usize = 80;
+/// The note's widest line, mm: twice the title block.
+const NOTE_W_MM: f64 = 2.0 * title_block::WIDTH_MM;
 
 fn note_lines(lang: Language, left_out: &[String]) -> Vec<String> {
     let text = format!("{}: {}.", word(lang, "sheet.left_out"), left_out.join("; "));
-    title_block::wrap(&text, NOTE_CHARS, 6)
+    // wrapped by type B's letter widths at the note's size, never narrowed
+    tmm_draw::wrap(&text, NOTE_H, NOTE_W_MM).unwrap_or_else(|| vec![text.clone()])
 }
 
 /// Lay out the sheets of a run: the drawings of each course sheet found in
@@ -531,7 +458,11 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
                 (placed, None)
             } else {
                 let lines = note_lines(lang, &out);
-                let nw = lines.iter().map(|l| text_width(l, NOTE_MM)).fold(0.0, f64::max).min(tb.w * 2.0);
+                let nw = lines
+                    .iter()
+                    .map(|l| tmm_draw::Rich::plain_text(l).width(NOTE_H))
+                    .fold(0.0, f64::max)
+                    .min(NOTE_W_MM);
                 let nh = NOTE_LINE_MM * (lines.len() as f64 + 2.0);
                 let (placed, note) = best_pack(&ds, &left, format, Some((nw, nh)));
                 out = left_out.clone();
@@ -569,7 +500,9 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
             .iter()
             .filter(|d| placed.iter().any(|p| p.source == d.path))
             .find_map(|d| d.scale.clone())
-            .unwrap_or_default();
+            // a sheet of diagrams drawn to no one scale: a dash in the
+            // scale field, as ESKD fills a field that does not apply
+            .unwrap_or_else(|| "—".to_string());
         let mut sheet = Sheet {
             number: n + 1,
             title,
@@ -578,8 +511,10 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
             left_out,
             note,
             svg: String::new(),
+            scene: Scene::new(1.0, 1.0, tmm_draw::Scale::NATURAL, tmm_draw::Thickness::A1)
+                .unwrap_or_else(|_| unreachable!("a 1 × 1 mm scene")),
         };
-        sheet.svg = sheet_svg(&sheet, &ds, project, count);
+        (sheet.svg, sheet.scene) = sheet_parts(&sheet, &ds, project, count);
         sheets.push(sheet);
     }
     sheets
@@ -617,9 +552,100 @@ fn num(x: f64) -> String {
     if s == "-0" { "0".to_string() } else { s.to_string() }
 }
 
-fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> String {
+/// The title block's words and fields of a sheet.
+fn title_block_of(sheet: &Sheet, project: &Project, count: usize) -> tmm_draw::eskd::TitleBlock {
+    let lang = project.lang;
+    let w = |k: &str| word(lang, k).to_string();
+    let five = |k: [&str; 5]| k.map(w);
+    let organisation: Vec<&str> = [&project.university, &project.department, &project.group]
+        .into_iter()
+        .map(|s| s.trim())
+        .filter(|s| !s.is_empty())
+        .collect();
+    tmm_draw::eskd::TitleBlock {
+        captions: tmm_draw::eskd::Captions {
+            changes: five([
+                "sheet.tb_change",
+                "sheet.tb_sheet",
+                "sheet.tb_document",
+                "sheet.tb_signature",
+                "sheet.tb_date",
+            ]),
+            roles: five([
+                "sheet.tb_drawn",
+                "sheet.tb_checked",
+                "sheet.tb_tech_control",
+                "sheet.tb_norm_control",
+                "sheet.tb_approved",
+            ]),
+            right: five([
+                "sheet.tb_letter",
+                "sheet.tb_mass",
+                "sheet.tb_scale",
+                "sheet.tb_sheet",
+                "sheet.tb_sheets",
+            ]),
+        },
+        designation: project.designation.clone(),
+        title: sheet.title.clone(),
+        scale: sheet.scale.clone(),
+        sheet: sheet.number,
+        sheets: count,
+        student: project.student.clone(),
+        teacher: project.teacher.clone(),
+        organisation: organisation.join(", "),
+        letter: w("sheet.tb_letter_value"),
+    }
+}
+
+/// Where an element of the ESKD sheet belongs: 0 the frame, 1 graph 26,
+/// 2 the title block (by the corner it lies in).
+fn frame_part(it: &tmm_draw::Item, w: f64, h: f64) -> u8 {
+    let pts: Vec<Point> = match &it.shape {
+        tmm_draw::Shape::Stroke { geom, .. } => geom.flatten(0.5),
+        tmm_draw::Shape::Text(t) => vec![t.at],
+        _ => Vec::new(),
+    };
+    let all = |f: &dyn Fn(&Point) -> bool| !pts.is_empty() && pts.iter().all(f);
+    let (l, e) = (frame::LEFT_MM, frame::EDGE_MM);
+    if all(&|p| p.x >= w - e - title_block::WIDTH_MM - 1e-6 && p.y <= e + title_block::HEIGHT_MM + 1e-6) {
+        2
+    } else if all(&|p| p.x <= l + 70.0 + 1e-6 && p.y >= h - e - 14.0 - 1e-6) {
+        1
+    } else {
+        0
+    }
+}
+
+/// A text on the sheet's scene: plain words at a GOST 2.304 size.
+fn sheet_text(at: Point, size: TextHeight, s: &str, anchor: tmm_draw::Anchor) -> tmm_draw::Text {
+    tmm_draw::Text {
+        at,
+        height: size,
+        rich: tmm_draw::Rich::plain_text(s),
+        anchor,
+        rotation_deg: 0.0,
+    }
+}
+
+/// A sheet's SVG and its whole scene (the frame, the captions, the note and
+/// every drawing's scene at its place), from which the DXF is written.
+fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> (String, Scene) {
     let lang = project.lang;
     let (w, h) = project.sheet.size_mm();
+    let format = match project.sheet {
+        crate::project::SheetFormat::A1 => tmm_draw::eskd::Format::A1,
+        crate::project::SheetFormat::A2 => tmm_draw::eskd::Format::A2,
+    };
+    let tb = title_block_of(sheet, project, count);
+    let mut scene = match tmm_draw::eskd::sheet(format, &tb) {
+        Ok((sc, _)) => sc,
+        // the ESKD sheet is made of finite, checked numbers: it cannot fail
+        Err(_) => Scene::new(w, h, tmm_draw::Scale::NATURAL, tmm_draw::Thickness::A1)
+            .unwrap_or_else(|_| unreachable!("a sheet's size is positive")),
+    };
+    let frame_scene = scene.clone();
+    scene.layer("CAPTION", 7, tmm_draw::LineType::Thin);
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -637,29 +663,39 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
             continue;
         };
         let (_, _, size) = item_size(d);
-        let mut cap = String::new();
+        let cap_y = p.rect.y - 0.5 * (CAPTION_STRIP_MM - size) - 0.5;
         let _ = write!(
-            cap,
+            s,
             "<text class=\"caption\" x=\"{}\" y=\"{}\" font-size=\"{size}\" font-family=\"{FONTS}\" font-style=\"italic\" text-anchor=\"middle\" fill=\"#000000\">{}</text>",
             num(p.rect.x + 0.5 * p.rect.w),
-            num(p.rect.y - 0.5 * (CAPTION_STRIP_MM - size) - 0.5),
+            num(cap_y),
             escape(&d.caption)
         );
         let scale = d.scale.as_ref().map_or(String::new(), |k| format!(" data-scale=\"{}\"", escape(k)));
         let _ = writeln!(
             s,
-            "{cap}\n<svg class=\"drawing\" data-source=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"{} {} {} {}\"{scale} overflow=\"hidden\">{}</svg>",
+            "\n<svg class=\"drawing\" data-source=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\"{scale} overflow=\"hidden\">{}</svg>",
             escape(&d.path),
             num(p.rect.x),
             num(p.rect.y),
             num(p.rect.w),
             num(p.rect.h),
-            num(d.view_box[0]),
-            num(d.view_box[1]),
-            num(d.view_box[2]),
-            num(d.view_box[3]),
-            d.body
+            num(d.w),
+            num(d.h),
+            d.pic.body(&format!("d{}-", d.id))
         );
+        // the same on the scene: the caption and the drawing moved to its box (y up)
+        let size_h = TextHeight::new(size).unwrap_or(TextHeight::H3_5);
+        let _ = scene.text(
+            "CAPTION",
+            sheet_text(
+                Point::new(p.rect.x + 0.5 * p.rect.w, h - cap_y),
+                size_h,
+                &d.caption,
+                tmm_draw::Anchor::Middle,
+            ),
+        );
+        scene.insert(&d.pic.scene(), Vec2::new(p.rect.x, h - p.rect.bottom()));
     }
     s.push_str("</g>\n");
     if let Some(r) = sheet.note {
@@ -672,41 +708,24 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
             num(r.w),
             num(r.h)
         );
-        let marks: Vec<Mark> = lines
-            .iter()
-            .enumerate()
-            .map(|(i, l)| Mark::Text {
-                at: (r.x, r.y + NOTE_LINE_MM * (i as f64 + 1.0)),
-                size: NOTE_MM,
-                align: Align::Start,
-                text: l.clone(),
-                squeeze: (text_width(l, NOTE_MM) > r.w).then_some(r.w),
-                turned: false,
-            })
-            .collect();
-        s.push_str(&marks_svg(&marks));
+        let mut note = Scene::new(w, h, tmm_draw::Scale::NATURAL, tmm_draw::Thickness::A1)
+            .unwrap_or_else(|_| unreachable!("a sheet's size is positive"));
+        for (i, l) in lines.iter().enumerate() {
+            let at = Point::new(r.x, h - (r.y + NOTE_LINE_MM * (i as f64 + 1.0)));
+            let t = sheet_text(at, NOTE_H, l, tmm_draw::Anchor::Start);
+            let _ = note.text("TEXT", t.clone());
+            let _ = scene.text("TEXT", t);
+        }
+        s.push_str(&tmm_draw::svg::items_markup(&note, |_| true));
         s.push_str("</g>\n");
     }
-    s.push_str("<g id=\"frame\">\n");
-    s.push_str(&marks_svg(&frame::frame_marks(project.sheet)));
-    s.push_str("</g>\n<g id=\"graph-26\">\n");
-    let g26 = frame::graph_26_place(inner_frame(project.sheet));
-    s.push_str(&marks_svg(&frame::graph_26_marks(g26, &project.designation)));
-    s.push_str("</g>\n<g id=\"title-block\">\n");
-    let fields = title_block::Fields {
-        designation: project.designation.clone(),
-        title: sheet.title.clone(),
-        scale: sheet.scale.clone(),
-        sheet: sheet.number,
-        sheets: count,
-        student: project.student.clone(),
-        teacher: project.teacher.clone(),
-        organisation: vec![project.university.clone(), project.department.clone(), project.group.clone()],
-    };
-    let tb = title_block::place(inner_frame(project.sheet));
-    s.push_str(&marks_svg(&title_block::marks(tb, &fields, lang)));
-    s.push_str("</g>\n</svg>\n");
-    s
+    for (id, part) in [("frame", 0u8), ("graph-26", 1), ("title-block", 2)] {
+        let _ = writeln!(s, "<g id=\"{id}\">");
+        s.push_str(&tmm_draw::svg::items_markup(&frame_scene, |it| frame_part(it, w, h) == part));
+        s.push_str("</g>\n");
+    }
+    s.push_str("</svg>\n");
+    (s, scene)
 }
 
 /// The sheets of a run as documents: `sheets/sheet-N.svg` and
@@ -720,14 +739,11 @@ fn sheet_svg(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> 
 /// assert!(run.docs.get("sheets/sheet-1.dxf").is_some());
 /// ```
 pub fn sheet_documents(docs: &Documents, project: &Project) -> Result<Documents, Error> {
-    let (_, h) = project.sheet.size_mm();
     let mut out = Documents::like(docs);
     for sheet in layout_sheets(docs, project) {
-        let mut dxf = DxfDoc::new();
-        svg_to_dxf::convert(&sheet.svg, &mut dxf, h)
-            .map_err(|e| Error::Io(format!("sheet {}: cannot convert to DXF: {e}", sheet.number)))?;
+        let dxf = tmm_draw::dxf::render(&sheet.scene);
         out.add_text(format!("sheets/sheet-{}.svg", sheet.number), sheet.svg)?;
-        out.add_bytes(format!("sheets/sheet-{}.dxf", sheet.number), dxf.to_bytes()?)?;
+        out.add_text(format!("sheets/sheet-{}.dxf", sheet.number), dxf)?;
     }
     Ok(out)
 }

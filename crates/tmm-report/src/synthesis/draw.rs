@@ -16,6 +16,7 @@ use super::Solved;
 use crate::Error;
 use crate::output::Documents;
 use crate::paper::{Scale, Slot, slot_mm, standard_scale};
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot_in};
 use crate::words::word;
@@ -143,7 +144,7 @@ const H_SMALL: f64 = 2.5;
 /// slot of a sheet of `sheet`, with the words of `lang`: the root carries
 /// `data-scale` and `data-mu-l`, the chord between the driven point's
 /// extremes is the line of class `chord`.
-pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
+pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let y = &s.syn;
     let k = &y.construction;
@@ -313,10 +314,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
         c.to_paper(k.extremes[0].x, k.extremes[0].y),
         c.to_paper(k.extremes[1].x, k.extremes[1].y),
     );
-    c.raw(&format!(
-        "<line class=\"chord\" x1=\"{:.4}\" y1=\"{:.4}\" x2=\"{:.4}\" y2=\"{:.4}\" stroke=\"#000\" stroke-width=\"0.35\"/>",
-        pa.0, pa.1, pb.0, pb.1
-    ));
+    c.line_classed("chord", pa, pb, Style::THIN.widened(0.35).colored("#000"));
     c.reserve_segment(pa, pb);
     if !function {
         c.line(xy(k.pivot), xy(k.extremes[0]), Style::DASHED);
@@ -385,7 +383,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> String {
 
 /// The pressure angle at each dyad's inner joint over the cycle, from the
 /// start of the working stroke, by the linkage core.
-pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String, Error> {
+pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<Picture, Error> {
     let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let m = Mechanism::new(&s.syn.def).map_err(|e| Error::input("synthesis", e))?;
     // K = 1 (an axial crank-slider): neither stroke is the slower one; the
@@ -483,7 +481,7 @@ pub fn pressure(s: &Solved, lang: Language, sheet: SheetFormat) -> Result<String
 /// angle φ, for a crank that does not turn fully (no cycle, no working
 /// stroke): sampled each degree, a curve broken where the mechanism does not
 /// assemble.
-fn pressure_partial(m: &Mechanism, lang: Language, sheet: SheetFormat) -> String {
+fn pressure_partial(m: &Mechanism, lang: Language, sheet: SheetFormat) -> Picture {
     let wd = |k: &str| word(lang, &format!("synthesis.{k}")).to_string();
     let mut sol = m.solution();
     let mut out = Vec::new();

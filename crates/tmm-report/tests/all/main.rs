@@ -15,3 +15,4 @@ mod seg_index;
 mod sheets;
 mod svg_read;
 mod units;
+mod xml;

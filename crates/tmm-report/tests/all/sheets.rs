@@ -6,12 +6,12 @@
 
 use std::path::PathBuf;
 
+use crate::xml::{Token, tokens};
 use tmm_report::TaskSource;
 use tmm_report::output::Documents;
 use tmm_report::project::{Language, SheetFormat};
 use tmm_report::run::{DEFAULT_TASK, run_task, run_task_in};
 use tmm_report::sheets::layout::Rect;
-use tmm_report::sheets::xml::{Token, tokens};
 use tmm_report::words::word;
 
 /// The task text with `[project] sheet` set to `format`.
@@ -93,7 +93,8 @@ fn group(svg: &str, id: &str) -> (Vec<Segment>, Vec<String>) {
                 if inside > 0 && *name == "line" {
                     lines.push((num(t, "x1"), num(t, "y1"), num(t, "x2"), num(t, "y2")));
                 }
-                in_text = inside > 0 && *name == "text";
+                // a text's words may stand in its tspans
+                in_text = inside > 0 && (*name == "text" || (in_text && *name == "tspan"));
             }
             Token::End { .. } => {
                 inside = inside.saturating_sub(1);
@@ -207,13 +208,14 @@ fn the_title_block_is_185_by_55_in_the_corner_and_filled() {
     }
 }
 
-/// The texts inside `<g id="{group}">` with their position and transform:
-/// (x, y, font size, transform, text).
-fn group_texts(svg: &str, id: &str) -> Vec<(f64, f64, f64, String, String)> {
+/// The texts inside `<g id="{group}">` as `tmm_draw::svg` writes them
+/// (`transform="translate(x y) rotate(r) skewX(-15)"`, the words in
+/// tspans): (x, y, capital height, rotation in degrees as written, text).
+fn group_texts(svg: &str, id: &str) -> Vec<(f64, f64, f64, f64, String)> {
     let toks = tokens(svg).unwrap();
     let mut out = Vec::new();
     let mut inside = 0usize;
-    let mut open: Option<(f64, f64, f64, String)> = None;
+    let mut open: Option<(f64, f64, f64, f64, String)> = None;
     for t in &toks {
         match t {
             Token::Start { name, empty, .. } => {
@@ -223,18 +225,24 @@ fn group_texts(svg: &str, id: &str) -> Vec<(f64, f64, f64, String, String)> {
                     inside = 1;
                 }
                 if inside > 0 && *name == "text" {
-                    open = Some((
-                        num(t, "x"),
-                        num(t, "y"),
-                        num(t, "font-size"),
-                        t.attr("transform").unwrap_or("").to_string(),
-                    ));
+                    let tr = t.attr("transform").unwrap_or("").to_string();
+                    let at = transform_args(&tr, "translate").unwrap();
+                    let rot = transform_args(&tr, "rotate").map_or(0.0, |r| r[0]);
+                    let cap = num(t, "font-size") * tmm_draw::svg::CAP_EM;
+                    open = Some((at[0], at[1], cap, rot, String::new()));
                 }
             }
-            Token::End { .. } => inside = inside.saturating_sub(1),
+            Token::End { name, .. } => {
+                inside = inside.saturating_sub(1);
+                if *name == "text"
+                    && let Some(o) = open.take()
+                {
+                    out.push(o);
+                }
+            }
             Token::Text(s) => {
-                if let Some((x, y, h, tr)) = open.take() {
-                    out.push((x, y, h, tr, s.clone()));
+                if let Some(o) = open.as_mut() {
+                    o.4.push_str(s);
                 }
             }
         }
@@ -283,32 +291,30 @@ fn graph_26_holds_the_designation_upside_down_in_the_top_left_corner() {
             assert!(has((20.0, 19.0, 90.0, 19.0)), "{format} {path}: no bottom of graph 26 in {lines:?}");
             let texts = group_texts(svg, "graph-26");
             assert_eq!(texts.len(), 1, "{format} {path}: {texts:?}");
-            let (x, y, size, tr, text) = &texts[0];
+            let (x, y, size, rot, text) = &texts[0];
             assert_eq!(text, "ТММ.КП.017.00.000", "{format} {path}");
-            // turned by 180° about a point inside the box
-            let r = transform_args(tr, "rotate").unwrap_or_else(|| panic!("{format} {path}: not turned: {tr:?}"));
-            assert_eq!(r.len(), 3, "{tr}");
-            assert!((r[0] - 180.0).abs() < 1e-9, "{tr}");
+            // turned by 180° about its anchor, the middle of its baseline
+            assert!((rot.abs() - 180.0).abs() < 1e-9, "{format} {path}: turned by {rot}");
             // the text's box (0.6 of the size per character, the capitals'
-            // height above the baseline) turned about that point stays in
-            // the box, with 1 mm to spare
+            // height above the baseline) turned about the anchor lies below
+            // it on the paper (y down) and stays in the box, 1 mm to spare
             let w = 0.6 * size * text.chars().count() as f64;
-            let (cx, cy) = (r[1], r[2]);
-            let corners = [
+            for (qx, qy) in [
                 (x - w / 2.0, *y),
                 (x + w / 2.0, *y),
-                (x - w / 2.0, y - size),
-                (x + w / 2.0, y - size),
-            ];
-            for (px, py) in corners {
-                let (qx, qy) = (2.0 * cx - px, 2.0 * cy - py);
+                (x - w / 2.0, y + size),
+                (x + w / 2.0, y + size),
+            ] {
                 assert!(
                     (21.0..=89.0).contains(&qx) && (6.0..=18.0).contains(&qy),
                     "{format} {path}: the designation leaves graph 26 at ({qx}, {qy})"
                 );
             }
             // GOST 2.304 sizes only
-            assert!([3.5, 5.0, 7.0].contains(size), "{format} {path}: {size} mm");
+            assert!(
+                [3.5, 5.0, 7.0].iter().any(|s| (s - size).abs() < 1e-3),
+                "{format} {path}: {size} mm"
+            );
             // no drawing on it
             let g26 = Rect {
                 x: 20.0,
@@ -355,7 +361,7 @@ fn the_dxf_reads_back_with_its_layers_and_inside_the_sheet() {
         for d in dxfs {
             let drawing = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap_or_else(|e| panic!("{}: {e}", d.path));
             let layers: Vec<String> = drawing.layers().map(|l| l.name.clone()).collect();
-            for l in ["contour", "thin", "axis", "dimension", "text"] {
+            for l in ["MAIN", "THIN", "AXIS", "DIM", "TEXT", "FRAME"] {
                 assert!(layers.iter().any(|x| x == l), "{}: no layer {l}", d.path);
             }
             let mut n = 0;
@@ -376,23 +382,29 @@ fn the_dxf_reads_back_with_its_layers_and_inside_the_sheet() {
                 }
             }
             assert!(n > 100, "{}: {n} entities", d.path);
-            for l in ["contour", "thin", "text"] {
+            for l in ["MAIN", "THIN", "TEXT", "FRAME"] {
                 assert!(on.contains(l), "{}: nothing on {l}", d.path);
             }
         }
-        // the frame: the thick inner rectangle on `contour`, 20 mm from the left, 5 mm elsewhere (y up)
+        // the frame: the inner rectangle on `FRAME`, 20 mm from the left, 5 mm elsewhere (y up)
         let d = run.docs.get("sheets/sheet-1.dxf").unwrap();
         let drawing = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
-        let frame_lines = drawing
+        let frames = drawing
             .entities()
-            .filter(|e| e.common.layer == "contour")
+            .filter(|e| e.common.layer == "FRAME")
             .filter_map(|e| match &e.specific {
-                dxf::entities::EntityType::Line(l) => Some((l.p1.x, l.p1.y, l.p2.x, l.p2.y)),
+                dxf::entities::EntityType::LwPolyline(p) => Some(p.vertices.iter().map(|v| (v.x, v.y)).collect::<Vec<_>>()),
                 _ => None,
             })
-            .filter(|l| (l.0 - 20.0).abs() < 1e-9 && (l.2 - 20.0).abs() < 1e-9)
+            .filter(|v| {
+                let near = |a: f64, b: f64| (a - b).abs() < 1e-9;
+                v.len() == 4
+                    && [(20.0, 5.0), (w - 5.0, 5.0), (w - 5.0, h - 5.0), (20.0, h - 5.0)]
+                        .iter()
+                        .all(|c| v.iter().any(|p| near(p.0, c.0) && near(p.1, c.1)))
+            })
             .count();
-        assert!(frame_lines >= 1, "{format}: the frame's left line at x = 20");
+        assert_eq!(frames, 1, "{format}: the frame 20 mm from the left, 5 mm from the others");
     }
 }
 
@@ -456,9 +468,28 @@ fn the_frame_speaks_the_sheets_language() {
     }
 }
 
-fn fake(w: f64, h: f64, extra: &str) -> String {
-    format!(
-        "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\"{extra}>\n<g id=\"x\"><line x1=\"0\" y1=\"0\" x2=\"{w}\" y2=\"{h}\" stroke=\"#000\" stroke-width=\"0.7\"/></g></svg>\n"
+/// A drawing of `w × h` mm: one main line in a group `x`, the scale given.
+fn fake(w: f64, h: f64, scale: Option<&str>) -> tmm_report::picture::Picture {
+    use tmm_report::picture::{Element, Picture};
+    let root = scale.map(|s| vec![("data-scale".to_string(), s.to_string())]).unwrap_or_default();
+    Picture::new(
+        w,
+        h,
+        root,
+        vec![
+            Element::GroupOpen {
+                id: Some("x".into()),
+                class: None,
+                data: Vec::new(),
+            },
+            Element::Line {
+                a: (0.0, 0.0),
+                b: (w, h),
+                style: tmm_report::svg::Style::THICK,
+                round: false,
+            },
+            Element::GroupClose,
+        ],
     )
 }
 
@@ -467,11 +498,10 @@ fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
     use tmm_report::project::Project;
     use tmm_report::sheets::layout_sheets;
     let mut docs = Documents::new();
-    docs.add_text("cam/cam.svg", fake(200.0, 200.0, " data-scale=\"2:1\"")).unwrap();
-    docs.add_text("cam/cam-motion.svg", fake(200.0, 150.0, " data-scale=\"1:5\""))
-        .unwrap();
-    docs.add_text("cam/cam-pressure.svg", fake(900.0, 100.0, "")).unwrap(); // wider than any A1 field
-    docs.add_text("cam/extra-7.svg", fake(100.0, 100.0, "")).unwrap();
+    docs.add_text("cam/cam.svg", fake(200.0, 200.0, Some("2:1"))).unwrap();
+    docs.add_text("cam/cam-motion.svg", fake(200.0, 150.0, Some("1:5"))).unwrap();
+    docs.add_text("cam/cam-pressure.svg", fake(900.0, 100.0, None)).unwrap(); // wider than any A1 field
+    docs.add_text("cam/extra-7.svg", fake(100.0, 100.0, None)).unwrap();
     let sheets = layout_sheets(&docs, &Project::default());
     assert_eq!(sheets.len(), 1);
     let s = &sheets[0];
@@ -480,7 +510,11 @@ fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
     assert_eq!(s.left_out, vec![word(Language::Ru, "sheet.fig_cam_cam_pressure").to_string()]);
     assert!(s.svg.contains(word(Language::Ru, "sheet.left_out")));
     let (_, texts) = group(&s.svg, "title-block");
-    assert!(texts.iter().any(|t| t == "2:1") && texts.iter().any(|t| t == "Кулачковый механизм"));
+    // the name is wrapped in its cell: its lines in order
+    assert!(
+        texts.iter().any(|t| t == "2:1") && texts.join(" ").contains("Кулачковый механизм"),
+        "{texts:?}"
+    );
     // ids of the nested drawings are made unique
     assert!(!s.svg.contains("id=\"x\""));
     let mut ids: Vec<&str> = s

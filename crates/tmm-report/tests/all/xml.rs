@@ -1,4 +1,4 @@
-//! A small XML reader for the SVG the drawings are written in (разбор SVG):
+//! A small XML reader for the tests, for the SVG tmm writes (разбор SVG):
 //! start, end and empty tags with quoted attributes, text with the five
 //! named entities and numeric character references; the prolog, comments,
 //! doctype and processing instructions are skipped. Enough for SVG that
@@ -43,7 +43,7 @@ impl Token<'_> {
 
 /// Replace the XML entities of `s` by their characters.
 ///
-/// ```
+/// ```text
 /// use tmm_report::sheets::xml::unescape;
 /// assert_eq!(unescape("a &lt; b &amp;&#x3C9;&#969;"), "a < b &ωω");
 /// ```
@@ -89,7 +89,7 @@ pub fn unescape(s: &str) -> String {
 
 /// The tokens of an XML text.
 ///
-/// ```
+/// ```text
 /// use tmm_report::sheets::xml::{tokens, Token};
 /// let t = tokens("<?xml version=\"1.0\"?><svg w='2'><!-- c --><text>a&amp;b</text><g/></svg>").unwrap();
 /// assert_eq!(t.len(), 6);
