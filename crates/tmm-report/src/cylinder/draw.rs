@@ -19,7 +19,7 @@ const H_LABEL: f64 = 3.5;
 const H_SMALL: f64 = 2.5;
 
 /// The drawing's SVG.
-pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> String {
+pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::picture::Picture {
     let wd = |k: &str| word(lang, &format!("cylinder.{k}")).to_string();
     let d = &a.task.drive;
     let first = a.table[0];

@@ -20,6 +20,7 @@ use super::{Chart, XKind};
 use crate::Error;
 use crate::output::Documents;
 use crate::paper::Slot;
+use crate::picture::Picture;
 use crate::project::{Language, SheetFormat};
 use crate::svg::{Style, num};
 use crate::words::word;
@@ -90,7 +91,7 @@ fn process_name(name: &str, lang: Language) -> String {
 
 /// The diagram of one cylinder: its `indicator` for a stroke `h` (m), bore
 /// `bore` (m), piston `link`.
-fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: SheetFormat) -> String {
+fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: SheetFormat) -> Picture {
     let wd = |k: &str| word(lang, &format!("dynamics.{k}")).to_string();
     const MPA: f64 = 1e6;
     // every curve, sampled, in (m, MPa)
@@ -147,12 +148,9 @@ fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: S
             .map(|(a, b)| format!("{}…{}°", num(*a, 0, lang), num(*b, 0, lang)))
             .collect();
         let label = format!("{}, φ {}", process_name(name, lang), spans.join(", "));
-        ch.c.raw(&format!(
-            "<g class=\"indicator-table\" data-table=\"{}\">",
-            crate::svg::escape(name)
-        ));
+        ch.c.begin_group_data("indicator-table", &[("data-table", name.as_str())]);
         ch.curve(pts, color, &label, DASHES[k % DASHES.len()]);
-        ch.c.raw("</g>");
+        ch.c.end_group();
         // the table's own points
         let c = &ind.tables[*t];
         let hgt = ch.c.size().1;
