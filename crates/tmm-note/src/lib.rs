@@ -23,11 +23,13 @@
 //! assert!(pdf.starts_with(b"%PDF"));
 //! ```
 
+pub mod calc;
 pub mod compose;
 pub mod error;
 pub mod escape;
 pub mod markup;
 pub mod model;
+pub mod notation;
 pub mod number;
 pub mod sheet;
 pub mod translation;

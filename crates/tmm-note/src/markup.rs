@@ -63,8 +63,14 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         w.out.push_str("  ],\n");
     }
     w.out.push_str(")\n\n");
+    if let Some(s) = &note.introduction {
+        w.unnumbered(s)?;
+    }
     for s in &note.sections {
         w.section(s, 1)?;
+    }
+    if let Some(s) = &note.conclusion {
+        w.unnumbered(s)?;
     }
     if !note.sources.is_empty() {
         w.out.push_str("#sources(tr, (\n");
@@ -131,6 +137,9 @@ fn collect_labels(note: &Note) -> Result<HashSet<String>, NoteError> {
     }
     let mut set = HashSet::new();
     blocks(&note.assignment, &mut set)?;
+    for s in note.introduction.iter().chain(&note.conclusion) {
+        sections(std::slice::from_ref(s), &mut set)?;
+    }
     sections(&note.sections, &mut set)?;
     sections(&note.appendices, &mut set)?;
     Ok(set)
@@ -146,12 +155,25 @@ struct Writer<'a> {
 
 impl Writer<'_> {
     fn section(&mut self, s: &Section, level: usize) -> Result<(), NoteError> {
-        let _ = writeln!(self.out, "#heading(level: {level}, {})\n", string_literal(&s.title));
+        let _ = writeln!(self.out, "#heading(level: {level}, {})\n", content_arg(&s.title));
         for b in &s.blocks {
             self.block(b)?;
         }
         for sub in &s.subsections {
             self.section(sub, level + 1)?;
+        }
+        Ok(())
+    }
+
+    /// An unnumbered level-1 section (the introduction, the conclusion),
+    /// listed in the contents.
+    fn unnumbered(&mut self, s: &Section) -> Result<(), NoteError> {
+        let _ = writeln!(self.out, "#heading(level: 1, numbering: none, {})\n", content_arg(&s.title));
+        for b in &s.blocks {
+            self.block(b)?;
+        }
+        for sub in &s.subsections {
+            self.section(sub, 2)?;
         }
         Ok(())
     }
@@ -202,10 +224,16 @@ impl Writer<'_> {
                     "#svg-figure({}, {}mm, {})",
                     string_literal(&path),
                     width_mm,
-                    string_literal(caption)
+                    content_arg(caption)
                 );
                 self.figures.push((path, svg.clone()));
                 self.label(label);
+            }
+            Block::Calculation(c) => {
+                let m = c.typst(self.lang)?;
+                check_math(&m)?;
+                let _ = write!(self.out, "$ {m} $");
+                self.label(&None);
             }
             Block::List(items) => {
                 self.out.push_str("#list(\n");
@@ -237,7 +265,7 @@ impl Writer<'_> {
         let _ = write!(
             self.out,
             "#figure(kind: table, caption: {}, table(columns: {n},\n  table.header(",
-            string_literal(caption)
+            content_arg(caption)
         );
         for (i, h) in header.iter().enumerate() {
             let mut head = h.clone();
@@ -245,7 +273,7 @@ impl Writer<'_> {
                 head.push_str(", ");
                 head.push_str(u);
             }
-            let _ = write!(self.out, "{}, ", string_literal(&head));
+            let _ = write!(self.out, "{}, ", content_arg(&head));
         }
         self.out.push_str("),\n");
         for row in rows {
@@ -296,14 +324,12 @@ impl Writer<'_> {
     fn text(&mut self, t: &Text) -> Result<(), NoteError> {
         for span in &t.0 {
             match span {
-                Span::Plain(s) => {
-                    let _ = write!(self.out, "#{}", string_literal(s));
-                }
+                Span::Plain(s) => self.out.push_str(&content_markup(s)),
                 Span::Strong(s) => {
-                    let _ = write!(self.out, "#strong({})", string_literal(s));
+                    let _ = write!(self.out, "#strong({})", content_arg(s));
                 }
                 Span::Emph(s) => {
-                    let _ = write!(self.out, "#emph({})", string_literal(s));
+                    let _ = write!(self.out, "#emph({})", content_arg(s));
                 }
                 Span::Math(m) => {
                     check_math(m)?;
@@ -332,5 +358,29 @@ impl Writer<'_> {
             }
         }
         Ok(())
+    }
+}
+
+/// A text of the note's words in markup mode: its plain runs as string
+/// literals, its notation runs ([`crate::notation`]) as inline math.
+fn content_markup(s: &str) -> String {
+    let mut out = String::new();
+    for (math, run) in crate::notation::runs(s) {
+        if math && check_math(&run).is_ok() {
+            let _ = write!(out, "${run}$");
+        } else {
+            let _ = write!(out, "#{}", string_literal(&run));
+        }
+    }
+    out
+}
+
+/// A text as a typst argument: a string literal, or a content block when
+/// it holds notation runs.
+fn content_arg(s: &str) -> String {
+    if crate::notation::has_math(s) {
+        format!("[{}]", content_markup(s))
+    } else {
+        string_literal(s)
     }
 }

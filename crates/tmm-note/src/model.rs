@@ -218,6 +218,11 @@ pub enum Block {
     },
     /// A bulleted list (перечисление), marked with the dash.
     List(Vec<Text>),
+    /// A worked formula (расчётная формула с подстановкой): symbols, the
+    /// run's numbers substituted, the result; numbered like a formula. Held
+    /// as data, so the numbers it shows can be checked
+    /// ([`crate::calc::Calculation::check`]).
+    Calculation(crate::calc::Calculation),
 }
 
 /// A section (раздел) or subsection (подраздел).
@@ -255,8 +260,16 @@ pub struct Note {
     /// before the contents: the task's data tables. Empty: a line saying the
     /// assignment form is attached.
     pub assignment: Vec<Block>,
+    /// The introduction (введение): an unnumbered section before section 1
+    /// (its title is the heading), or `None`.
+    #[serde(default)]
+    pub introduction: Option<Section>,
     /// The numbered sections 1, 2 ….
     pub sections: Vec<Section>,
+    /// The conclusion (заключение): an unnumbered section after the last
+    /// numbered one, before the list of sources, or `None`.
+    #[serde(default)]
+    pub conclusion: Option<Section>,
     /// The list of sources (список использованных источников), one entry each.
     pub sources: Vec<String>,
     /// The appendices (приложения) А, Б ….

@@ -27,14 +27,26 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    /// A word.
+    /// A word, its notation (`K_v`, `M_ур`) marked as math
+    /// ([`crate::notation::notation`]).
     pub fn w(&self, key: &str) -> Result<String, NoteError> {
+        self.words.get(key).map(crate::notation::notation)
+    }
+
+    /// A word as written: the typst math of a formula's symbol (`sym_*`).
+    pub fn sym(&self, key: &str) -> Result<String, NoteError> {
         self.words.get(key).map(str::to_string)
     }
 
-    /// A word with its places filled.
+    /// A word with its notation marked and its places filled; the
+    /// arguments (numbers, the caller's names) stay literal.
     pub fn fill(&self, key: &str, args: &[String]) -> Result<String, NoteError> {
-        self.words.fill(key, args)
+        let mut s = crate::notation::notation(self.words.get(key)?);
+        // from the last place down, so {1} does not eat the start of {10}
+        for (i, a) in args.iter().enumerate().rev() {
+            s = s.replace(&format!("{{{}}}", i + 1), &crate::notation::strip(a));
+        }
+        Ok(s)
     }
 
     /// A paragraph of a word with its places filled.

@@ -3,6 +3,7 @@
 //! Mertsalov's and Wittenbauer's methods and the true crank speed.
 
 use super::context::{Ctx, formula, four_parts};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
 
@@ -41,14 +42,23 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let formulas = vec![
         cx.para("dy_f_inertia", &[])?,
         formula("I_(I I)(phi) = sum_(i != 1) [m_i (v_(S i) / omega_1)^2 + J_(S i) (omega_i / omega_1)^2]"),
+        cx.para("where_reduced_inertia", &[])?,
         cx.para("dy_f_moment", &[])?,
         formula("M_c (phi) = sum_i (arrow(F)_i dot arrow(v)_i + M_i omega_i) / omega_1, quad A_c (phi) = integral_0^phi M_c dif phi"),
+        cx.para("where_reduced_moment", &[])?,
         cx.para("dy_f_md", &[])?,
-        formula("M_d = -(A_c |_(phi = 2 pi)) / (2 pi), quad Delta T = A_d + A_c"),
+        formula(&format!("{} = -(A_c (2 pi)) / (2 pi), quad Delta T = A_d + A_c", cx.sym("sym_md")?)),
+        cx.para("where_md", &[])?,
         cx.para("dy_f_flywheel", &[])?,
-        formula("I_\"fl\" = (Delta E_max) / (omega_m^2 delta) - I_I, quad delta = (omega_max - omega_min) / omega_m"),
+        formula(&format!(
+            "I_\"M\" = (Delta T_max) / (omega_m^2 delta), quad {} = {} - I_I, quad delta = (omega_max - omega_min) / omega_m",
+            cx.sym("sym_ifl")?,
+            cx.sym("sym_ireq")?
+        )),
+        cx.para("where_flywheel", &[])?,
     ];
-    let mut results = vec![cx.quantities(
+    let mut results = worked(cx)?;
+    results.push(cx.quantities(
         "tab_dynamics",
         vec![
             (cx.w("q_md")?, cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?),
@@ -67,7 +77,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             (cx.w("q_omega_min")?, cx.qv("/dynamics/omega_min", 1.0, "u_rad_s")?),
             (cx.w("q_delta_reached")?, cx.qv("/dynamics/delta", 1.0, "")?),
         ],
-    )?];
+    )?);
     if cx.opt("/dynamics/flywheel/diameter").is_some() {
         results.push(cx.quantities(
             "tab_flywheel",
@@ -127,4 +137,68 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         )?);
     }
     Ok(Some(four_parts(cx, "sec_dynamics", statement, formulas, results, conclusions)?))
+}
+
+/// The worked driving moment, Mertsalov's required inertia and the
+/// flywheel's inertia with the run's numbers.
+fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
+    let mut out = Vec::new();
+    let work_end = cx
+        .report
+        .pointer("/dynamics/work")
+        .and_then(serde_json::Value::as_array)
+        .and_then(|w| w.last())
+        .and_then(serde_json::Value::as_f64);
+    let (Some(ac), Some(md)) = (work_end, cx.opt("/dynamics/driving_moment")) else {
+        return Ok(out);
+    };
+    let two_pi = || calc::exact(std::f64::consts::TAU, "2 pi");
+    out.push(cx.para("calc_md", &[])?);
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new(&cx.sym("sym_md")?, md, &cx.w("u_nm")?),
+        calc::neg(calc::div(calc::q("A_c (2 pi)", ac, ""), two_pi())),
+    )));
+    let omega = cx.v("/dynamics/omega_nominal")?;
+    let delta = cx.v("/dynamics/delta_requested")?;
+    let unit = cx.w("u_kgm2")?;
+    if let (Some(swing), Some(im)) = (
+        cx.opt("/dynamics/mertsalov/energy_swing"),
+        cx.opt("/dynamics/required_inertia/mertsalov"),
+    ) {
+        out.push(cx.para("calc_imertsalov", &[])?);
+        out.push(Block::Calculation(Calculation::new(
+            Quantity::new("I_\"M\"", im, &unit),
+            calc::div(
+                calc::q("Delta T_max", swing, ""),
+                Expr::Mul(vec![calc::pow(calc::q("omega_m", omega, ""), 2), calc::q("delta", delta, "")]),
+            ),
+        )));
+    }
+    if let (Some(req), Some(given), Some(fl)) = (
+        cx.opt("/dynamics/required_inertia/exact"),
+        cx.opt("/dynamics/inertia_constant_given"),
+        cx.opt("/dynamics/flywheel_inertia_crank"),
+    ) {
+        let on_crank = cx.s("/dynamics/flywheel/place").is_none_or(|p| p == "crank");
+        let crank_sym = if on_crank { cx.sym("sym_ifl")? } else { cx.sym("sym_ifl_crank")? };
+        out.push(cx.para("calc_ifl", &[])?);
+        out.push(Block::Calculation(Calculation::new(
+            Quantity::new(&crank_sym, fl, &unit),
+            calc::sub(calc::q(&cx.sym("sym_ireq")?, req, ""), calc::q("I_I", given, "")),
+        )));
+        // a flywheel on the motor's shaft: reduced back by the square of the gear ratio
+        if let (false, Some("motor"), Some(u), Some(on_motor)) = (
+            on_crank,
+            cx.s("/dynamics/flywheel/place"),
+            cx.opt("/dynamics/motor/ratio"),
+            cx.opt("/dynamics/flywheel_inertia"),
+        ) {
+            out.push(cx.para("calc_ifl_motor", &[])?);
+            out.push(Block::Calculation(Calculation::new(
+                Quantity::new(&cx.sym("sym_ifl")?, on_motor, &unit),
+                calc::div(calc::q(&crank_sym, fl, ""), calc::pow(calc::q("u_\"м\"", u, ""), 2)),
+            )));
+        }
+    }
+    Ok(out)
 }

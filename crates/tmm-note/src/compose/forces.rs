@@ -5,6 +5,8 @@
 use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts, num, text};
+use super::linkage::{crank, math_name};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
 
@@ -25,12 +27,19 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let formulas = vec![
         cx.para("fo_f_inertia", &[])?,
         formula("arrow(F)_u = -m arrow(a)_S, quad M_u = -J_S epsilon"),
+        cx.para("where_inertia", &[])?,
         cx.para("fo_f_group", &[])?,
         formula("sum arrow(F) = 0, quad sum M_C = 0"),
+        cx.para("where_group", &[])?,
         cx.para("fo_f_balancing", &[])?,
-        formula("M_b = P_b l_1"),
+        formula(&format!("{} = {} l_1", cx.sym("sym_mb")?, cx.sym("sym_pb")?)),
+        cx.para("where_balancing", &[])?,
         cx.para("fo_f_zhukovsky", &[])?,
-        formula("M_\"Zh\" omega_1 = -(sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i)"),
+        formula(&format!(
+            "{} omega_1 = -(sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i)",
+            cx.sym("sym_mzh")?
+        )),
+        cx.para("where_zhukovsky", &[])?,
     ];
     let mut results = Vec::new();
     let mut rows = Vec::new();
@@ -93,6 +102,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             (cx.w("q_mzh")?, cx.q(mzh, "u_nm")?),
         ],
     )?);
+    results.extend(worked(cx, mb, mzh)?);
     for (path, key) in [
         ("forces/group-1.svg", "fig_force_group"),
         ("forces/input-link.svg", "fig_input_link"),
@@ -180,4 +190,101 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         )?);
     }
     Ok(Some(four_parts(cx, "sec_forces", statement, formulas, results, conclusions)?))
+}
+
+/// The worked balancing torque from the balancing force and its check by
+/// Zhukovsky's lever as the sum of the powers of the loads (the lever's
+/// forces of the report, each at its point's velocity: the lever's image is
+/// the velocity turned by +90°, `image = (−v_y, v_x)`).
+fn worked(cx: &Ctx, mb: f64, mzh: f64) -> Result<Vec<Block>, NoteError> {
+    let mut out = Vec::new();
+    let (Some((axis, pin, l)), Some(pb)) = (crank(cx), cx.opt("/forces/detail/balancing_force")) else {
+        return Ok(out);
+    };
+    let unit_nm = cx.w("u_nm")?;
+    out.push(cx.para("calc_mb", &[])?);
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new(&cx.sym("sym_mb")?, mb, &unit_nm),
+        Expr::Mul(vec![
+            calc::q(&cx.sym("sym_pb")?, pb, ""),
+            calc::q(&format!("l_({} {})", math_name(&axis), math_name(&pin)), l, ""),
+        ]),
+    )));
+    let Some(lever) = cx.report.pointer("/forces/lever").and_then(Value::as_array) else {
+        return Ok(out);
+    };
+    // the power of each load: forces one by one, a couple's two forces as M·ω of its link
+    let mut terms: Vec<(String, f64)> = Vec::new();
+    for e in lever {
+        let label = e.get("label").and_then(Value::as_str).unwrap_or("");
+        let c = |k: &str, i: usize| e.get(k).and_then(|a| a.get(i)).and_then(Value::as_f64).unwrap_or(0.0);
+        let power = c("force", 0) * c("image", 1) - c("force", 1) * c("image", 0);
+        let symbol = if label == "Pb" {
+            continue;
+        } else if let Some(link) = label.strip_prefix('M').map(|r| r.trim_end_matches('\'')) {
+            format!("M_({0}) omega_({0})", math_name(link))
+        } else if let Some((f, _)) = label.strip_prefix("Fu").and_then(|r| r.split_once('+')) {
+            format!("arrow(F)_({0}) dot arrow(v)_(S {0})", math_name(f))
+        } else {
+            format!("arrow(F)_({0}) dot arrow(v)_({0})", math_name(label.trim_start_matches('F')))
+        };
+        match terms.iter_mut().find(|(s, _)| *s == symbol) {
+            Some(t) => t.1 += power,
+            None => terms.push((symbol, power)),
+        }
+    }
+    // an external force the lever does not carry (the indicator diagram's
+    // force on a piston, at the slider's point = its centre of mass): its
+    // power at the velocity of the centre of mass
+    if let Some(loads) = cx.report.pointer("/forces/detail/loads").and_then(Value::as_object) {
+        for (name, l) in loads {
+            let ext = |i: usize| l.pointer(&format!("/external_force/{i}")).and_then(Value::as_f64).unwrap_or(0.0);
+            let (mut fx, mut fy) = (ext(0), ext(1));
+            let mut vs = None;
+            for e in lever {
+                let label = e.get("label").and_then(Value::as_str).unwrap_or("");
+                let c = |k: &str, i: usize| e.get(k).and_then(|a| a.get(i)).and_then(Value::as_f64).unwrap_or(0.0);
+                if label == format!("Fr{name}") || label.starts_with(&format!("F{name}.")) {
+                    fx -= c("force", 0);
+                    fy -= c("force", 1);
+                }
+                if label == format!("Fu{name}+G{name}") {
+                    vs = Some((c("image", 1), -c("image", 0)));
+                }
+            }
+            if let Some((vx, vy)) = vs
+                && fx.hypot(fy) > 1e-9
+            {
+                terms.push((format!("arrow(F)_(c {0}) dot arrow(v)_(S {0})", math_name(name)), fx * vx + fy * vy));
+            }
+        }
+    }
+    if terms.is_empty() {
+        return Ok(out);
+    }
+    // a power that is the rounding noise of zero (a centripetal force on a crank turning evenly) is 0
+    let largest = terms.iter().fold(0.0_f64, |m, t| m.max(t.1.abs()));
+    for t in &mut terms {
+        if t.1.abs() < 1e-9 * largest {
+            t.1 = 0.0;
+        }
+    }
+    let total: f64 = terms.iter().map(|t| t.1).sum();
+    let unit_w = cx.w("u_w")?;
+    out.push(cx.para("calc_power", &[])?);
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new("P", total, &unit_w),
+        Expr::Terms {
+            symbol: "sum_i arrow(F)_i dot arrow(v)_i + sum_i M_i omega_i".into(),
+            terms: terms.iter().map(|(s, p)| calc::q(s, *p, "")).collect(),
+        },
+    )));
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new(&cx.sym("sym_mzh")?, mzh, &unit_nm),
+        calc::neg(calc::div(
+            calc::q("P", total, ""),
+            calc::q("omega_1", cx.v("/forces/detail/omega1").or_else(|_| cx.v("/forces/omega1"))?, ""),
+        )),
+    )));
+    Ok(out)
 }

@@ -5,8 +5,9 @@
 use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts, num, text};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
-use crate::model::Section;
+use crate::model::{Block, Section};
 
 /// The given values of the pair as (name, value) rows.
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
@@ -43,13 +44,19 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let formulas = vec![
         cx.para("ge_f_alpha_w", &[])?,
         formula("\"inv\" alpha_w = 2 (x_1 + x_2) / (z_1 + z_2) tan alpha + \"inv\" alpha"),
+        cx.para("where_gear_alpha", &[])?,
         cx.para("ge_f_aw", &[])?,
         formula("a_w = m (z_1 + z_2) / 2 dot (cos alpha) / (cos alpha_w), quad y = (a_w - a) / m, quad Delta y = x_1 + x_2 - y"),
+        cx.para("where_gear_aw", &[])?,
         cx.para("ge_f_diameters", &[])?,
-        formula("d = m z, quad d_b = d cos alpha, quad d_a = d + 2 (h_a^* + x - Delta y) m, quad d_f = d - 2 (h_a^* + c^* - x) m"),
+        formula("d = m z, quad d_b = d cos alpha, \\ d_a = d + 2 (h_a^* + x - Delta y) m, quad d_f = d - 2 (h_a^* + c^* - x) m"),
+        cx.para("where_gear_d", &[])?,
         cx.para("ge_f_eps", &[])?,
         formula("epsilon_alpha = (z_1 (tan alpha_(a 1) - tan alpha_w) + z_2 (tan alpha_(a 2) - tan alpha_w)) / (2 pi)"),
+        cx.para("where_gear_eps", &[])?,
     ];
+    let mut formulas = formulas;
+    formulas.extend(worked(cx)?);
     let mm = |p: &str| -> Result<f64, NoteError> { Ok(cx.v(p)? * 1000.0) };
     let rows = vec![
         vec![text(cx.w("q_d")?), num(mm("/gear/d1")?), num(mm("/gear/d2")?)],
@@ -124,4 +131,52 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("ge_conclusion_fail", &[failed.join("; "), eps])?
     }];
     Ok(Some(four_parts(cx, "sec_gear", statement, formulas, results, conclusions)?))
+}
+
+/// The worked angle of engagement and centre distance with the run's numbers.
+fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
+    let (Some(alpha), Some(aw_angle)) = (cx.opt("/gear/rack/alpha"), cx.opt("/gear/alpha_w")) else {
+        return Ok(Vec::new());
+    };
+    if cx.s("/gear/kind") != Some("external") {
+        return Ok(Vec::new());
+    }
+    let (z1, z2) = (cx.v("/gear/z1")?, cx.v("/gear/z2")?);
+    let (x1, x2) = (cx.v("/gear/x1")?, cx.v("/gear/x2")?);
+    let m = cx.v("/gear/m")? * 1000.0;
+    let al = || calc::q("alpha", alpha.to_degrees(), "°");
+    let alw = || calc::q("alpha_w", aw_angle.to_degrees(), "°");
+    let zs = || Expr::Sum(vec![calc::count("z_1", z1), calc::count("z_2", z2)]);
+    let inv_w = calc::Func::Inv;
+    Ok(vec![
+        cx.para("calc_gear", &[])?,
+        Block::Calculation(Calculation::new(
+            Quantity {
+                digits: 5,
+                ..Quantity::new(
+                    "\"inv\" alpha_w",
+                    {
+                        let a = aw_angle;
+                        a.tan() - a
+                    },
+                    "",
+                )
+            },
+            Expr::Sum(vec![
+                Expr::Mul(vec![
+                    calc::int(2),
+                    calc::div(Expr::Sum(vec![calc::q("x_1", x1, ""), calc::q("x_2", x2, "")]), zs()),
+                    calc::func(calc::Func::Tan, al()),
+                ]),
+                calc::func(inv_w, al()),
+            ]),
+        )),
+        Block::Calculation(Calculation::new(
+            Quantity::new("a_w", cx.v("/gear/aw")? * 1000.0, &cx.w("u_mm")?),
+            Expr::Mul(vec![
+                calc::div(Expr::Mul(vec![calc::q("m", m, ""), calc::paren(zs())]), calc::int(2)),
+                calc::div(calc::func(calc::Func::Cos, al()), calc::func(calc::Func::Cos, alw())),
+            ]),
+        )),
+    ])
 }

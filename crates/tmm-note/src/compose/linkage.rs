@@ -5,6 +5,7 @@
 use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts, num, text};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
 
@@ -13,18 +14,7 @@ use crate::model::{Block, Section};
 /// The joints come from the task's `[[linkage.links]]`, or from the
 /// synthesised `[linkage]` the synthesis report carries.
 pub(crate) fn link_lengths(cx: &Ctx) -> Vec<(String, f64)> {
-    let synthesised: Option<toml::Table> = cx.s("/synthesis/task").and_then(|t| toml::from_str(t).ok());
-    let linkage = cx
-        .task
-        .get("linkage")
-        .or_else(|| synthesised.as_ref().and_then(|t| t.get("linkage")))
-        .cloned();
-    let links = linkage
-        .as_ref()
-        .and_then(|l| l.get("links"))
-        .and_then(|l| l.as_array())
-        .cloned()
-        .unwrap_or_default();
+    let links = task_links(cx);
     let points = cx.report.pointer("/linkage/positions/0/points");
     let at = |j: &str| -> Option<(f64, f64)> {
         let p = points?.get(j)?;
@@ -51,6 +41,58 @@ pub(crate) fn link_lengths(cx: &Ctx) -> Vec<(String, f64)> {
         }
     }
     out
+}
+
+/// The `[[linkage.links]]` of the task, or of the synthesised `[linkage]`
+/// the synthesis report carries.
+pub(crate) fn task_links(cx: &Ctx) -> Vec<toml::Value> {
+    let synthesised: Option<toml::Table> = cx.s("/synthesis/task").and_then(|t| toml::from_str(t).ok());
+    let linkage = cx
+        .task
+        .get("linkage")
+        .or_else(|| synthesised.as_ref().and_then(|t| t.get("linkage")))
+        .cloned();
+    linkage
+        .as_ref()
+        .and_then(|l| l.get("links"))
+        .and_then(|l| l.as_array())
+        .cloned()
+        .unwrap_or_default()
+}
+
+/// A name as a typst-math subscript: a number or letters as they are,
+/// anything else quoted.
+pub(crate) fn math_name(name: &str) -> String {
+    if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric()) {
+        if name.len() > 1 && name.chars().any(|c| c.is_ascii_alphabetic()) {
+            // `OA` would read as one unknown symbol: letters apart
+            name.chars().map(String::from).collect::<Vec<_>>().join(" ")
+        } else {
+            name.to_string()
+        }
+    } else {
+        format!("\"{}\"", name.replace(['\\', '"'], ""))
+    }
+}
+
+/// The input link (кривошип) as (its frame joint, its moving joint, its
+/// length in m): the joint of the link that stays still in the first
+/// position is its axis. `None` if the task does not name the joints.
+pub(crate) fn crank(cx: &Ctx) -> Option<(String, String, f64)> {
+    let input = cx.s("/linkage/input/link")?;
+    let links = task_links(cx);
+    let link = links.iter().find(|l| l.get("name").and_then(|n| n.as_str()) == Some(input))?;
+    let joints: Vec<&str> = link.get("joints")?.as_array()?.iter().filter_map(|j| j.as_str()).collect();
+    let points = cx.report.pointer("/linkage/positions/0/points")?;
+    let p = |j: &str| -> Option<(f64, f64, f64)> {
+        let q = points.get(j)?;
+        let f = |k: &str| q.get(k).and_then(Value::as_f64);
+        Some((f("x")?, f("y")?, f("vx")?.hypot(f("vy")?)))
+    };
+    let axis = joints.iter().find(|j| p(j).is_some_and(|(_, _, v)| v < 1e-9))?;
+    let pin = joints.iter().find(|j| *j != axis && p(j).is_some_and(|(_, _, v)| v > 1e-9))?;
+    let (a, b) = (p(axis)?, p(pin)?);
+    Some((axis.to_string(), pin.to_string(), (a.0 - b.0).hypot(a.1 - b.1)))
 }
 
 /// The section, if the report has `linkage`.
@@ -81,16 +123,54 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let mut formulas = vec![
         cx.para("lk_f_dof", &[])?,
         formula("W = 3 n - 2 p_5 - p_4"),
+        cx.para("where_dof", &[])?,
         cx.para("lk_f_velocity", &[])?,
-        formula("arrow(v)_C = arrow(v)_B + arrow(v)_(C B), quad v_B = omega_1 l_(A B)"),
+        formula(&match crank(cx) {
+            // the crank's own points (OA in seed 003, AB in the default project)
+            Some((axis, pin, _)) => format!(
+                "arrow(v)_C = arrow(v)_B + arrow(v)_(C B), quad v_({p}) = omega_1 l_({a} {p})",
+                a = math_name(&axis),
+                p = math_name(&pin)
+            ),
+            None => "arrow(v)_C = arrow(v)_B + arrow(v)_(C B)".to_string(),
+        }),
+        cx.para("where_velocity", &[])?,
         cx.para("lk_f_acceleration", &[])?,
         formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B), quad a^n_(C B) = omega_2^2 l_(B C)"),
+        cx.para("where_acceleration", &[])?,
     ];
     if kv.is_some() {
         formulas.push(cx.para("lk_f_kv", &[])?);
         formulas.push(formula("K_v = (180° + theta) / (180° - theta)"));
+        formulas.push(cx.para("where_kv", &[])?);
     }
-    let mut results = vec![cx.para(
+    let mut results = super::structure::blocks(cx)?;
+    results.extend([
+        cx.para("calc_dof", &[])?,
+        Block::Calculation(Calculation::new(
+            Quantity::count("W", dof),
+            calc::sub(
+                calc::sub(
+                    Expr::Mul(vec![calc::int(3), calc::count("n", n)]),
+                    Expr::Mul(vec![calc::int(2), calc::count("p_5", p5)]),
+                ),
+                calc::count("p_4", p4),
+            ),
+        )),
+    ]);
+    if let (Some((axis, pin, l)), Some(v)) = (crank(cx), plan_speed(cx)) {
+        let pin_m = math_name(&pin);
+        results.push(cx.para("calc_vb", &[cx.deg("/linkage/plans/phi")?])?);
+        results.push(Block::Calculation(Calculation::new(
+            Quantity::new(&format!("v_({pin_m})"), v, &cx.w("u_m_s")?),
+            Expr::Mul(vec![
+                // a speed's magnitude: a clockwise crank has ω1 < 0 in the report
+                calc::q("omega_1", omega.abs(), ""),
+                calc::q(&format!("l_({} {pin_m})", math_name(&axis)), l, ""),
+            ]),
+        )));
+    }
+    results.push(cx.para(
         "lk_structure",
         &[
             format!("{n}"),
@@ -100,7 +180,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             formula_text.clone(),
             format!("{class}"),
         ],
-    )?];
+    )?);
     for (path, key) in [
         ("linkage/positions.svg", "fig_positions"),
         ("linkage/velocity-plan.svg", "fig_velocity_plan"),
@@ -153,6 +233,13 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             None => cx.para("lk_conclusion_partial", &[assembly_ranges(cx)?, pressure_max(cx)?])?,
         },
     ];
+    // the analysed mechanism (the task's lengths) against the synthesised one
+    let mut conclusions = conclusions;
+    if let (Some(kv), Some(ks)) = (kv, cx.opt("/synthesis/check/k"))
+        && cx.q(kv, "")? != cx.q(ks, "")?
+    {
+        conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[cx.q(ks, "")?, cx.q(kv, "")?])?);
+    }
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
 }
 
@@ -187,6 +274,20 @@ fn pressure_max(cx: &Ctx) -> Result<String, NoteError> {
         .map(|l| l.iter().filter_map(|p| p.get("max").and_then(Value::as_f64)).fold(0.0, f64::max))
         .unwrap_or(0.0);
     cx.q(m.to_degrees(), "u_deg")
+}
+
+/// The crank pin's speed on the velocity plan, m/s.
+fn plan_speed(cx: &Ctx) -> Option<f64> {
+    let (_, pin, _) = crank(cx)?;
+    let plan = cx.report.pointer("/linkage/plans/velocity")?.as_array()?;
+    let v = plan.iter().find(|v| {
+        v.get("kind").and_then(Value::as_str) == Some("absolute")
+            && v.get("label")
+                .and_then(Value::as_str)
+                .map(|l| l.trim_start_matches("V_").trim_start_matches("v_"))
+                == Some(pin.as_str())
+    })?;
+    Some(vec_len(v))
 }
 
 /// The magnitude of a plan vector `{from, to}`.

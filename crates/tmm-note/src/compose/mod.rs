@@ -23,10 +23,13 @@ mod context;
 mod cylinder;
 mod dynamics;
 mod forces;
+mod frame_parts;
 mod gear;
 mod linkage;
 mod planetary;
+mod references;
 mod stroke;
+mod structure;
 mod synthesis;
 mod words;
 
@@ -120,6 +123,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
             sections.push(s);
         }
     }
+    references::add(&cx, &mut sections)?;
     let mut sources = Vec::new();
     for i in 1.. {
         match words.get(&format!("source_{i}")) {
@@ -129,9 +133,11 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
     }
     Ok(Note {
         lang,
-        project,
         frame: p.frame,
         assignment: assignment::blocks(&cx)?,
+        introduction: frame_parts::introduction(&cx, &project.title, &sections)?,
+        conclusion: frame_parts::conclusion(&cx, &sections)?,
+        project,
         sections,
         sources,
         appendices: appendix::appendices(&cx)?,

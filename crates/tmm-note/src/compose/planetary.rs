@@ -5,6 +5,7 @@
 use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
 
@@ -25,13 +26,18 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("pl_method", &[])?,
         cx.para("pl_sought", &[])?,
     ];
-    let mut formulas = vec![cx.para("pl_f_willis", &[])?, formula("u_(1 H) = 1 - u^((H))_(1 3)")];
+    let mut formulas = vec![
+        cx.para("pl_f_willis", &[])?,
+        formula("u_(1 H) = 1 - u^((H))_(1 3)"),
+        cx.para("where_willis", &[])?,
+    ];
     if scheme == "sun-planet-ring" {
         formulas.extend([
             cx.para("pl_f_spr", &[])?,
             formula(
-                "u_(1 H) = 1 + z_3 / z_1, quad z_1 + 2 z_2 = z_3, quad (z_1 + z_3) / k in NN, quad (z_1 + z_2) sin(pi / k) > z_2 + 2 h_a^*",
+                "u_(1 H) = 1 + z_3 / z_1, quad z_1 + 2 z_2 = z_3, \\ (z_1 + z_3) / k in NN, quad (z_1 + z_2) sin(pi / k) > z_2 + 2 h_a^*",
             ),
+            cx.para("where_spr", &[])?,
         ]);
     }
     let z: Vec<String> = pl
@@ -58,7 +64,21 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if let Some(w) = cx.opt("/planetary/best/velocity_picture/omega_carrier") {
         q.push((cx.w("q_omega_carrier")?, cx.q(w, "u_rad_s")?));
     }
-    let mut results = vec![cx.quantities("tab_planetary", q)?];
+    let mut results = Vec::new();
+    // the worked ratio of the single-row train with the chosen teeth
+    if let (true, Some(zs), Some(u)) = (
+        scheme == "sun-planet-ring",
+        pl.pointer("/best/z").and_then(Value::as_array),
+        cx.opt("/planetary/best/ratio"),
+    ) && let (Some(z1), Some(z3)) = (zs.first().and_then(Value::as_f64), zs.get(2).and_then(Value::as_f64))
+    {
+        results.push(cx.para("calc_willis", &[])?);
+        results.push(Block::Calculation(Calculation::new(
+            Quantity::new("u_(1 H)", u, ""),
+            Expr::Sum(vec![calc::int(1), calc::div(calc::count("z_3", z3), calc::count("z_1", z1))]),
+        )));
+    }
+    results.push(cx.quantities("tab_planetary", q)?);
     if let Some(f) = cx.figure("planetary/planetary.svg", "fig_planetary")? {
         results.push(f);
     }

@@ -5,11 +5,23 @@
 use serde_json::Value;
 
 use super::context::{Ctx, formula, four_parts, num, text};
+use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
 
 /// Keys of the given values that are angles (printed in degrees).
-const ANGLES: &[&str] = &["swing", "theta", "angle", "phi", "psi", "pressure_angle", "transmission_angle"];
+const ANGLES: &[&str] = &[
+    "swing",
+    "theta",
+    "angle",
+    "phi",
+    "psi",
+    "pressure_angle",
+    "transmission_angle",
+    "arm_angle",
+    "max_pressure",
+    "delta",
+];
 /// Keys of the given values without a unit.
 const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 
@@ -101,10 +113,24 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let formulas = vec![
         cx.para("sy_f_theta", &[])?,
         formula("theta = 180° (K_v - 1) / (K_v + 1)"),
+        cx.para("where_theta", &[])?,
         cx.para("sy_f_pressure", &[])?,
         formula("gamma = 90° - theta.alt, quad theta.alt_max <= [theta.alt]"),
+        cx.para("where_gamma", &[])?,
     ];
-    let mut results = vec![lengths(cx, sy)?];
+    // the worked angle of overlap with the given K (seed 004: θ = 180°·(1,1065 − 1)/(1,1065 + 1))
+    let kq = || calc::qd("K_v", k, "", 5);
+    let mut results = vec![
+        cx.para("calc_theta", &[])?,
+        Block::Calculation(Calculation::new(
+            Quantity::new("theta", cx.v("/synthesis/theta")?.to_degrees(), "°"),
+            Expr::Mul(vec![
+                calc::exact(180.0, "180°"),
+                calc::div(calc::sub(kq(), calc::int(1)), Expr::Sum(vec![kq(), calc::int(1)])),
+            ]),
+        )),
+        lengths(cx, sy)?,
+    ];
     let mut q = vec![
         (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
         (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
@@ -165,7 +191,7 @@ fn lengths(cx: &Ctx, sy: &Value) -> Result<Block, NoteError> {
     if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
         for (name, v) in l {
             if let Some(x) = v.as_f64() {
-                rows.push(vec![text(format!("l_{name}")), num(x * 1000.0)]);
+                rows.push(vec![text(crate::notation::notation(&format!("l_{name}"))), num(x * 1000.0)]);
             }
         }
     }
@@ -207,7 +233,7 @@ fn length_rows(sy: &Value) -> Vec<Vec<crate::model::Cell>> {
     if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
         for (name, v) in l {
             if let Some(x) = v.as_f64() {
-                rows.push(vec![text(format!("l_{name}")), num(x * 1000.0)]);
+                rows.push(vec![text(crate::notation::notation(&format!("l_{name}"))), num(x * 1000.0)]);
             }
         }
     }

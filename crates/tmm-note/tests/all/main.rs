@@ -5,5 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;
+mod formulas;
 mod frame;
+mod notation;
 mod typeset;

@@ -312,7 +312,9 @@ pub fn sample_note(lang: Lang, frame: bool, copies: usize) -> Note {
         },
         frame,
         assignment: assignment(lang),
+        introduction: None,
         sections: body_sections(lang, &w, copies),
+        conclusion: None,
         sources: vec![w.source1.into(), w.source2.into()],
         appendices: vec![appendix],
     }

@@ -42,6 +42,14 @@ fn row_json(l: &Loaded, r: &Row) -> Value {
     })
 }
 
+/// The name of the point of a pair.
+fn pair_point<'a>(p: &tmm_linkage::mechanism::Pair, m: &'a tmm_linkage::mechanism::Mechanism) -> &'a str {
+    let i = match *p {
+        tmm_linkage::mechanism::Pair::R { point, .. } | tmm_linkage::mechanism::Pair::P { point, .. } => point,
+    };
+    m.points.get(i).map_or("", |q| q.name.as_str())
+}
+
 /// The whole document.
 pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let m = &l.mech;
@@ -50,7 +58,30 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let groups: Vec<Value> = s
         .groups
         .iter()
-        .map(|g| json!({"class": g.class, "order": g.order, "kind": g.kind, "links": g.links}))
+        .map(|g| {
+            let pair_names: Vec<&str> = g
+                .pair_ids
+                .iter()
+                .filter_map(|&i| m.pairs.get(i))
+                .map(|p| pair_point(p, m))
+                .collect();
+            json!({"class": g.class, "order": g.order, "kind": g.kind, "links": g.links, "pairs": pair_names})
+        })
+        .collect();
+    // the kinematic pairs (кинематические пары): the point that names each,
+    // its two links, its kind; every pair of a linkage is a lower pair of
+    // class 5 (one freedom)
+    let pairs: Vec<Value> = m
+        .pairs
+        .iter()
+        .map(|p| {
+            let (a, b) = p.links();
+            let kind = match p.kind() {
+                tmm_linkage::structure::PairKind::R => "R",
+                tmm_linkage::structure::PairKind::P => "P",
+            };
+            json!({"point": pair_point(p, m), "links": [m.link_names[a], m.link_names[b]], "kind": kind, "class": 5})
+        })
         .collect();
     let w = m.crank.omega.abs();
     let vec = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
@@ -66,7 +97,7 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let mut doc = json!({
         "units": "SI",
         "structure": {
-            "dof": s.dof, "n": s.n, "p5": s.p5, "p4": s.p4, "groups": groups,
+            "dof": s.dof, "n": s.n, "p5": s.p5, "p4": s.p4, "groups": groups, "pairs": pairs,
             "formula": s.formula, "class": s.class,
             "dof_by_rank": s.dof_rank, "redundant_constraints": s.redundant, "passive_freedoms": s.passive,
         },

@@ -3,6 +3,7 @@
 
 pub(crate) mod draw;
 mod json;
+mod structure_draw;
 pub mod task;
 mod text;
 
