@@ -591,9 +591,10 @@ struct Spot {
 }
 
 /// The lettering's font (GOST 2.304 type A, ISO 3098): the faces that
-/// draw it, in order (the open `osifont` when installed), then fallbacks;
-/// written slanted (`font-style: italic`).
-pub const FONT: &str = "GOST type A, ISOCPEUR, osifont, DejaVu Sans, Arial, sans-serif";
+/// draw it, in order, then fallbacks; written slanted (`font-style:
+/// italic`). The open `osifont` is not listed: Debian's 0.1.20220224 draws
+/// Э э Ё ё as filled boxes ("Энергия", "Эпюра" would lose a letter).
+pub const FONT: &str = "GOST type A, ISOCPEUR, DejaVu Sans, Arial, sans-serif";
 
 /// The part of the lettering height above the baseline a box counts.
 pub const TEXT_ASCENT: f64 = 0.85;

@@ -13,6 +13,7 @@ mod hardening_examples;
 mod linkage_examples;
 mod seg_index;
 mod sheets;
+mod sheets_dxf;
 mod svg_read;
 mod units;
 mod xml;

@@ -1,0 +1,144 @@
+//! The sheets' DXF as a CAD program reads it, for the default project,
+//! seed 003 and an example of the gear, planetary and cam sections: every letter at least 2.5 mm high (GOST
+//! 2.304), the main line 0.7 mm and the thin lines 0.25 mm by layer, the
+//! dash-dot pattern in the LTYPE table and used by the axes, a text style
+//! that is not `txt`, indices as MTEXT stacks, and an ezdxf audit that
+//! makes no fix (when a Python with ezdxf is at hand: `TMM_EZDXF_PYTHON`).
+//! The references are GOST's numbers, not the code's output.
+
+use dxf::entities::EntityType;
+use tmm_report::TaskSource;
+use tmm_report::run::{DEFAULT_TASK, Run, run_task};
+
+/// The sheets' DXF of a run, parsed, with their paths and bytes.
+fn sheet_dxfs(run: &Run) -> Vec<(String, Vec<u8>, dxf::Drawing)> {
+    run.docs
+        .iter()
+        .filter(|d| d.path.starts_with("sheets/") && d.extension() == "dxf")
+        .map(|d| {
+            let dr = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap_or_else(|e| panic!("{}: {e}", d.path));
+            (d.path.clone(), d.bytes.clone(), dr)
+        })
+        .collect()
+}
+
+fn runs() -> Vec<(String, Run)> {
+    let mut v = vec![("default".to_string(), run_task(&TaskSource::new("default", DEFAULT_TASK)).unwrap())];
+    // seed 003 and one example of the gear, planetary and cam sections
+    for name in [
+        "seed-003-sixbar.toml",
+        "gear-seed003.toml",
+        "planetary-ext-int.toml",
+        "cam-seed-001-roller.toml",
+    ] {
+        let text = crate::svg_read::example(name);
+        v.push((name.to_string(), run_task(&TaskSource::new(name, text)).unwrap()));
+    }
+    v
+}
+
+#[test]
+fn every_letter_on_a_sheet_is_at_least_2_5_mm() {
+    for (name, run) in runs() {
+        let dxfs = sheet_dxfs(&run);
+        assert!(!dxfs.is_empty(), "{name}: no sheets");
+        for (path, _, d) in &dxfs {
+            let mut n = 0;
+            let mut smallest = f64::INFINITY;
+            for e in d.entities() {
+                let h = match &e.specific {
+                    EntityType::Text(t) => t.text_height,
+                    EntityType::MText(t) => t.initial_text_height,
+                    _ => continue,
+                };
+                n += 1;
+                smallest = smallest.min(h);
+            }
+            assert!(n > 20, "{name} {path}: {n} texts");
+            assert!(smallest >= 2.5 - 1e-9, "{name} {path}: a letter {smallest} mm high");
+            eprintln!("{name} {path}: {n} texts, the smallest {smallest} mm");
+        }
+    }
+}
+
+#[test]
+fn lines_carry_gost_types_and_weights() {
+    let run = run_task(&TaskSource::new("default", DEFAULT_TASK)).unwrap();
+    for (path, _, d) in &sheet_dxfs(&run) {
+        let layer = |n: &str| {
+            d.layers()
+                .find(|l| l.name == n)
+                .unwrap_or_else(|| panic!("{path}: no layer {n}"))
+                .clone()
+        };
+        // GOST 2.303: the main line s = 0.5 … 1.4 mm, thin s/3 … s/2
+        let main = f64::from(layer("MAIN").line_weight.raw_value()) / 100.0;
+        let thin = f64::from(layer("THIN").line_weight.raw_value()) / 100.0;
+        assert!((0.5..=1.4).contains(&main), "{path}: main {main} mm");
+        assert!(thin >= main / 3.0 - 1e-9 && thin <= main / 2.0 + 1e-9, "{path}: thin {thin} mm");
+        assert_eq!(layer("AXIS").line_type_name, "GOST_DASHDOT", "{path}");
+        // the dash-dot pattern: a dash of 5 … 30 mm, a gap of 3 … 5 mm holding a dot
+        let lt = d
+            .line_types()
+            .find(|l| l.name == "GOST_DASHDOT")
+            .unwrap_or_else(|| panic!("{path}: no dash-dot"));
+        let el: Vec<f64> = lt.dash_dot_space_lengths.iter().map(|x| x.abs()).collect();
+        assert_eq!(el.len(), 4, "{path}: {el:?}");
+        assert!((5.0..=30.0).contains(&el[0]), "{path}: dash {}", el[0]);
+        assert!((3.0..=5.0).contains(&(el[1] + el[2] + el[3])), "{path}: gap {el:?}");
+        // the text style maps to a GOST face, never `txt` (no Cyrillic)
+        assert!(
+            d.styles()
+                .all(|s| !s.primary_font_file_name.to_ascii_lowercase().starts_with("txt")),
+            "{path}: a txt style"
+        );
+        // something is drawn in the main line on every sheet
+        assert!(d.entities().any(|e| e.common.layer == "MAIN"), "{path}: no main line");
+    }
+    // the axes of the mechanism and the gears are dash-dot
+    let on_axis = |p: &str| {
+        let d = run.docs.get(p).unwrap();
+        let dr = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
+        dr.entities()
+            .filter(|e| e.common.layer == "AXIS" || e.common.line_type_name == "GOST_DASHDOT")
+            .count()
+    };
+    assert!(on_axis("sheets/sheet-3.dxf") > 0, "the gears' pitch circles and axes");
+    // the indices of the plans' labels are MTEXT stacks (a^τ_CB, not "aτCB")
+    let d = run.docs.get("sheets/sheet-1.dxf").unwrap();
+    let dr = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
+    let stacks = dr
+        .entities()
+        .filter(|e| matches!(&e.specific, EntityType::MText(t) if t.text.contains("\\S")))
+        .count();
+    assert!(stacks > 10, "sheet 1: {stacks} stacked indices");
+}
+
+#[test]
+fn the_sheets_dxf_pass_an_ezdxf_audit_without_fixes() {
+    let py = std::env::var("TMM_EZDXF_PYTHON").unwrap_or_else(|_| "python3".to_string());
+    let ok = std::process::Command::new(&py)
+        .args(["-c", "import ezdxf"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        eprintln!("the_sheets_dxf_pass_an_ezdxf_audit_without_fixes: skipped, no python with ezdxf (set TMM_EZDXF_PYTHON)");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("tmm-sheets-audit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut files = Vec::new();
+    for (name, run) in runs() {
+        for (path, bytes, _) in sheet_dxfs(&run) {
+            let f = dir.join(format!("{}-{}", name.replace('.', "_"), path.replace('/', "-")));
+            std::fs::write(&f, bytes).unwrap();
+            files.push(f);
+        }
+    }
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scripts/dxf-audit.py");
+    let o = std::process::Command::new(py).arg(script).args(&files).output().unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let report = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "ezdxf audit: {report}{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(report.matches(": 0 fixes, 0 errors").count(), files.len(), "{report}");
+}
