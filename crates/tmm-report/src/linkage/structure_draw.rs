@@ -35,7 +35,7 @@ struct Panel {
 
 /// The structural scheme and the groups apart (SVG), at the analysed
 /// position of `a`.
-pub fn structure_scheme(l: &Loaded, a: &Analysis, lang: Language) -> String {
+pub fn structure_scheme(l: &Loaded, a: &Analysis, lang: Language) -> crate::picture::Picture {
     let m = &l.mech;
     let sol = &a.plan_row.sol;
     let crank = m.crank.link;
