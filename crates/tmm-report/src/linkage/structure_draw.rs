@@ -88,7 +88,9 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, lang: Language) -> crate::pict
             rows.push(Vec::new());
             x = 0.0;
         }
-        rows.last_mut().map(|r| r.push(i));
+        if let Some(r) = rows.last_mut() {
+            r.push(i);
+        }
         x += w;
     }
     let row_h: Vec<f64> = rows
