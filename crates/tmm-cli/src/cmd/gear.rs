@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use tmm_gears::contour::{ContourOptions, blocking_contour};
 use tmm_report::Error;
 use tmm_report::gear::input::{Field, Origin, Raw, gear_error};
-use tmm_report::gear::{contour_plot, json, mesh, profile, profiles, sliding_svg, solve, text};
+use tmm_report::gear::{contour_plot, json, machine_mesh, mesh, profile, profiles, sliding_svg, solve, text};
 use tmm_report::task::RawQty;
 
 use tmm_report::output::num;
@@ -106,6 +106,9 @@ pub struct PairArgs {
     /// Write the specific-sliding diagram (SVG) to this file
     #[arg(long)]
     pub sliding_svg: Option<PathBuf>,
+    /// Write the machine meshing of wheel 1 with the rack-type tool (SVG) to this file
+    #[arg(long)]
+    pub machine_mesh_svg: Option<PathBuf>,
     /// Include one generated tooth of each wheel in the JSON
     #[arg(long)]
     pub with_profiles: bool,
@@ -187,6 +190,12 @@ fn pair(a: &PairArgs) -> Result<(), Error> {
     }
     if let Some(p) = &a.sliding_svg {
         files.push((p.clone(), sliding_svg(pair, Default::default(), Default::default()).into_bytes()));
+    }
+    if let Some(p) = &a.machine_mesh_svg {
+        files.push((
+            p.clone(),
+            machine_mesh::machine_mesh_svg(pair, &t1, Default::default(), Default::default()).into_bytes(),
+        ));
     }
     let files = write_named(&files)?;
     print(&if a.common.json { out } else { out + &written(&files) })

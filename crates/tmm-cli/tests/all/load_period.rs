@@ -61,6 +61,10 @@ fn p2_summed_loads_repeat_every_turn_and_give_the_same_flywheel() {
     let (mx, mn) = (deg("/mertsalov/phi_max"), deg("/mertsalov/phi_min"));
     assert!((140.0..=180.0).contains(&mx), "T_I max at {mx}°");
     assert!((0.0..=30.0).contains(&mn), "T_I min at {mn}°");
+    // and the exact method's Φ_A (ω_max), Φ_B (ω_min) in the book's ranges
+    let (fa, fb) = (deg("/exact/phi_max"), deg("/exact/phi_min"));
+    assert!((140.0..=180.0).contains(&fa), "Φ_A = {fa}°");
+    assert!((0.0..=30.0).contains(&fb), "Φ_B = {fb}°");
 }
 
 #[test]

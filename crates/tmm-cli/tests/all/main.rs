@@ -18,6 +18,7 @@ mod indicator_drawing;
 mod input_limits;
 mod linkage;
 mod load_period;
+mod machine_mesh;
 mod note;
 mod planetary_cli;
 mod redundant;

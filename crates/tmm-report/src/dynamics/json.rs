@@ -116,6 +116,9 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         "mertsalov": mertsalov.clone(),
         "merkalov": mertsalov,
         "wittenbauer": {"upper": tangent(&d.wittenbauer.upper), "lower": tangent(&d.wittenbauer.lower), "energy_start": num(d.wittenbauer.energy_start)},
+        // the exact method's positions of ω_max and ω_min (П2, П3: Φ_A, Φ_B)
+        "exact": {"inertia": num(d.exact.inertia), "phi_max": num(d.exact.phi_max), "phi_min": num(d.exact.phi_min),
+            "omega_max": num(d.exact.omega_max), "omega_min": num(d.exact.omega_min)},
         "inertia_constant": num(mo.inertia_constant),
         "energy_start": num(mo.energy_start),
         "flywheel_inertia": num(d.flywheel_inertia),

@@ -1,6 +1,7 @@
 //! The `[gear]` section of a task file and the `tmm gear` commands: reading the
 //! input ([`input`]), computing the pair ([`solve`]), tables ([`text`]), JSON
-//! ([`json`]), the meshing drawing ([`mesh`]), the blocking contour plot
+//! ([`json`]), the meshing drawing ([`mesh`]), the machine meshing of wheel 1
+//! with the rack-type tool ([`machine_mesh`]), the blocking contour plot
 //! ([`contour_plot`]), the sliding diagram ([`sliding_plot`]) and the
 //! generated profiles ([`profile`]).
 
@@ -9,6 +10,7 @@
 pub mod contour_plot;
 pub mod input;
 pub mod json;
+pub mod machine_mesh;
 pub mod mesh;
 pub mod profile;
 pub mod sliding_plot;
@@ -64,6 +66,11 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let mut docs = Documents::for_task(task);
     docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2, task.lang, task.sheet))?;
     docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
+    // wheel 1 is cut by the rack-type tool in either kind of pair
+    docs.add_text(
+        "gear/machine-mesh.svg",
+        machine_mesh::machine_mesh_svg(pair, &t1, task.lang, task.sheet),
+    )?;
     docs.add_text("gear/sliding.svg", sliding_svg(pair, task.lang, task.sheet))?;
     docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
     docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2, task.lang))?;

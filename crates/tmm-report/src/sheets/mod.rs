@@ -107,10 +107,10 @@ const TEMPLATES: [Template; 4] = [
         folders: &["gear", "planetary"],
         order: &[
             "!gear/mesh",
+            "!gear/machine-mesh",
             "!gear/contour",
             "!gear/sliding",
             "!planetary/planetary",
-            "gear/profiles",
         ],
     },
     Template {
