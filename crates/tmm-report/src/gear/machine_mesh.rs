@@ -121,7 +121,7 @@ fn runs(pts: &[Pt], (x0, x1, y0, y1): (f64, f64, f64, f64)) -> Vec<Vec<Pt>> {
 
 /// The machine meshing of wheel 1 of `pair` (its generated tooth `t1`) as
 /// SVG on the Small slot of `sheet` at a GOST 2.302 scale, words in `lang`.
-pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: SheetFormat) -> String {
+pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: SheetFormat) -> crate::picture::Picture {
     let s = &pair.spec;
     let k = 1e3;
     let (m, x, z) = (s.m * k, pair.w1.x, s.z1);
@@ -191,11 +191,11 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
             cv.polyline(&run, Style::THIN.colored(TRACE).widened(0.18));
         }
     }
-    cv.raw("<g class=\"rack-tool\">");
+    cv.begin_group_data("rack-tool", &[]);
     for run in runs(&tool, win) {
         cv.polyline(&run, Style::THICK.colored(TOOL));
     }
-    cv.raw("</g>");
+    cv.end_group();
 
     // the wheel: a space of it faces the tool's tooth at P (a tooth centred
     // half a pitch angle from −y), its teeth and circles
@@ -223,14 +223,14 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
 
     // the two lines and the shift between them
     let ext = |y: f64| ((wx0, y), (wx1, y));
-    cv.raw("<g class=\"machine-pitch-line\">");
+    cv.begin_group_data("machine-pitch-line", &[]);
     let (a, b) = ext(0.0);
     cv.line(a, b, Style::THIN.colored(RED));
-    cv.raw("</g>");
-    cv.raw("<g class=\"rack-reference-line\">");
+    cv.end_group();
+    cv.begin_group_data("rack-reference-line", &[]);
     let (a, b) = ext(y_ref);
     cv.line(a, b, Style::AXIS.colored(TOOL));
-    cv.raw("</g>");
+    cv.end_group();
     let lx = cv.to_paper(wx0, 0.0).0;
     let py = |y: f64| cv.to_paper(0.0, y).1;
     let (y0p, y1p) = (py(0.0), py(y_ref));
