@@ -44,6 +44,8 @@ enum Command {
     Planetary(cmd::planetary::Args),
     /// Cam mechanism: motion law, minimum size, profile
     Cam(cmd::cam::Args),
+    /// A mechanism driven by a cylinder, the piston's travel s as its coordinate: analogues d/ds, reduced mass, the zero-work control force, V(s), a(s), t(s), kinetostatics
+    Cylinder(cmd::cylinder::Args),
 }
 
 fn main() -> ExitCode {
@@ -75,6 +77,7 @@ fn main() -> ExitCode {
         Command::Gear(a) => cmd::gear::run(a),
         Command::Planetary(a) => cmd::planetary::run(a),
         Command::Cam(a) => cmd::cam::run(a),
+        Command::Cylinder(a) => cmd::cylinder::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -2,6 +2,7 @@
 
 pub mod cam;
 pub mod common;
+pub mod cylinder;
 pub mod dynamics;
 pub mod forces;
 pub mod gear;

@@ -6,6 +6,7 @@ mod cam;
 mod common;
 mod compressor;
 mod cost_bounds;
+mod cylinder;
 mod dynamics;
 mod engine;
 mod every_example;

@@ -122,7 +122,7 @@ impl CylinderDrive {
     /// travel s where it stops reaching.
     pub fn new(d: Vec2, lever: f64, h_min: f64, h_max: f64, rod: f64, start_angle: f64) -> Result<Self, DynamicsError> {
         for (f, v) in [
-            ("cylinder.lever", lever),
+            ("cylinder.lever_length", lever),
             ("cylinder.h_min", h_min),
             ("cylinder.h_max", h_max),
             ("cylinder.rod", rod),

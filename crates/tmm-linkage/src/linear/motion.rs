@@ -283,7 +283,7 @@ impl CylinderMotion {
         DynamicsError::spec(
             "cylinder.switch",
             format!(
-                "the control force cannot lift the load: V² = 2A_Σ/m_пр < 0 from s = {} m of the travel s_max = {} m (the forces' work A_Σ turns negative there; the control force of zero work, F_H = {} N up to s_c = {} m falling to F_K = {} N, is too weak there); move the switch point s_c",
+                "the control force cannot lift the load: V² = 2A_Σ/m_пр < 0 from s = {} m of the travel s_max = {} m (the forces' work A_Σ turns negative there; the control force of zero work, F_H = {} N up to s_c = {} m, then linear to F_K = {} N, is too weak there); move the switch point s_c",
                 show(round_mm(at)),
                 show(self.control.travel),
                 show(self.control.start),

@@ -11,7 +11,7 @@
 //! swing = "60 deg"
 //! pressure_end = "50 deg"    # or pressure_start
 //! frame_y = "0.05 m"
-//! # … or the geometry given: frame = ["0.6 m", "0.05 m"], lever = "0.3 m",
+//! # … or the geometry given: frame = ["0.6 m", "0.05 m"], lever_length = "0.3 m",
 //! # start_angle = "90 deg" (the lever's angle at s = 0, near)
 //! rod_center = "195 mm"      # l_CS2, C to S2 (default rod/2)
 //! switch = "0.18 m"          # s_c, where the control force starts to change
@@ -62,7 +62,8 @@ struct Sec {
     pressure_start: Option<Qty>,
     frame_y: Option<Qty>,
     frame: Option<S<Vec<Qty>>>,
-    lever: Option<S<toml::Value>>,
+    lever: Option<S<LinkSec>>,
+    lever_length: Option<Qty>,
     start_angle: Option<Qty>,
     rod_center: Option<Qty>,
     switch: Option<Qty>,
@@ -156,8 +157,8 @@ pub fn help_for(field: &str) -> &'static str {
             "pressure_end = \"50 deg\" (θк at the end of the travel) or pressure_start (θн at its start), within ±90°"
         }
         "cylinder.frame_y" => "frame_y = \"0.05 m\": the ordinate Y_D of the cylinder's pivot (the synthesis' free turn about A)",
-        "cylinder.frame" | "cylinder.lever" | "cylinder.start_angle" => {
-            "either the П1.5 synthesis (swing, pressure_end or pressure_start, frame_y) or the geometry: frame = [\"0.6 m\", \"0.05 m\"] (D), lever = \"0.3 m\" (l_AB), start_angle = \"90 deg\" (the lever's angle at s = 0, near)"
+        "cylinder.frame" | "cylinder.lever_length" | "cylinder.start_angle" => {
+            "either the П1.5 synthesis (swing, pressure_end or pressure_start, frame_y) or the geometry: frame = [\"0.6 m\", \"0.05 m\"] (D), lever_length = \"0.3 m\" (l_AB), start_angle = \"90 deg\" (the lever's angle at s = 0, near)"
         }
         "cylinder.rod_center" => "rod_center = \"195 mm\": l_CS2, from the piston C towards B (default: half the rod)",
         "cylinder.switch" => {
@@ -222,58 +223,7 @@ pub fn read(task: &TaskSource) -> Result<Option<CylinderTask>, Error> {
             angle = get("load.angle", q, Dim::Angle)?;
         }
     }
-    // [cylinder.lever] is a table of masses; lever = "0.3 m" the lever's length
-    let mut lever_len: Option<(f64, Range<usize>)> = None;
-    if let Some(l) = &sec.lever {
-        let span = l.span();
-        match l.get_ref() {
-            toml::Value::Table(t) => {
-                for (k, v) in t {
-                    let field = format!("cylinder.lever.{k}");
-                    let dim = match k.as_str() {
-                        "mass" => Dim::Mass,
-                        "inertia" => Dim::Inertia,
-                        _ => {
-                            return Err(
-                                Error::at(task, span, &field, "unknown field: [cylinder.lever] has mass and inertia")
-                                    .with_help(help_for(&field)),
-                            );
-                        }
-                    };
-                    let bad = |e: String| Error::at(task, span.clone(), &field, e).with_help(help_for(&field));
-                    let x = match v {
-                        toml::Value::Float(x) => tmm_geom::units::from_number(*x, dim).map_err(|e| bad(e.to_string()))?,
-                        toml::Value::Integer(i) => tmm_geom::units::from_number(*i as f64, dim).map_err(|e| bad(e.to_string()))?,
-                        toml::Value::String(s) => tmm_geom::units::parse(s, dim).map_err(|e| bad(e.to_string()))?,
-                        _ => return Err(bad("a quantity is a number or a string with its unit (\"10 kg\")".into())),
-                    };
-                    spans.borrow_mut().insert(field, span.clone());
-                    if k == "mass" {
-                        masses.lever_mass = x;
-                    } else {
-                        masses.lever_inertia = x;
-                    }
-                }
-            }
-            toml::Value::String(s) => {
-                let x = tmm_geom::units::parse(s, Dim::Length)
-                    .map_err(|e| Error::at(task, span.clone(), "cylinder.lever", e).with_help(help_for("cylinder.lever")))?;
-                lever_len = Some((x, span));
-            }
-            toml::Value::Float(x) => lever_len = Some((*x, span)),
-            toml::Value::Integer(i) => lever_len = Some((*i as f64, span)),
-            _ => {
-                return Err(Error::at(
-                    task,
-                    span,
-                    "cylinder.lever",
-                    "the lever is its length (lever = \"0.3 m\") or its masses ([cylinder.lever] mass, inertia)",
-                )
-                .with_help(help_for("cylinder.lever")));
-            }
-        }
-    }
-    for (name, l) in [("piston", &sec.piston), ("body", &sec.body)] {
+    for (name, l) in [("lever", &sec.lever), ("piston", &sec.piston), ("body", &sec.body)] {
         if let Some(l) = l {
             let lr = l.get_ref();
             let (m, i) = (
@@ -286,7 +236,9 @@ pub fn read(task: &TaskSource) -> Result<Option<CylinderTask>, Error> {
                     None => 0.0,
                 },
             );
-            if name == "piston" {
+            if name == "lever" {
+                (masses.lever_mass, masses.lever_inertia) = (m, i);
+            } else if name == "piston" {
                 (masses.piston_mass, masses.piston_inertia) = (m, i);
             } else {
                 (masses.cylinder_mass, masses.cylinder_inertia) = (m, i);
@@ -298,11 +250,11 @@ pub fn read(task: &TaskSource) -> Result<Option<CylinderTask>, Error> {
     let (d, lever, start, syn) = if synthesis_given {
         for (name, given) in [
             ("frame", sec.frame.as_ref().map(|f| f.span())),
-            ("lever", lever_len.as_ref().map(|l| l.1.clone())),
+            ("lever_length", sec.lever_length.as_ref().map(|l| l.span())),
         ] {
             if let Some(span) = given {
                 let field = format!("cylinder.{name}");
-                return Err(Error::at(task, span, &field, "the geometry is synthesised from swing and the pressure angle here: give either the synthesis' fields or frame, lever and start_angle").with_help(help_for(&field)));
+                return Err(Error::at(task, span, &field, "the geometry is synthesised from swing and the pressure angle here: give either the synthesis' fields or frame, lever_length and start_angle").with_help(help_for(&field)));
             }
         }
         let swing = get("swing", &need(&sec.swing, "swing")?, Dim::Angle)?;
@@ -364,7 +316,7 @@ pub fn read(task: &TaskSource) -> Result<Option<CylinderTask>, Error> {
                 task,
                 section.clone(),
                 "cylinder.frame",
-                "the mechanism needs its geometry: the П1.5 synthesis (swing, pressure_end, frame_y) or frame, lever and start_angle",
+                "the mechanism needs its geometry: the П1.5 synthesis (swing, pressure_end, frame_y) or frame, lever_length and start_angle",
             )
             .with_help(help_for("cylinder.frame"))
         })?;
@@ -380,16 +332,7 @@ pub fn read(task: &TaskSource) -> Result<Option<CylinderTask>, Error> {
         spans.borrow_mut().insert("cylinder.frame".into(), fr.span());
         let x = qty(task, "cylinder.frame", &fr.get_ref()[0], Dim::Length)?;
         let y = qty(task, "cylinder.frame", &fr.get_ref()[1], Dim::Length)?;
-        let Some((lever, lspan)) = lever_len.clone() else {
-            return Err(Error::at(
-                task,
-                section.clone(),
-                "cylinder.lever",
-                "the lever's length l_AB is missing (lever = \"0.3 m\")",
-            )
-            .with_help(help_for("cylinder.lever")));
-        };
-        spans.borrow_mut().insert("cylinder.lever".into(), lspan);
+        let lever = get("lever_length", &need(&sec.lever_length, "lever_length")?, Dim::Length)?;
         let start = get("start_angle", &need(&sec.start_angle, "start_angle")?, Dim::Angle)?;
         (Vec2::new(x, y), lever, start, None)
     };

@@ -72,6 +72,20 @@ pub fn analyse(src: &TaskSource, t: CylinderTask) -> Result<Analysis, Error> {
     })
 }
 
+/// The drawings (the mechanism, m_пр, V, a, t and the forces against s),
+/// their paths under `prefix`.
+pub fn drawings(
+    a: &Analysis,
+    prefix: &str,
+    lang: crate::project::Language,
+    sheet: crate::project::SheetFormat,
+) -> Result<Documents, Error> {
+    let mut docs = Documents::new();
+    docs.add_text(format!("{prefix}mechanism.svg"), draw::mechanism(a, lang, sheet))?;
+    crate::dynamics::draw::cylinder::draw_all(a, prefix, lang, sheet, &mut docs)?;
+    Ok(docs)
+}
+
 /// Run the `[cylinder]` section of a task: documents under `cylinder/`.
 /// Returns `None` when the task has no such section.
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
@@ -82,8 +96,7 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let mut docs = Documents::for_task(task);
     docs.add_json("cylinder/cylinder.json", &json)?;
     docs.add_text("cylinder/cylinder.txt", text.clone())?;
-    docs.add_text("cylinder/mechanism.svg", draw::mechanism(&a, task.lang, task.sheet))?;
-    crate::dynamics::draw::cylinder::draw_all(&a, "cylinder/", task.lang, task.sheet, &mut docs)?;
+    docs.append(drawings(&a, "cylinder/", task.lang, task.sheet)?);
     Ok(Some(SectionOutput {
         section: "cylinder",
         text,
