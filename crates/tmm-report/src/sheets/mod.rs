@@ -396,13 +396,16 @@ type Page = (usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool);
 /// The note's lettering, mm (GOST 2.304).
 const NOTE_H: TextHeight = TextHeight::H3_5;
 const NOTE_LINE_MM: f64 = 5.5;
-/// The note's widest line, mm: twice the title block.
-const NOTE_W_MM: f64 = 2.0 * title_block::WIDTH_MM;
+/// The note's box width, mm: the title block's, right above it.
+const NOTE_W_MM: f64 = title_block::WIDTH_MM;
+/// The width its lines are wrapped to by type B's letter widths, mm: a
+/// sixth less than the box, room for a face wider than type B (the PDF's).
+const NOTE_WRAP_MM: f64 = NOTE_W_MM * 5.0 / 6.0;
 
 fn note_lines(lang: Language, left_out: &[String]) -> Vec<String> {
     let text = format!("{}: {}.", word(lang, "sheet.left_out"), left_out.join("; "));
     // wrapped by type B's letter widths at the note's size, never narrowed
-    tmm_draw::wrap(&text, NOTE_H, NOTE_W_MM).unwrap_or_else(|| vec![text.clone()])
+    tmm_draw::wrap(&text, NOTE_H, NOTE_WRAP_MM).unwrap_or_else(|| vec![text.clone()])
 }
 
 /// Lay out the sheets of a run: the drawings of each course sheet found in
@@ -458,11 +461,7 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
                 (placed, None)
             } else {
                 let lines = note_lines(lang, &out);
-                let nw = lines
-                    .iter()
-                    .map(|l| tmm_draw::Rich::plain_text(l).width(NOTE_H))
-                    .fold(0.0, f64::max)
-                    .min(NOTE_W_MM);
+                let nw = NOTE_W_MM;
                 let nh = NOTE_LINE_MM * (lines.len() as f64 + 2.0);
                 let (placed, note) = best_pack(&ds, &left, format, Some((nw, nh)));
                 out = left_out.clone();

@@ -142,3 +142,49 @@ fn the_sheets_dxf_pass_an_ezdxf_audit_without_fixes() {
     assert!(o.status.success(), "ezdxf audit: {report}{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(report.matches(": 0 fixes, 0 errors").count(), files.len(), "{report}");
 }
+
+/// The scale a sheet prints is the scale its DXF measures: on sheet 1 of
+/// the default project the mechanism's frame AD, 510 mm in the task, lies
+/// between the apexes of the two fixed pivots' ground triangles, which
+/// must be 510 mm × the ratio of the scale in the title block ("1:2,5")
+/// apart on the paper.
+#[test]
+fn the_frame_of_the_mechanism_measures_its_printed_scale() {
+    let run = run_task(&TaskSource::new("default", DEFAULT_TASK)).unwrap();
+    let d = run.docs.get("sheets/sheet-1.dxf").unwrap();
+    let dr = dxf::Drawing::load(&mut d.bytes.as_slice()).unwrap();
+    // the scale field of the title block form 1: its cell 167 … 185 mm from
+    // the block's left and 20 … 35 mm from its top (block at x 651, top y 60)
+    let field = dr
+        .entities()
+        .find_map(|e| match &e.specific {
+            EntityType::Text(t)
+                if (818.0..=836.0).contains(&t.location.x) && (25.0..=40.0).contains(&t.location.y) && t.value.contains(':') =>
+            {
+                Some(t.value.clone())
+            }
+            _ => None,
+        })
+        .expect("the scale field");
+    let (a, b) = field.split_once(':').unwrap();
+    let n = |s: &str| s.replace(',', ".").parse::<f64>().unwrap();
+    let ratio = n(a) / n(b);
+    assert_eq!(field, "1:2,5", "the default mechanism's scale");
+    // the apexes of the ground triangles (closed three-point polylines, the apex highest)
+    let apexes: Vec<(f64, f64)> = dr
+        .entities()
+        .filter_map(|e| match &e.specific {
+            EntityType::LwPolyline(p) if p.vertices.len() == 3 && p.is_closed() => {
+                p.vertices.iter().map(|v| (v.x, v.y)).max_by(|a, b| a.1.partial_cmp(&b.1).unwrap())
+            }
+            _ => None,
+        })
+        .collect();
+    let want = 510.0 * ratio;
+    let found = apexes
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| apexes[i + 1..].iter().map(move |q| (p.0 - q.0).hypot(p.1 - q.1)))
+        .any(|dist| (dist - want).abs() < 0.01);
+    assert!(found, "no two pivots {want} mm apart among {apexes:?}");
+}
