@@ -88,7 +88,9 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, lang: Language) -> String {
             rows.push(Vec::new());
             x = 0.0;
         }
-        rows.last_mut().map(|r| r.push(i));
+        if let Some(r) = rows.last_mut() {
+            r.push(i);
+        }
         x += w;
     }
     let row_h: Vec<f64> = rows
@@ -125,7 +127,8 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, lang: Language) -> String {
             let h = (b.3 - b.1) * s;
             let px = x + (w - (b.2 - b.0) * s) / 2.0;
             let py = y_top - 6.0 - h;
-            draw_links(&mut c, m, sol, &panels[i].links, &|p| to(p, px, py, b), false);
+            // the input mechanism keeps its frame; a group's outer pairs are free joints
+            draw_links(&mut c, m, sol, &panels[i].links, &|p| to(p, px, py, b), i == 0);
             c.text((x + w / 2.0, py - 9.0), &panels[i].title, H_LABEL, Anchor::Middle);
             x += w + gap;
         }
