@@ -154,14 +154,14 @@ fn script(p: &str) -> String {
         }
     } else if p.chars().all(|c| c.is_ascii_digit()) {
         format!("({p})")
-    } else if ascii_upper && !roman {
-        format!("({})", spaced(p))
-    } else if n == 2 && p.starts_with(|c: char| c.is_ascii_uppercase()) && p.ends_with('i') {
+    } else if (ascii_upper && !roman)
         // a point with the running index: v_Si, J_Si
-        format!("({})", spaced(p))
-    } else if p.chars().any(|c| c.is_ascii_digit()) && p.chars().all(|c| c.is_ascii_alphanumeric()) {
-        format!("({})", spaced(p))
-    } else if p.chars().all(is_greek) {
+        || (n == 2 && p.starts_with(|c: char| c.is_ascii_uppercase()) && p.ends_with('i'))
+        // a number with a letter: u_1H, α_a1
+        || (p.chars().any(|c| c.is_ascii_digit()) && p.chars().all(|c| c.is_ascii_alphanumeric()))
+        || p.chars().all(is_greek)
+    {
+        // letters apart, each in italics
         format!("({})", spaced(p))
     } else {
         format!("\"{p}\"")

@@ -24,7 +24,10 @@ pub(crate) fn introduction(cx: &Ctx, title: &str, sections: &[Section]) -> Resul
         sections
             .iter()
             .enumerate()
-            .map(|(i, sec)| Text::plain(format!("{} {};", i + 1, sec.title)))
+            .map(|(i, sec)| {
+                let end = if i + 1 == sections.len() { "." } else { ";" };
+                Text::plain(format!("{} {}{end}", i + 1, sec.title))
+            })
             .collect(),
     ));
     s.blocks.push(cx.para("intro_methods", &[])?);
@@ -46,8 +49,21 @@ pub(crate) fn conclusion(cx: &Ctx, sections: &[Section]) -> Result<Option<Sectio
                 if let Block::Paragraph(p) = b {
                     if any {
                         t.0.push(Span::Plain(" ".into()));
+                        t.0.extend(p.0.iter().cloned());
+                    } else {
+                        // after the colon the first sentence goes on in lower case
+                        let mut spans = p.0.clone();
+                        if let Some(Span::Plain(first)) = spans.first_mut() {
+                            let mut c = first.chars();
+                            if let (Some(a), Some(b)) = (c.next(), c.next())
+                                && a.is_uppercase()
+                                && b.is_lowercase()
+                            {
+                                *first = lower_first(first);
+                            }
+                        }
+                        t.0.extend(spans);
                     }
-                    t.0.extend(p.0.iter().cloned());
                     any = true;
                 }
             }

@@ -3,7 +3,6 @@
 
 pub(crate) mod draw;
 mod json;
-mod structure_draw;
 pub mod task;
 mod text;
 
