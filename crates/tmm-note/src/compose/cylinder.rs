@@ -193,14 +193,38 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         (cx.w("cy_q_phi3_at")?, cx.deg("/cylinder/position/phi3")?),
         (cx.w("cy_q_v_at")?, cx.qv("/cylinder/kinetostatics/speed", 1.0, "u_m_s")?),
         (cx.w("cy_q_a_at")?, cx.qv("/cylinder/kinetostatics/acceleration", 1.0, "u_m_s2")?),
-        (crate::notation::notation("R_AX"), cx.qv("/cylinder/kinetostatics/R_AX", 1.0, "u_n")?),
-        (crate::notation::notation("R_AY"), cx.qv("/cylinder/kinetostatics/R_AY", 1.0, "u_n")?),
-        (crate::notation::notation("R_BX"), cx.qv("/cylinder/kinetostatics/R_BX", 1.0, "u_n")?),
-        (crate::notation::notation("R_BY"), cx.qv("/cylinder/kinetostatics/R_BY", 1.0, "u_n")?),
-        (crate::notation::notation("R_32"), cx.qv("/cylinder/kinetostatics/R_32", 1.0, "u_n")?),
-        (crate::notation::notation("M_32"), cx.qv("/cylinder/kinetostatics/M_32", 1.0, "u_nm")?),
-        (crate::notation::notation("R_DX"), cx.qv("/cylinder/kinetostatics/R_DX", 1.0, "u_n")?),
-        (crate::notation::notation("R_DY"), cx.qv("/cylinder/kinetostatics/R_DY", 1.0, "u_n")?),
+        (
+            crate::notation::notation("R_AX"),
+            cx.qv("/cylinder/kinetostatics/R_AX", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("R_AY"),
+            cx.qv("/cylinder/kinetostatics/R_AY", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("R_BX"),
+            cx.qv("/cylinder/kinetostatics/R_BX", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("R_BY"),
+            cx.qv("/cylinder/kinetostatics/R_BY", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("R_32"),
+            cx.qv("/cylinder/kinetostatics/R_32", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("M_32"),
+            cx.qv("/cylinder/kinetostatics/M_32", 1.0, "u_nm")?,
+        ),
+        (
+            crate::notation::notation("R_DX"),
+            cx.qv("/cylinder/kinetostatics/R_DX", 1.0, "u_n")?,
+        ),
+        (
+            crate::notation::notation("R_DY"),
+            cx.qv("/cylinder/kinetostatics/R_DY", 1.0, "u_n")?,
+        ),
         (cx.w("cy_q_fur")?, cx.qv("/cylinder/kinetostatics/F_balancing", 1.0, "u_n")?),
         (cx.w("cy_q_fdv_at")?, cx.qv("/cylinder/kinetostatics/F_control", 1.0, "u_n")?),
     ];
