@@ -166,6 +166,15 @@ impl Documents {
         Ok(())
     }
 
+    /// Copy the document `d` of `other` in, with the drawing it was written
+    /// from (the sheets place drawings, not their SVG text).
+    pub fn add_copy(&mut self, other: &Documents, d: &Document) {
+        if let Some(p) = other.picture_shared(&d.path) {
+            self.pictures.push((d.path.clone(), p));
+        }
+        self.docs.push(d.clone());
+    }
+
     /// Move every document of `other` in, after these (they were checked
     /// when they were added to `other`).
     pub fn append(&mut self, other: Documents) {

@@ -252,9 +252,19 @@ impl Page {
     /// over every section's files), made on the first call.
     fn sheets(&self) -> &Result<Documents, Value> {
         self.sheets.get_or_init(|| {
+            // each section's files with the drawings they were written from
             let mut docs = Documents::new();
-            for d in self.section_docs()? {
-                docs.append(single(d));
+            if let Some(r) = self.file("report.json") {
+                docs.append(single(r));
+            }
+            for (k, s) in self.sections() {
+                let drawn = self.drawn(k, s).as_ref().map_err(Clone::clone)?;
+                for d in drawn.iter() {
+                    docs.add_copy(drawn, d);
+                }
+                for d in s.output.docs.iter() {
+                    docs.add_copy(&s.output.docs, d);
+                }
             }
             tmm_report::sheets::sheet_documents(&docs, &self.project).map_err(|e| reply::from_error(&self.task, &e))
         })

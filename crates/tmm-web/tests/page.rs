@@ -181,7 +181,10 @@ fn same_run(a: &Page, b: &Page) {
 #[test]
 fn an_edit_reruns_only_the_sections_that_read_the_edited_table() {
     let p = Page::new("t.toml", DEFAULT_TASK, None).unwrap();
-    assert_eq!(p.rerun, ["synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam"]);
+    assert_eq!(
+        p.rerun,
+        ["synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam", "cylinder"]
+    );
     // the coupler: the linkage and everything that reads it
     let coupler = DEFAULT_TASK.replacen("length = \"480 mm\"", "length = \"470 mm\"", 1);
     assert_ne!(coupler, DEFAULT_TASK);
@@ -202,7 +205,7 @@ fn an_edit_reruns_only_the_sections_that_read_the_edited_table() {
     same_run(&r, &Page::new("t.toml", &gear, None).unwrap());
     // another language redraws every section
     let s = Page::after(Some(&r), "t.toml", &gear, Some(tmm_report::project::Language::En)).unwrap();
-    assert_eq!(s.rerun.len(), 7);
+    assert_eq!(s.rerun.len(), 8);
     // a failed run leaves the kept outputs of the last good one usable
     assert!(Page::after(Some(&r), "t.toml", &gear.replacen("470 mm", "-470 mm", 1), None).is_err());
 }
