@@ -309,6 +309,7 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
   await openView("numbers");
   const ru = await js(uiTexts);
   check("the interface follows the task's language (Russian)", /Механизм/.test(ru) && /Результаты/.test(ru) && /коэффициент изменения средней скорости/.test(ru), ru.slice(0, 80));
+  check("numbers on the Russian screen have a decimal comma and no exponent", /\d,\d/.test(ru) && !/\d\.\d/.test(ru.replace(/^.*\.(svg|toml|txt|json|dxf).*$/gm, "")) && !/\de[-+]?\d/.test(ru), ru.match(/[^\n]*\d[.,]\d[^\n]*/)?.[0]);
   const en = JSON.parse(await js("JSON.stringify(Object.values(JSON.parse(window.tmmWords('en')).words))"));
   const mixed = en.filter((w) => /[a-z]{4,}/.test(w) && w !== "English" && ru.includes(w));
   check("the Russian screen has no English words of the page", mixed.length === 0, mixed.slice(0, 3).join(" | "));

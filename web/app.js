@@ -30,8 +30,16 @@ function applyWords() {
 }
 
 // ---------- numbers on screen: mm and degrees (the JSON stays SI) ----------
-const nf = (x, digits = 6) => (Number.isFinite(x) ? +x.toPrecision(digits) + "" : String(x));
-const fmt = (x) => (typeof x === "number" ? (Math.abs(x) >= 1e-3 || x === 0 ? +x.toPrecision(6) + "" : x.toExponential(5)) : String(x));
+// Numbers on screen as the interface's language writes them: a decimal comma
+// in Russian and Ukrainian, a tiny value as m·10ⁿ (never "1.9e-14").
+const decimal = (t) => (uiLang() === "en" ? t : t.replace(".", ","));
+const SUP = { "-": "\u207b", "+": "", 0: "\u2070", 1: "\u00b9", 2: "\u00b2", 3: "\u00b3", 4: "\u2074", 5: "\u2075", 6: "\u2076", 7: "\u2077", 8: "\u2078", 9: "\u2079" };
+const powerOfTen = (x) => {
+  const [m, e] = x.toExponential(3).split("e");
+  return `${decimal(+m + "")}\u00b710${[...e].map((c) => SUP[c]).join("")}`;
+};
+const nf = (x, digits = 6) => (Number.isFinite(x) ? (x !== 0 && Math.abs(x) < 1e-4 ? powerOfTen(x) : decimal(+x.toPrecision(digits) + "")) : String(x));
+const fmt = (x) => (typeof x === "number" ? nf(x) : String(x));
 const toMm = (m) => nf(m * 1000, 6);
 const toDeg = (r) => nf((r * 180) / Math.PI, 6);
 // Key numbers: [word key, path in report.json, kind]
