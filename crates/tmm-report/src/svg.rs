@@ -945,17 +945,7 @@ pub fn plot_with_impulses_in(
     c.text_paper(((ax0 + ax1) / 2.0, height - 3.0), xlabel, 3.0, Anchor::Middle, "#000");
     c.text_upward((5.0, height / 2.0), ylabel, 3.5);
     for (k, s) in series.iter().enumerate() {
-        let pts: Vec<(f64, f64)> = s
-            .points
-            .iter()
-            .map(|&(x, y)| {
-                if x.is_finite() && y.is_finite() {
-                    map(x, y)
-                } else {
-                    (f64::NAN, f64::NAN)
-                }
-            })
-            .collect();
+        let pts = mapped_path(s.points, map);
         c.path_paper(
             None,
             &pts,
@@ -1000,6 +990,26 @@ pub fn plot_with_impulses_in(
         c.text_paper((xp + 1.0, yend + dy), &imp.label, 2.2, Anchor::Start, "#6a1b9a");
     }
     c.finish()
+}
+
+/// Data points mapped onto paper for [`Canvas::path_paper`]: a point that is
+/// not finite becomes the pen-up mark `(NaN, NaN)`, so the path breaks there.
+///
+/// ```
+/// let p = tmm_report::svg::mapped_path(&[(1.0, 2.0), (f64::NAN, 0.0)], |x, y| (2.0 * x, y));
+/// assert_eq!(p[0], (2.0, 2.0));
+/// assert!(p[1].0.is_nan() && p[1].1.is_nan());
+/// ```
+pub fn mapped_path(pts: &[(f64, f64)], map: impl Fn(f64, f64) -> (f64, f64)) -> Vec<(f64, f64)> {
+    pts.iter()
+        .map(|&(x, y)| {
+            if x.is_finite() && y.is_finite() {
+                map(x, y)
+            } else {
+                (f64::NAN, f64::NAN)
+            }
+        })
+        .collect()
 }
 
 /// Round tick marks covering `[lo, hi]` with about `n` steps: (first, last,

@@ -217,17 +217,7 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
             lab.place(&cands, &l.label, H_SMALL, "#c62828");
         }
         // the curve, thick
-        let curve: Vec<(f64, f64)> = p
-            .pts
-            .iter()
-            .map(|&(x, y)| {
-                if x.is_finite() && y.is_finite() {
-                    map(x, y)
-                } else {
-                    (f64::NAN, f64::NAN)
-                }
-            })
-            .collect();
+        let curve = crate::svg::mapped_path(&p.pts, map);
         c.path_paper(Some("curve"), &curve, Style::THICK.widened(0.7).colored("#000"));
         // impacts: arrows from the axis, labels beside them
         for a in &p.arrows {
