@@ -1,7 +1,7 @@
 //! What the CLI tests share: the built `tmm` (stdin closed), run in a given
 //! folder; a fresh temporary folder per test; the repository's root; one JSON
-//! document read off a successful run's stdout; the longest number in a
-//! message.
+//! document read off a successful run's stdout and a number in it; an example
+//! edited into bad input and refused; the longest number in a message.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -57,4 +57,29 @@ pub fn longest_number(s: &str) -> usize {
         .map(str::len)
         .max()
         .unwrap_or(0)
+}
+
+/// The number at the JSON pointer `p` of `v` (the test fails naming `p`
+/// when there is none).
+pub fn number(v: &serde_json::Value, p: &str) -> f64 {
+    v.pointer(p)
+        .and_then(serde_json::Value::as_f64)
+        .unwrap_or_else(|| panic!("no number {p}"))
+}
+
+/// `tmm cmd FILE` on the repository's `example` with `from` replaced by `to`
+/// (in a fresh folder of `module`'s, as `task.toml`): it must exit with code 2,
+/// print nothing on stdout and locate its message in the file. The message.
+pub fn refused_edit(module: &str, example: &str, cmd: &str, name: &str, from: &str, to: &str) -> String {
+    let text = std::fs::read_to_string(repo().join(example)).unwrap();
+    assert!(text.contains(from), "{from}");
+    let dir = tmp(module, name);
+    let p = dir.join("task.toml");
+    std::fs::write(&p, text.replacen(from, to, 1)).unwrap();
+    let o = tmm_in(&repo(), &[cmd, p.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{name}: stdout {}", String::from_utf8_lossy(&o.stdout));
+    assert!(o.stdout.is_empty());
+    let e = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(e.contains("task.toml:"), "{name}: not located: {e}");
+    e
 }

@@ -27,11 +27,7 @@ fn arr(v: &Value, p: &str) -> Vec<f64> {
 }
 
 fn f(v: &Value, p: &str) -> f64 {
-    v.pointer(p).and_then(Value::as_f64).unwrap_or_else(|| panic!("no number {p}"))
-}
-
-fn example() -> String {
-    std::fs::read_to_string(common::repo().join(EXAMPLE)).unwrap()
+    common::number(v, p)
 }
 
 /// `tmm dynamics` on the example with `from` replaced by `to`: exit code 2,
@@ -42,17 +38,7 @@ fn bad(name: &str, from: &str, to: &str) -> String {
 
 /// As [`bad`] through the subcommand `cmd`.
 fn bad_in(cmd: &str, name: &str, from: &str, to: &str) -> String {
-    let text = example();
-    assert!(text.contains(from), "{from}");
-    let dir = common::tmp("single_stroke", name);
-    let p = dir.join("task.toml");
-    std::fs::write(&p, text.replacen(from, to, 1)).unwrap();
-    let o = tmm(&[cmd, p.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2), "{name}: stdout {}", String::from_utf8_lossy(&o.stdout));
-    assert!(o.stdout.is_empty());
-    let e = String::from_utf8_lossy(&o.stderr).to_string();
-    assert!(e.contains("task.toml:"), "{name}: not located: {e}");
-    e
+    common::refused_edit("single_stroke", EXAMPLE, cmd, name, from, to)
 }
 
 #[test]
