@@ -61,7 +61,7 @@ pub const FALLBACK_FONT: &str = "osifont.ttf";
 
 /// A number for DXF: six decimals at most, no trailing zeros, no "-0".
 fn num(v: f64) -> String {
-    let mut s = format!("{v:.6}");
+    let mut s = crate::fixed::Fixed(v, 6).to_string();
     while s.ends_with('0') {
         s.pop();
     }

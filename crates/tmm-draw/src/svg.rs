@@ -31,7 +31,7 @@ pub const CAP_EM: f64 = 1510.0 / 2048.0;
 
 /// A number for SVG: at most three decimals, no trailing zeros, no "-0".
 pub fn num(v: f64) -> String {
-    let mut s = format!("{v:.3}");
+    let mut s = crate::fixed::Fixed(v, 3).to_string();
     if s.contains('.') {
         while s.ends_with('0') {
             s.pop();
