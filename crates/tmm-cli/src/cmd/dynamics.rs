@@ -34,6 +34,8 @@ pub fn run(a: &Args) -> Result<(), Error> {
         .as_ref()
         .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm dynamics examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
+    // [synthesis] without [linkage]: the synthesised [linkage] is analysed
+    let task = tmm_report::synthesis::with_linkage(&task)?.into_owned();
     if tmm_report::dynamics::stroke_task::is_single_stroke(&task)? {
         return single_stroke(a, &task);
     }

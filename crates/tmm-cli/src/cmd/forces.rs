@@ -36,6 +36,8 @@ pub fn run(a: &Args) -> Result<(), Error> {
         .as_ref()
         .ok_or_else(|| Error::input("FILE", "a task file is needed").with_help("tmm forces examples/seed-001-fourbar.toml"))?;
     let task = read_task(file)?;
+    // [synthesis] without [linkage]: the synthesised [linkage] is analysed
+    let task = tmm_report::synthesis::with_linkage(&task)?.into_owned();
     let (l, t) = load(&task)?.ok_or_else(|| {
         task.missing("forces", "the file has no [forces] section")
             .with_help("see examples/seed-001-fourbar.toml")

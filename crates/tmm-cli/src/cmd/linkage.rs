@@ -33,6 +33,8 @@ pub struct Args {
 /// Run the command.
 pub fn run(a: &Args) -> Result<(), Error> {
     let task = read_task(&a.file)?;
+    // [synthesis] without [linkage]: the synthesised [linkage] is analysed
+    let task = tmm_report::synthesis::with_linkage(&task)?.into_owned();
     let l = load(&task)?.ok_or_else(|| {
         task.missing("linkage", "the file has no [linkage] section")
             .with_help("see examples/seed-001-fourbar.toml")

@@ -311,6 +311,20 @@ kind_args! {
     } flags {}
 }
 
+kind_args! {
+    /// Shaper: crank OA, coupler AB, rocker C–B–D and the ram driven through a slider in its slot, by H, K, λ, l_BC and l_OC (textbook П3)
+    Shaper {
+        stroke: "Stroke of the ram H",
+        k: "Time ratio K_V5 ≥ 1 (the working stroke the slower)",
+        rocker: "Rocker arm l_BC from its pivot C to the coupler's joint B",
+        lambda: "λ = l_CD / l_BC (the arm to the slider D over l_BC)",
+        frame: "Distance l_OC between the crank's pivot O and the rocker's pivot C",
+        ram_center: "The ram's centre of mass ahead of D along +X, l_S5 (default 0)",
+        cutting_speed: "Cutting speed V_рез instead of --speed: ω1 = Δφ_PX·V_рез/H",
+        design_position: "Design position: the crank's angle from the start of the working stroke (sets `at`)",
+    } flags {}
+}
+
 /// The kinds.
 #[derive(clap::Subcommand)]
 pub enum SynthCommand {
@@ -340,6 +354,8 @@ pub enum SynthCommand {
     ThreePositions(ThreePositions),
     /// Lever driven by an oscillating cylinder (textbook П1.5)
     OscillatingCylinder(OscillatingCylinder),
+    /// Shaper by H, K, λ, l_BC and l_OC (textbook П3)
+    Shaper(Shaper),
 }
 
 impl SynthCommand {
@@ -358,6 +374,7 @@ impl SynthCommand {
             SynthCommand::RockerExtremesK(a) => ("rocker-extremes-k", a.fields(), &a.common),
             SynthCommand::ThreePositions(a) => ("three-positions", a.fields(), &a.common),
             SynthCommand::OscillatingCylinder(a) => ("oscillating-cylinder", a.fields(), &a.common),
+            SynthCommand::Shaper(a) => ("shaper", a.fields(), &a.common),
         }
     }
 }

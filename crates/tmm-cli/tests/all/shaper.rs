@@ -267,6 +267,7 @@ struct Run {
     forces: Value,
     dynamics: Value,
     linkage: Value,
+    synthesis: Value,
 }
 
 fn run_p3(name: &str) -> Run {
@@ -276,27 +277,42 @@ fn run_p3(name: &str) -> Run {
         forces: read_json(&out.join("forces/forces.json")),
         dynamics: read_json(&out.join("dynamics/dynamics.json")),
         linkage: read_json(&out.join("linkage/linkage.json")),
+        synthesis: read_json(&out.join("synthesis/synthesis.json")),
     }
 }
 
+/// The task poses the book's givens (`[synthesis] kind = "shaper"`): the
+/// synthesis must give the roots of the book's four equations (Newton's
+/// method here, from the book's guesses), every quantity of "Asked 1", and a
+/// [linkage] whose analysis (tmm's cycle: the dead positions as roots of
+/// the ram's velocity) measures the stroke H, K and the start of the cycle.
 #[test]
-fn p3_synthesis_reproduces_the_task() {
+fn p3_synthesis_reproduces_the_book() {
     let s = Shaper::new();
-    let t = p3();
-    let num = |key: &str| -> f64 {
-        let at = t.find(key).unwrap_or_else(|| panic!("{key}"));
-        let rest = &t[at + key.len()..];
-        let end = rest.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-')).unwrap();
-        rest[..end].parse().unwrap()
-    };
-    assert!((num("joints = [\"O\", \"A\"]\nlength = \"") - s.l_oa).abs() < 1e-14);
-    assert!((num("joints = [\"A\", \"B\"]\nlength = \"") - s.l_ab).abs() < 1e-14);
-    assert!((num("C = [\"") - s.c.0).abs() < 1e-14);
-    assert!((num("m\", \"-") + s.c.1).abs() < 1e-14, "{}", s.c.1);
-    assert!((num("through = [0, \"") - s.y_s5).abs() < 1e-14);
-    assert!((num("speed = \"") - (7.0 * PI / 6.0) * 0.5 / 0.3).abs() < 1e-13);
-    // the kinematics of tmm: the stroke, K and the start of the cycle
+    let [l_oa, l_ab, p0, be] = synthesis();
     let r = run_p3("p3-1");
+    let y = &r.synthesis;
+    assert_eq!(y["kind"], "shaper");
+    let v = |p: &str| y.pointer(p).and_then(Value::as_f64).unwrap_or_else(|| panic!("{p}"));
+    assert!((v("/lengths/OA") - l_oa).abs() < 1e-13, "{}", v("/lengths/OA"));
+    assert!((v("/lengths/AB") - l_ab).abs() < 1e-13);
+    assert!((v("/angles/phi0") - p0).abs() < 1e-12);
+    assert!((v("/angles/beta") - be).abs() < 1e-12);
+    assert!((v("/coordinates/X_C") - s.c.0).abs() < 1e-13);
+    assert!((v("/coordinates/Y_C") - s.c.1).abs() < 1e-13);
+    assert!((v("/coordinates/Y_S5") - s.y_s5).abs() < 1e-13);
+    assert!((v("/lengths/AS2") - l_ab / 2.0).abs() < 1e-13);
+    assert!((v("/lengths/CS3") - L_CD / 2.0).abs() < 1e-13);
+    let start = s.start.rem_euclid(2.0 * PI);
+    assert!((v("/angles/phi_start") - start).abs() < 1e-12);
+    // ω_cp = Δφ_PX·V_рез/H: the working stroke H takes H/V_рез
+    let w = (7.0 * PI / 6.0) * 0.5 / 0.3;
+    assert!(
+        (r.linkage["input"]["omega"].as_f64().unwrap().abs() - w).abs() < 1e-12,
+        "{}",
+        r.linkage["input"]
+    );
+    // the analysed [linkage]: the stroke, K and the start of the cycle
     let l = &r.linkage;
     let stroke = l["stroke"].as_f64().unwrap();
     assert!((stroke - H).abs() < 1e-9, "{stroke}");
@@ -498,6 +514,37 @@ fn with(from: &str, to: &str) -> String {
 
 #[test]
 fn bad_shaper_input_is_refused_and_located() {
+    // the synthesis' givens
+    let t = with("stroke = \"0.3 m\"", "stroke = \"1.5 m\"");
+    refused("stroke", &t, "synthesis.stroke", line_of(&t, "stroke = "), "l_CD");
+    let t = with("frame = \"0.3 m\"", "frame = \"50 m\"");
+    refused("frame", &t, "synthesis.frame", line_of(&t, "frame = \"50"), "no direction");
+    let t = with("lambda = 1.4", "lambda = -1.4");
+    refused("lambda", &t, "synthesis.lambda", line_of(&t, "lambda = "), "positive");
+    let t = with("design_position = \"90 deg\"", "design_position = \"400 deg\"");
+    refused(
+        "design",
+        &t,
+        "synthesis.design_position",
+        line_of(&t, "design_position = "),
+        "0 to 360",
+    );
+    let t = with("cutting_speed = \"0.5 m/s\"", "cutting_speed = \"0.5 m/s\"\nspeed = \"60 rpm\"");
+    refused(
+        "speeds",
+        &t,
+        "synthesis.cutting_speed",
+        line_of(&t, "cutting_speed = "),
+        "only one of",
+    );
+    let t = with("cutting_speed = \"0.5 m/s\"", "cutting_speed = \"0.5 kg\"");
+    refused(
+        "cut-unit",
+        &t,
+        "synthesis.cutting_speed",
+        line_of(&t, "cutting_speed = "),
+        "velocity",
+    );
     let t = with("arm = \"0.09 m\"", "arm = \"0.09 kg\"");
     refused("arm", &t, "forces.stroke_forces[0].arm", line_of(&t, "arm = "), "length");
     let t = with("step = \"1 deg\"", "step = \"7 deg\"");

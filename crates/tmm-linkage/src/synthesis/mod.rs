@@ -39,6 +39,7 @@ pub mod request;
 pub mod result;
 pub mod rocker_extremes;
 pub mod search;
+pub mod shaper;
 pub mod six_bar;
 pub mod slotted;
 pub mod sweep;

@@ -12,6 +12,7 @@ use super::knee_press::{KneePivot, KneeRequest};
 use super::pivot::PivotCondition;
 use super::result::Synthesis;
 use super::rocker_extremes::{self, Abscissa, ExtremesRequest};
+use super::shaper::{self, ShaperRequest};
 use super::six_bar::{InversionRequest, PressureRequest};
 use super::slotted::{Coupler, SlottedRequest};
 use super::three_positions::{self, ThreePositionsRequest};
@@ -47,6 +48,8 @@ pub enum Request {
     /// Crank-knee press with a bell-crank rocker (seed 002 ex. 2 read
     /// literally).
     KneeBellCrank(BellKneeRequest),
+    /// The textbook's П3 shaper.
+    Shaper(ShaperRequest),
 }
 
 /// Solve a request (each kind checks its result over the cycle). When no
@@ -96,6 +99,7 @@ pub fn solve(r: &Request) -> Result<Synthesis, SynthesisError> {
         Request::ThreePositions(q) => three_positions::synthesize(q),
         Request::Cylinder(q) => cylinder::synthesize(q),
         Request::KneeBellCrank(q) => knee_bell_crank::synthesize(q),
+        Request::Shaper(q) => shaper::synthesize(q),
     }
 }
 
@@ -279,6 +283,7 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             Request::ThreePositions(q) => &mut q.limits,
             Request::Cylinder(q) => &mut q.limits,
             Request::KneeBellCrank(q) => &mut q.limits,
+            Request::Shaper(q) => &mut q.limits,
         };
         let l = match name {
             "pressure_working" => &mut limits.pressure_working,
@@ -437,6 +442,15 @@ fn slot<'a>(r: &'a mut Request, name: &str, set: Option<f64>) -> Result<Option<&
             },
             _ => return Err(()),
         },
+        Request::Shaper(q) => match name {
+            "stroke" => Some(&mut q.stroke),
+            "k" => Some(&mut q.k),
+            "rocker" => Some(&mut q.rocker),
+            "lambda" => Some(&mut q.lambda),
+            "frame" => Some(&mut q.frame),
+            "ram_center" => Some(&mut q.ram_center),
+            _ => return Err(()),
+        },
     })
 }
 
@@ -504,6 +518,7 @@ impl Request {
                 "frame",
                 "pivot",
             ],
+            Request::Shaper(_) => &["stroke", "k", "rocker", "lambda", "frame", "ram_center"],
         }
     }
 

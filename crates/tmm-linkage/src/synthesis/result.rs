@@ -27,6 +27,9 @@ pub enum Kind {
     /// Lever driven by an oscillating (rocking) cylinder (механизм с
     /// качающимся гидро- или пневмоцилиндром).
     OscillatingCylinder,
+    /// The textbook's П3 shaper: crank, coupler and a rocker driving the ram
+    /// through a slider in its slot (поперечно-строгальный станок).
+    Shaper,
 }
 
 impl Kind {
@@ -40,6 +43,7 @@ impl Kind {
             Kind::KneePress => "knee-press",
             Kind::SixBar => "six-bar",
             Kind::OscillatingCylinder => "oscillating-cylinder",
+            Kind::Shaper => "shaper",
         }
     }
 }

@@ -479,3 +479,120 @@ fn seed_002_knee_press_with_the_bell_crank_uses_every_given() {
     assert!((seen - theta).abs() < 1e-9, "{} vs {}", seen.to_degrees(), theta.to_degrees());
     assert!((s.check.k.unwrap() - 1.12).abs() < 1e-9);
 }
+
+/// The textbook's П3 shaper request (GIVENS.md: H = 0.3 m, K = 1.4,
+/// l_BC = 0.5 m, λ = 1.4, l_OC = 0.3 m), the crank turning `rotation`.
+fn p3_request(rotation: tmm_linkage::synthesis::Rotation) -> tmm_linkage::synthesis::shaper::ShaperRequest {
+    tmm_linkage::synthesis::shaper::ShaperRequest {
+        stroke: 0.3,
+        k: 1.4,
+        rocker: 0.5,
+        lambda: 1.4,
+        frame: 0.3,
+        ram_center: 0.164,
+        drive: Drive { rotation, omega: 6.0 },
+        limits: Default::default(),
+    }
+}
+
+/// The ram's stroke and K measured by brute force on the analysed mechanism:
+/// the ram's abscissa at 36 000 crank angles in the crank's sense from 0,
+/// its extreme values and the crank's travel from the smallest to the
+/// largest — no dead-position search, no synthesis formula; K is the
+/// longer of the two strokes' crank travels over the shorter.
+fn measured_stroke_and_k(s: &Synthesis) -> (f64, f64) {
+    let m = Mechanism::new(&s.def).unwrap();
+    let sg = m.crank.omega.signum();
+    let mut sol = m.solution();
+    let e = m.points.iter().position(|p| p.name == "E").unwrap();
+    let n = 36_000;
+    let (mut lo, mut hi) = ((f64::INFINITY, 0.0), (f64::NEG_INFINITY, 0.0));
+    for i in 0..n {
+        let psi = 2.0 * PI * i as f64 / n as f64;
+        m.solve(sg * psi, &mut sol).unwrap();
+        let x = sol.points[e].p.x;
+        if x < lo.0 {
+            lo = (x, psi);
+        }
+        if x > hi.0 {
+            hi = (x, psi);
+        }
+    }
+    let one = (hi.1 - lo.1).rem_euclid(2.0 * PI);
+    let other = 2.0 * PI - one;
+    (hi.0 - lo.0, one.max(other) / one.min(other))
+}
+
+#[test]
+fn p3_shaper_against_the_books_four_equations_and_measured_back() {
+    use tmm_linkage::synthesis::Rotation;
+    use tmm_linkage::synthesis::shaper;
+    let s = shaper::synthesize(&p3_request(Rotation::Cw)).unwrap();
+    // the book's four equations, Newton from its guesses 0.1, 0.3, 45°, −45°
+    let (h, k, l_bc, l_cd, l_oc) = (0.3, 1.4, 0.5, 0.7, 0.3);
+    let g = (h / (2.0 * l_cd) as f64).asin();
+    let d_px = 2.0 * PI - 2.0 * PI / (k + 1.0);
+    let x = newton(
+        |v| {
+            let c = Vec2::new(l_oc * v[3].cos(), l_oc * v[3].sin());
+            let b1 = c + Vec2::new((FRAC_PI_2 - g).cos(), (FRAC_PI_2 - g).sin()) * l_bc;
+            let b2 = c + Vec2::new((FRAC_PI_2 + g).cos(), (FRAC_PI_2 + g).sin()) * l_bc;
+            vec![
+                (v[0] + v[1]) * v[2].cos() - b1.x,
+                (v[0] + v[1]) * v[2].sin() - b1.y,
+                (v[0] - v[1]) * (v[2] + d_px).cos() - b2.x,
+                (v[0] - v[1]) * (v[2] + d_px).sin() - b2.y,
+            ]
+        },
+        vec![0.1, 0.3, rad(45.0), rad(-45.0)],
+    );
+    assert!(
+        (s.length("OA").unwrap() - x[0]).abs() < 1e-12,
+        "{} {}",
+        s.length("OA").unwrap(),
+        x[0]
+    );
+    assert!((s.length("AB").unwrap() - x[1]).abs() < 1e-12);
+    assert!(wrap_pi(angle(&s, "phi0") - x[2]).abs() < 1e-11);
+    assert!(wrap_pi(angle(&s, "beta") - x[3]).abs() < 1e-11);
+    assert!((coord(&s, "X_C") - l_oc * x[3].cos()).abs() < 1e-12);
+    let y_c = l_oc * x[3].sin();
+    assert!((coord(&s, "Y_C") - y_c).abs() < 1e-12);
+    assert!((coord(&s, "Y_S5") - (y_c + l_cd - l_cd * (1.0 - g.cos()) / 2.0)).abs() < 1e-12);
+    assert!(wrap_pi(angle(&s, "phi_start") - (x[2] + d_px)).abs() < 1e-11);
+    // measured back on the written mechanism, both senses of the crank
+    for rot in [Rotation::Cw, Rotation::Ccw] {
+        let s = shaper::synthesize(&p3_request(rot)).unwrap();
+        let (stroke, kk) = measured_stroke_and_k(&s);
+        assert!((stroke - h).abs() < 1e-7, "{rot:?}: stroke {stroke}");
+        // K from a 0.01° grid: the travel between the extremes to ±0.01°
+        assert!((kk - k).abs() < 1e-3, "{rot:?}: K {kk}");
+        assert!(s.check.crank_turns_fully);
+    }
+}
+
+#[test]
+fn p3_shaper_refuses_what_it_cannot_build() {
+    use tmm_linkage::synthesis::Rotation;
+    use tmm_linkage::synthesis::shaper;
+    let field = |e: SynthesisError| match e {
+        SynthesisError::Input { field, .. } | SynthesisError::Infeasible { field, .. } => field,
+        other => panic!("{other}"),
+    };
+    // H ≥ 2·l_CD: the rocker cannot swing the ram so far
+    let mut r = p3_request(Rotation::Cw);
+    r.stroke = 1.5;
+    assert_eq!(field(shaper::synthesize(&r).unwrap_err()), "stroke");
+    // K < 1
+    let mut r = p3_request(Rotation::Cw);
+    r.k = 0.9;
+    assert_eq!(field(shaper::synthesize(&r).unwrap_err()), "k");
+    // λ ≤ 0
+    let mut r = p3_request(Rotation::Cw);
+    r.lambda = 0.0;
+    assert_eq!(field(shaper::synthesize(&r).unwrap_err()), "lambda");
+    // O so far from C that it cannot see the chord at θ = 30°
+    let mut r = p3_request(Rotation::Cw);
+    r.frame = 50.0;
+    assert_eq!(field(shaper::synthesize(&r).unwrap_err()), "frame");
+}

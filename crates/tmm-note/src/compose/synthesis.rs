@@ -25,6 +25,10 @@ const ANGLES: &[&str] = &[
 /// Keys of the given values without a unit.
 const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 
+/// Keys of the given values that are speeds (m/s): the crank-slider's mean
+/// speed, the shaper's cutting speed.
+const VELOCITIES: &[&str] = &["v_mean", "v_cut"];
+
 /// One given value printed with its unit: angles in degrees, ratios bare,
 /// everything else a length in mm.
 fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
@@ -32,6 +36,8 @@ fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
     let stem = key.trim_end_matches(|c: char| c.is_ascii_digit());
     if ANGLES.contains(&key) || ANGLES.contains(&stem) || is_angle_name(key) {
         cx.q(v.to_degrees(), "u_deg")
+    } else if VELOCITIES.contains(&key) {
+        cx.q(v, "u_m_s")
     } else if PURE.contains(&key) || key == "lambda_e" {
         cx.q(v, "")
     } else {
@@ -107,7 +113,16 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
         cx.para("sy_given", &[cx.q(k, "")?])?,
         cx.quantities("tab_given", given_rows(cx)?)?,
-        cx.para("sy_method", &[])?,
+        // the textbook's П3: the crank pivot sees the chord between the
+        // extreme positions of B at θ, one equation for the direction of OC
+        cx.para(
+            if cx.s("/synthesis/kind") == Some("shaper") {
+                "sy_method_shaper"
+            } else {
+                "sy_method"
+            },
+            &[],
+        )?,
         cx.para("sy_sought", &[])?,
     ];
     let formulas = vec![
@@ -131,6 +146,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         )),
         lengths(cx, sy)?,
     ];
+    // further unknowns found (the shaper's φ₀, β, X_C, Y_C, Y_S5)
+    let found = found_rows(cx)?;
+    if !found.is_empty() {
+        results.push(cx.quantities("tab_synth_found", found)?);
+    }
     let mut q = vec![
         (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
         (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),

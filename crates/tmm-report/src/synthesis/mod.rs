@@ -102,7 +102,7 @@ pub fn given_dim(spec: &Spec, name: &str) -> Dim {
     }
     match name {
         "n1" => Dim::Ratio,
-        "v_mean" => Dim::Velocity,
+        "v_mean" | "v_cut" => Dim::Velocity,
         _ => task::param_dim(&spec.request, name),
     }
 }
@@ -118,6 +118,7 @@ fn key_of(spec: &Spec, f: &Fields, field: &str) -> String {
     let k = match field {
         "omega" | "n1" => "speed",
         "v_mean" => "mean_speed",
+        "v_cut" => "cutting_speed",
         "theta" => "k",
         "sweep.param" | "sweep.range" | "sweep.steps" => "sweep",
         f2 if f2.starts_with("limits.") => &f2["limits.".len()..],
@@ -194,6 +195,14 @@ pub fn solve(f: &Fields) -> Result<Solved, Error> {
     // the crank angles where it assembles (docs/linkage.md, `range`)
     if !syn.check.crank_turns_fully {
         linkage = linkage.replacen("[linkage]\n", "[linkage]\nrange = \"partial\"\n", 1);
+    }
+    // the design position, counted from the start of the working stroke
+    // (the first dead position the core found) in the crank's direction,
+    // as the generated [linkage]'s absolute crank angle `at`
+    if let (Some(f), Some(&start)) = (spec.design_position, syn.check.dead_phi.first()) {
+        let sg = syn.def.input.as_ref().map_or(1.0, |i| i.omega.signum());
+        let at = (start + sg * f).rem_euclid(std::f64::consts::TAU);
+        linkage = linkage.replacen("[linkage]\n", &format!("[linkage]\nat = \"{:?} deg\"\n", at.to_degrees()), 1);
     }
     Ok(Solved { spec, syn, linkage })
 }

@@ -30,6 +30,7 @@ use tmm_linkage::synthesis::knee_bell_crank::BellKneeRequest;
 use tmm_linkage::synthesis::knee_press::{KneePivot, KneeRequest};
 use tmm_linkage::synthesis::pivot::PivotCondition;
 use tmm_linkage::synthesis::rocker_extremes::{Abscissa, ExtremesRequest};
+use tmm_linkage::synthesis::shaper::ShaperRequest;
 use tmm_linkage::synthesis::six_bar::{InversionRequest, PressureRequest};
 use tmm_linkage::synthesis::slotted::{Coupler, Lever, SlottedRequest};
 use tmm_linkage::synthesis::three_positions::ThreePositionsRequest;
@@ -72,6 +73,10 @@ pub const KINDS: &[(&str, &str)] = &[
     (
         "oscillating-cylinder",
         "lever driven by an oscillating cylinder by its stroke and a pressure angle (textbook П1.5)",
+    ),
+    (
+        "shaper",
+        "shaper: crank, coupler, rocker C–B–D and the ram driven through a slider in its slot, by H, K, λ, l_BC and l_OC (textbook П3)",
     ),
 ];
 
@@ -384,6 +389,10 @@ pub struct Spec {
     pub speed: f64,
     /// Whether the speed was given.
     pub speed_given: bool,
+    /// The design position (`design_position`): the angle of the crank
+    /// from the start of the working stroke at which the generated
+    /// `[linkage]` sets `at` (the plans and the kinetostatics), rad.
+    pub design_position: Option<f64>,
 }
 
 /// The dimension of a core field or sweep parameter of a request.
@@ -394,7 +403,8 @@ pub fn param_dim(r: &Request, name: &str) -> Dim {
         | "pivot_max_pressure" | "pivot_angle" | "pressure_working" | "pressure_return" | "transmission_min" => Dim::Angle,
         "gamma_start" | "gamma_end" | "gamma1" | "gamma2" | "gamma3" | "phi12" | "phi13" | "pressure_start" | "pressure_end" => Dim::Angle,
         "speed" => Dim::AngularVelocity,
-        "mean_speed" => Dim::Velocity,
+        "mean_speed" | "cutting_speed" => Dim::Velocity,
+        "design_position" => Dim::Angle,
         "coupler" => match r {
             Request::Slotted(q) if matches!(q.coupler, Coupler::Ratio(_)) => Dim::Ratio,
             _ => Dim::Length,
@@ -529,8 +539,16 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             .error("kind", format!("unknown kind `{kind_text}`"))
             .with_help(format!("one of {}", KINDS.iter().map(|k| k.0).collect::<Vec<_>>().join(", "))));
     };
-    let (drive, speed_given) = drive(f)?;
+    let (mut drive, mut speed_given) = drive(f)?;
     let limits = limits(f)?;
+    let design_position = f.qty("design_position", Dim::Angle)?;
+    if let Some(p) = design_position
+        && !(0.0..std::f64::consts::TAU).contains(&p)
+    {
+        return Err(f
+            .error("design_position", "the design position is an angle of the cycle from 0 to 360°")
+            .with_help("the crank's angle from the start of the working stroke, e.g. \"90 deg\""));
+    }
     let mut extra_given = Vec::new();
     let mut condition_key = None;
     // a swept extra condition needs not be given: the sweep sets it
@@ -807,6 +825,34 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
                 limits,
             })
         }
+        "shaper" => {
+            let stroke = f.need("stroke", Dim::Length)?;
+            let k = f.need("k", Dim::Ratio)?;
+            // the book's nominal speed: the working stroke H takes H/V_рез,
+            // so ω_cp = Δφ_PX·V_рез/H with Δφ_PX = 2πK/(K + 1) (textbook
+            // П3, p. 130)
+            if f.one_of(&["speed", "cutting_speed"], true)? == Some("cutting_speed") {
+                let v = f.need("cutting_speed", Dim::Velocity)?;
+                if !(v > 0.0) {
+                    return Err(f.error("cutting_speed", "the cutting speed must be > 0"));
+                }
+                if k.is_finite() && k >= 1.0 && stroke > 0.0 {
+                    drive.omega = std::f64::consts::TAU * k / (k + 1.0) * v / stroke;
+                    speed_given = true;
+                    extra_given.push(("v_cut".to_string(), v));
+                }
+            }
+            Request::Shaper(ShaperRequest {
+                stroke,
+                k,
+                rocker: f.need("rocker", Dim::Length)?,
+                lambda: f.need("lambda", Dim::Ratio)?,
+                frame: f.need("frame", Dim::Length)?,
+                ram_center: f.qty("ram_center", Dim::Length)?.unwrap_or(0.0),
+                drive,
+                limits,
+            })
+        }
         _ => {
             let (pivot, key) = pivot_condition(f)?;
             condition_key = key.or_else(|| swept_of(&SIX_BAR_PIVOTS));
@@ -847,5 +893,6 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
         sweep,
         speed: drive.omega,
         speed_given,
+        design_position,
     })
 }
