@@ -43,6 +43,7 @@ pub fn draw_all(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, docs: &m
 pub fn draw_with(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, plans: PlansAt, docs: &mut Documents) -> Result<(), Error> {
     let lang = task.lang;
     docs.add_text(format!("{dir}positions.svg"), scheme(l, a, task))?;
+    docs.add_text(format!("{dir}structure.svg"), super::structure::structure_scheme(l, a, task))?;
     for d in diagrams(l, a, task) {
         docs.add_text(format!("{dir}{}", d.0), d.1)?;
     }

@@ -3,6 +3,7 @@
 
 pub(crate) mod draw;
 mod json;
+mod structure;
 pub mod task;
 mod text;
 
@@ -517,4 +518,10 @@ pub fn drawings(l: &Loaded, a: &Analysis, task: &TaskSource, all_plans: bool) ->
     let which = if all_plans { draw::PlansAt::All } else { draw::PlansAt::One };
     draw::draw_with(l, a, task, "", which, &mut docs)?;
     Ok(docs)
+}
+
+/// The structural scheme and the Assur groups drawn apart
+/// (`structure.svg`): see [`structure::structure_scheme`].
+pub fn structure_drawing(l: &Loaded, a: &Analysis, task: &TaskSource) -> crate::picture::Picture {
+    structure::structure_scheme(l, a, task)
 }

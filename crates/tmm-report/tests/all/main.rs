@@ -7,6 +7,7 @@ mod drawings_cam_diagrams;
 mod drawings_dynamics_synthesis;
 mod drawings_gear_cam;
 mod drawings_linkage;
+mod drawings_structure;
 mod dynamics_drawings;
 mod force_polygons;
 mod hardening_examples;
