@@ -64,7 +64,7 @@ async function until(expr, ms = 20000) {
 // text in backticks, quotes and square brackets is the user's or the task
 // file's own; a token with a digit, '.', '_', '/', '=', '-' or a letter
 // outside ASCII is a symbol, and so is a key before ' = ', an option
-// '--x', a word of capitals or with a capital inside (RRR, kPa), and the
+// '--x', a file pattern or path ('*.txt', 'docs/web.md'), a word of capitals or with a capital inside (RRR, kPa), and the
 // units, functions and section names below; 'e.g.' is English.
 const NOT_WORDS = new Set(["mm", "cm", "dm", "km", "in", "ft", "rad", "deg", "rpm", "min", "max", "kg", "kgf", "Pa", "kPa", "MPa", "bar", "inv", "cos", "sin", "tan", "atan", "mod", "exp", "ln", "lg", "sqrt", "title", "project", "synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam", "cylinder"]);
 const SHORT_WORDS = new Set(["a", "an", "as", "at", "be", "by", "do", "go", "if", "in", "is", "it", "no", "of", "on", "or", "so", "to", "up", "we"]);
@@ -73,13 +73,13 @@ function englishWords(text) {
   const toks = plain.split(/\s+/).filter(Boolean);
   const found = [];
   toks.forEach((raw, i) => {
-    if (toks[i + 1]?.startsWith("=") || raw.replace(/^[("]+/, "").startsWith("--")) return;
+    if (toks[i + 1]?.startsWith("=") || /^(--|\*|\.)/.test(raw.replace(/^[("«]+/, "")) || raw.includes("/")) return;
     const tok = raw.replace(/^[^\p{L}\p{N}]+|[^\p{L}\p{N}]+$/gu, "");
     if (tok === "e.g" || tok === "i.e") { found.push(tok); return; }
     if (!tok || /[0-9._\/=<>+*·-]/.test(tok) || /[^\x00-\x7f]/.test(tok)) return;
     for (const w of tok.split(/['’]/)) {
       if (!/^[A-Za-z]+$/.test(w) || NOT_WORDS.has(w)) continue;
-      if (w.length <= 2 ? SHORT_WORDS.has(w.toLowerCase()) && /^.[a-z]*$/.test(w) : /^.[a-z]+$/.test(w)) found.push(w);
+      if (w.length <= 2 ? SHORT_WORDS.has(w) : /^.[a-z]+$/.test(w)) found.push(w);
     }
   });
   return found;

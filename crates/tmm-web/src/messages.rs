@@ -169,8 +169,8 @@ const NOT_WORDS: &[&str] = &[
     "cylinder",
 ];
 
-/// English words of one or two letters (the rest of that length are
-/// symbols: `OA`, `x1`, `mm`).
+/// English words of one or two letters, written in lower case (the rest of
+/// that length are symbols: `A`, `OA`, `x1`, `mm`).
 const SHORT_WORDS: &[&str] = &[
     "a", "an", "as", "at", "be", "by", "do", "go", "if", "in", "is", "it", "no", "of", "on", "or", "so", "to", "up", "we",
 ];
@@ -196,6 +196,7 @@ const SHORT_WORDS: &[&str] = &[
 /// assert!(has_prose("Zhukovsky's lever"));
 /// assert!(!has_prose("inv αw = 0,012 (TOML, RRR, kPa)"));
 /// assert!(!has_prose("задайте range = \"partial\""));
+/// assert!(!has_prose("файлы *.txt и docs/web.md, точка A"));
 /// ```
 pub fn has_prose(text: &str) -> bool {
     let plain = strip_quoted(text);
@@ -203,6 +204,10 @@ pub fn has_prose(text: &str) -> bool {
     toks.iter().enumerate().any(|(i, tok)| {
         // a key of the task file: `range = …`
         if toks.get(i + 1).is_some_and(|n| n.starts_with('=')) {
+            return false;
+        }
+        // a file pattern or a path: `*.txt`, `.toml`, `docs/web.md`
+        if tok.trim_start_matches(['(', '"', '«']).starts_with(['*', '.']) || tok.contains('/') {
             return false;
         }
         let tok = tok.trim_matches(|c: char| !c.is_alphanumeric());
@@ -235,7 +240,8 @@ fn is_word(w: &str) -> bool {
     }
     let lower = w.to_ascii_lowercase();
     if w.len() <= 2 {
-        return SHORT_WORDS.contains(&lower.as_str()) && w.chars().skip(1).all(|c| c.is_ascii_lowercase());
+        // a capital alone or first is a point's or a link's name (`A`, `Of`)
+        return SHORT_WORDS.contains(&lower.as_str()) && w.chars().all(|c| c.is_ascii_lowercase());
     }
     // capitals inside: a symbol or a unit
     w.chars().skip(1).all(|c| c.is_ascii_lowercase())
