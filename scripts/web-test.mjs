@@ -59,6 +59,33 @@ async function until(expr, ms = 20000) {
   return false;
 }
 
+// ---------- English words on a Russian or Ukrainian screen ----------
+// The rule of crates/tmm-web/src/messages.rs (has_prose), written again:
+// text in backticks, quotes and square brackets is the user's or the task
+// file's own; a token with a digit, '.', '_', '/', '=', '-' or a letter
+// outside ASCII is a symbol, and so is a key before ' = ', an option
+// '--x', a file pattern or path ('*.txt', 'docs/web.md'), a word of capitals or with a capital inside (RRR, kPa), and the
+// units, functions and section names below; 'e.g.' is English.
+const NOT_WORDS = new Set(["mm", "cm", "dm", "km", "in", "ft", "rad", "deg", "rpm", "min", "max", "kg", "kgf", "Pa", "kPa", "MPa", "bar", "inv", "cos", "sin", "tan", "atan", "mod", "exp", "ln", "lg", "sqrt", "title", "project", "synthesis", "linkage", "forces", "dynamics", "gear", "planetary", "cam", "cylinder"]);
+const SHORT_WORDS = new Set(["a", "an", "as", "at", "be", "by", "do", "go", "if", "in", "is", "it", "no", "of", "on", "or", "so", "to", "up", "we"]);
+function englishWords(text) {
+  const plain = text.replace(/`[^`]*`|"[^"]*"|«[^»]*»|\[[^\]]*\]/g, "0");
+  const toks = plain.split(/\s+/).filter(Boolean);
+  const found = [];
+  toks.forEach((raw, i) => {
+    if (toks[i + 1]?.startsWith("=") || /^(--|\*|\.)/.test(raw.replace(/^[("«]+/, "")) || raw.includes("/")) return;
+    const tok = raw.replace(/^[^\p{L}\p{N}]+|[^\p{L}\p{N}]+$/gu, "");
+    if (tok === "e.g" || tok === "i.e") { found.push(tok); return; }
+    if (!tok || /[0-9._\/=<>+*·-]/.test(tok) || /[^\x00-\x7f]/.test(tok)) return;
+    for (const w of tok.split(/['’]/)) {
+      if (!/^[A-Za-z]+$/.test(w) || NOT_WORDS.has(w)) continue;
+      if (w.length <= 2 ? SHORT_WORDS.has(w) : /^.[a-z]+$/.test(w)) found.push(w);
+    }
+  });
+  return found;
+}
+const hasProse = (text) => englishWords(text).length > 0;
+
 // ---------- load ----------
 await send("Page.enable"); await send("Runtime.enable");
 const tNav = Date.now();
@@ -110,8 +137,10 @@ const gutterErr = await js("document.querySelector('#gutter .err')?.dataset.line
 check("the error is at the edited line", errLine === lineNo && +gutterErr === lineNo, `error line ${errLine}, gutter ${gutterErr}, edited ${lineNo}`);
 let cliErr = "";
 try { execFileSync(tmmBin, ["run", "--out", join(editedDir, "out"), join(editedDir, "task.toml")], { stdio: "pipe" }); } catch (e) { cliErr = e.stderr.toString(); }
-const firstLine = errText.split("\n")[0].replace(/^task\.toml/, "");
-check("the page's message is the CLI's", cliErr.length > 0 && cliErr.includes(firstLine.slice(firstLine.indexOf(": ") + 2)), `page: ${errText.split("\n")[0]}`);
+// (the module's message is English, as the CLI's; the box shows it in the interface's language)
+const firstLine = (await js("window.tmmPage.error.message")).replace(/^task\.toml/, "");
+check("the page's message is the CLI's", cliErr.length > 0 && cliErr.includes(firstLine.slice(firstLine.indexOf(": ") + 2)), `page: ${firstLine}`);
+check("the error box shows it in the task's language (Russian)", /[а-я]/.test(errText) && errText.startsWith("task.toml:") && !hasProse(errText), errText.split("\n")[0]);
 
 // ---------- performance of re-analysis ----------
 await setText(defaultText);
@@ -279,7 +308,7 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
   const views = ["numbers", "mechanism", "diagrams", "drawings", "gear", "planetary", "cam", "files"];
   const states = [];
   for (const v of views) states.push([v, ...(await viewState(v))]);
-  check("after an error every view says why it is empty", states.every(([, s, w]) => s === "empty" && w.includes("must be > 0") && w.includes("49")), JSON.stringify(states.map(([v, s]) => v + ":" + s)));
+  check("after an error every view says why it is empty", states.every(([, s, w]) => s === "empty" && w.includes("> 0") && w.includes("49") && !hasProse(w)), JSON.stringify(states.map(([v, s, w]) => v + ":" + s + ":" + englishWords(w).join(","))));
   await shot("numbers", "error-numbers");
   await setText(defaultText);
   await until("document.getElementById('error').hidden");
@@ -330,6 +359,62 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
   await until(`/Механизм/.test(document.getElementById('tabs').innerText)`);
 }
 
+// ---------- the solver's messages in Russian and Ukrainian ----------
+// On each screen: bad TOML, a bad value, a mechanism that cannot be
+// assembled, a crank that cannot turn fully, a gear pair picked where it
+// is undercut and a bad pick outside the contour: no English word in the
+// status, the message, the views' reasons, the gear's numbers and checks
+// and the summaries.
+{
+  const root = join(distDir, "..", "..");
+  const fourbar = readFileSync(join(root, "examples", "seed-001-fourbar.toml"), "utf8").split("\n");
+  const at = fourbar.findIndex((l) => l.startsWith('length = "480 mm"'));
+  const tooShort = fourbar.map((l, i) => (i === at ? 'length = "40 mm"' : l)).join("\n");
+  const screen = `[document.getElementById('status').textContent, document.getElementById('error').hidden ? '' : document.getElementById('error').innerText, ...[...document.querySelectorAll('.view.active .why')].map((e) => e.textContent), document.getElementById('drag-why').hidden ? '' : document.getElementById('drag-why').textContent, document.getElementById('gear-numbers').innerText, document.getElementById('gear-checks').innerText, document.getElementById('texts').innerText].join('\\n')`;
+  const cases = [
+    ["toml", defaultText.replace("[gear]", "[gear"), "numbers"],
+    ["value", defaultText.replace(/^length = "480 mm"/m, 'length = "abc"'), "numbers"],
+    ["negative", bad, "numbers"],
+    ["assembly", tooShort, "mechanism"],
+  ];
+  for (const lang of ["ru", "uk"]) {
+    await js(`(() => { const s = document.getElementById('lang'); s.value = '${lang}'; s.dispatchEvent(new Event('change')); return true; })()`);
+    await until(`document.documentElement.lang === '${lang}'`);
+    for (const [kind, text, view] of cases) {
+      await setText(text);
+      await until("!document.getElementById('error').hidden");
+      await openView(view);
+      const t = await js(screen);
+      const untranslated = await js("!!document.querySelector('#error details')");
+      const e = englishWords(t);
+      check(`${lang}: the message of ${kind} is in the interface's language`, !untranslated && e.length === 0 && /[а-яіїє]/i.test(t), `${t.split("\n").find((l) => l.includes(":")) ?? ""} ${e.join(",")}`.slice(0, 300));
+      await shot(view, `message-${lang}-${kind}`);
+    }
+    // a crank that cannot turn fully
+    await setText(defaultText); await until("document.getElementById('error').hidden");
+    await selectTask("double-rocker.toml");
+    await openView("mechanism");
+    const dr = await js(screen);
+    check(`${lang}: a crank that cannot turn fully is said in the interface's language`, /[а-яіїє]/i.test(dr) && !hasProse(dr), englishWords(dr).join(","));
+    await shot("mechanism", `message-${lang}-no-full-turn`);
+    // the gear: a pick in the undercut corner, and the summaries
+    await selectTask("");
+    await openView("gear");
+    const A = await js("window.tmmPage.contour");
+    await clickShift(A.x1[0] + 0.02 * (A.x1[1] - A.x1[0]), A.x2[0] + 0.02 * (A.x2[1] - A.x2[0]));
+    const g = await js(screen);
+    const fails = await js("document.querySelectorAll('#gear-checks [data-pass=\"false\"], #gear-numbers .bad').length");
+    check(`${lang}: a gear pair picked in the undercut corner fails its checks in the interface's language`, fails > 0 && !hasProse(g), `${fails} failed; ${englishWords(g).join(",")}`);
+    await shot("gear", `message-${lang}-gear-undercut`);
+    await openView("numbers");
+    const sum = await js(screen);
+    check(`${lang}: the numbers and the summaries have no English`, !hasProse(sum), englishWords(sum).join(","));
+  }
+  await js(`(() => { const s = document.getElementById('lang'); s.value = ''; s.dispatchEvent(new Event('change')); return true; })()`);
+  await setText(defaultText);
+  await until("document.getElementById('error').hidden && /Механизм/.test(document.getElementById('tabs').innerText)");
+}
+
 // ---------- the mechanism edited by dragging ----------
 {
   await openView("mechanism");
@@ -360,7 +445,7 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
   const whyText = await js("document.getElementById('drag-why').hidden ? '' : document.getElementById('drag-why').textContent");
   await shot("mechanism", "mechanism-cannot-assemble");
   await send("Input.dispatchMouseEvent", { type: "mouseReleased", x: dx + 400, y: dy, button: "left", clickCount: 1 });
-  check("an impossible drag says why it cannot assemble", whyText.length > 10, whyText.slice(0, 120));
+  check("an impossible drag says why it cannot assemble, in the interface's language", whyText.length > 10 && /[а-я]/.test(whyText) && !hasProse(whyText), whyText.slice(0, 160) + " " + englishWords(whyText).join(","));
   await js("(document.getElementById('undo').click(), true)");
   await js("(document.getElementById('undo').click(), true)");
   check("undo takes the drags back", await until(`document.getElementById('editor').value === ${JSON.stringify(textBefore)}`));

@@ -14,6 +14,14 @@ window.tmmPage = state; // read by the browser test
 // switch or, by default, by the task's `[project] lang`.
 const W = (key, ...args) => (state.words[key] ?? key).replace(/\{(\d)\}/g, (_, i) => args[+i - 1]);
 function uiLang() { return $("lang").value || state.taskLang || "en"; }
+// A message of the solver (made in English) in the interface's language,
+// from the page's word file crates/tmm-web/lang/messages.toml; null when a
+// part of it has no wording there yet.
+function sayOrNull(text) {
+  if (!text || uiLang() === "en") return text;
+  return JSON.parse(tmm.say(text, uiLang())).text;
+}
+const said = (text) => sayOrNull(text) ?? W("msg_untranslated");
 function applyWords() {
   const lang = uiLang();
   if (state.wordsLang !== lang) {
@@ -106,7 +114,14 @@ function showError(e) {
   if (!e) { box.hidden = true; box.removeAttribute("data-line"); gutter(0); return; }
   box.hidden = false;
   box.dataset.line = e.line ?? "";
-  box.textContent = e.message + (e.help ? "\nhelp: " + e.help : "");
+  const m = sayOrNull(e.message), h = e.help ? sayOrNull(e.help) : "";
+  box.textContent = (m ?? W("msg_untranslated")) + (e.help ? `\n${W("help_label")}: ${h ?? W("msg_untranslated")}` : "");
+  if (m == null || h == null) {
+    // the English text stays out of sight until asked for
+    const d = document.createElement("details"), s = document.createElement("summary"), p = document.createElement("pre");
+    s.textContent = W("msg_original"); p.lang = "en"; p.textContent = e.message + (e.help ? "\nhelp: " + e.help : "");
+    d.append(s, p); box.append(d);
+  }
   gutter(e.line || 0);
 }
 const hist = { stack: [], i: -1 };
@@ -159,8 +174,8 @@ function analyse() {
   if (!r.ok) {
     // nothing of the last task stays on screen: every view says why it is empty
     state.reply = null; state.frames = null; state.error = r.error;
-    showError(r.error);
     applyWords();
+    showError(r.error);
     $("status").textContent = r.error.line ? W("error_status", r.error.line) : W("error_status_noline");
     $("status").classList.add("bad");
     render(activeView());
@@ -176,7 +191,7 @@ function analyse() {
   state.reply = r;
   const f = JSON.parse(tmm.frames(360));
   state.frames = f.ok ? f : null;
-  state.framesWhy = f.ok ? null : f.none ? W("no_linkage") : W("no_full_turn") + "\n" + f.error.message;
+  state.framesWhy = f.ok ? null : f.none ? W("no_linkage") : W("no_full_turn") + "\n" + said(f.error.message);
   state.bg = null;
   render(activeView());
   return r;
@@ -209,7 +224,7 @@ function render(view) {
   state.dirty.delete(view);
   if (!state.reply) {
     const e = state.error;
-    why(view, e ? W("blocked") + "\n" + (e.line ? `${W("error_status", e.line)}: ` : "") + e.message : W("loading"));
+    why(view, e ? W("blocked") + "\n" + (e.line ? `${W("error_status", e.line)}: ` : "") + said(e.message) : W("loading"));
     if (view === "mechanism") stopPlay();
     return;
   }
@@ -329,7 +344,7 @@ function sectionFiles(section) {
   if (!state.reply) return [];
   if (!(section in state.lists)) {
     const l = JSON.parse(tmm.files(section));
-    if (!l.ok) { $("status").textContent = l.error.message; $("status").classList.add("bad"); }
+    if (!l.ok) { $("status").textContent = said(l.error.message); $("status").classList.add("bad"); }
     state.lists[section] = l.ok ? l.files : [];
   }
   return state.lists[section];
@@ -440,7 +455,7 @@ function setAngleIndex(i) {
   }
   const a = JSON.parse(tmm.at_angle(phi, true));
   state.lastAngleMs = performance.now() - t0;
-  if (!a.ok) { $("plans").replaceChildren(); $("torque").textContent = a.error?.message ?? ""; return; }
+  if (!a.ok) { $("plans").replaceChildren(); $("torque").textContent = said(a.error?.message ?? ""); return; }
   fill("plans", [[W("velocity_plan"), a.velocity_plan], [W("acceleration_plan"), a.acceleration_plan]]);
   if (a.forces) {
     fill("force-plans", Object.entries(a.forces.files));
@@ -600,7 +615,7 @@ $("mech").addEventListener("pointermove", (e) => {
   }
   d.at = [u, v];
   const out = JSON.parse(tmm.drag(state.goodText, d.name, x, y, d.phi));
-  if (!out.ok) { $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + out.error.message; drawMechanism(); return; }
+  if (!out.ok) { $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + said(out.error.message); drawMechanism(); return; }
   if (out.text === $("editor").value) { drawMechanism(); return; }
   $("editor").value = out.text; gutter(0);
   const last = { frames: state.frames, bg: state.bg };
@@ -611,7 +626,7 @@ $("mech").addEventListener("pointermove", (e) => {
     state.dirty.delete("mechanism"); why("mechanism", null);
     state.frames = last.frames; state.bg = last.bg;
     $("plans").replaceChildren(); $("force-plans").replaceChildren(); $("torque").textContent = "";
-    $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + res.error.message;
+    $("drag-why").hidden = false; $("drag-why").textContent = W("cannot_assemble") + " " + said(res.error.message);
     drawMechanism();
   } else $("drag-why").hidden = true;
 });
@@ -708,7 +723,7 @@ function showGear(svgs) {
     const x1 = +((pt.x - A.origin[0]) / A.scale).toFixed(3), x2 = +((A.origin[1] - pt.y) / A.scale).toFixed(3);
     const r = JSON.parse(tmm.gear_at(x1, x2));
     if (r.ok) { gearNumbers(r.gear, null, [x1, x2]); state.pick = [x1, x2]; showGear(r.files); $("gear-write").hidden = false; }
-    else { gearNumbers(null, `x1 = ${x1}, x2 = ${x2}: ${r.error.message}${r.error.help ? " — " + r.error.help : ""}`, [x1, x2]); state.pick = null; }
+    else { gearNumbers(null, `x1 = ${nf(x1)}, x2 = ${nf(x2)}: ${said(r.error.message)}${r.error.help ? " — " + said(r.error.help) : ""}`, [x1, x2]); state.pick = null; }
   });
 }
 // The nodes where every check of the task passes, shaded over the drawing

@@ -1,7 +1,9 @@
-//! The task files of `examples/`, embedded so that the page offers them
-//! offline. A test checks that every file of the folder is here.
+//! The task files of `examples/` and `examples/textbook/` (the textbook's
+//! worked examples), embedded so that the page offers them offline. A test
+//! checks that every file of the two folders is here.
 
-/// (file name, text) of every example, in the folder's alphabetical order.
+/// (file name, text) of every example, in the folder's alphabetical order,
+/// then the textbook's (`textbook/…`).
 pub const EXAMPLES: &[(&str, &str)] = &[
     (
         "cam-oscillating-roller.toml",
@@ -69,6 +71,49 @@ pub const EXAMPLES: &[(&str, &str)] = &[
     (
         "synth-seed-003-six-bar.toml",
         include_str!("../../../examples/synth-seed-003-six-bar.toml"),
+    ),
+    (
+        "textbook/p1-1-crank-slider-two-positions.toml",
+        include_str!("../../../examples/textbook/p1-1-crank-slider-two-positions.toml"),
+    ),
+    (
+        "textbook/p1-2-four-bar-extreme-positions.toml",
+        include_str!("../../../examples/textbook/p1-2-four-bar-extreme-positions.toml"),
+    ),
+    (
+        "textbook/p1-3-four-bar-extreme-positions-k.toml",
+        include_str!("../../../examples/textbook/p1-3-four-bar-extreme-positions-k.toml"),
+    ),
+    (
+        "textbook/p1-4-four-bar-three-positions.toml",
+        include_str!("../../../examples/textbook/p1-4-four-bar-three-positions.toml"),
+    ),
+    (
+        "textbook/p1-5-oscillating-cylinder-v1.toml",
+        include_str!("../../../examples/textbook/p1-5-oscillating-cylinder-v1.toml"),
+    ),
+    (
+        "textbook/p1-5-oscillating-cylinder-v2.toml",
+        include_str!("../../../examples/textbook/p1-5-oscillating-cylinder-v2.toml"),
+    ),
+    (
+        "textbook/p1-5-oscillating-cylinder-v3.toml",
+        include_str!("../../../examples/textbook/p1-5-oscillating-cylinder-v3.toml"),
+    ),
+    ("textbook/p2-engine.toml", include_str!("../../../examples/textbook/p2-engine.toml")),
+    ("textbook/p3-shaper.toml", include_str!("../../../examples/textbook/p3-shaper.toml")),
+    ("textbook/p4-press.toml", include_str!("../../../examples/textbook/p4-press.toml")),
+    (
+        "textbook/p5-pneumatic-cylinder.toml",
+        include_str!("../../../examples/textbook/p5-pneumatic-cylinder.toml"),
+    ),
+    (
+        "textbook/p6-cam-oscillating.toml",
+        include_str!("../../../examples/textbook/p6-cam-oscillating.toml"),
+    ),
+    (
+        "textbook/p6-cam-translating.toml",
+        include_str!("../../../examples/textbook/p6-cam-translating.toml"),
     ),
 ];
 

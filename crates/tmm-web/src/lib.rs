@@ -16,6 +16,7 @@
 //! | [`gear_contour`], [`gear_at`], [`gear_write`] | the blocking contour's axes and the nodes where every check passes; the pair at a picked (x1, x2); the pick written into the task |
 //! | [`drag`] | the task with a dragged point's coordinates or its links' lengths changed |
 //! | [`words`] | the page's own words in Russian, Ukrainian or English |
+//! | [`say`] | a message of the solver in Russian or Ukrainian ([`messages::translate`]) |
 //!
 //! The state between calls is the last successful run ([`page::Page`]); the
 //! logic lives in plain Rust modules that the native tests exercise, and the
@@ -25,6 +26,7 @@ pub mod angle;
 pub mod drag;
 pub mod examples;
 pub mod gear_pick;
+pub mod messages;
 pub mod page;
 pub mod reply;
 pub mod ui_words;
@@ -149,6 +151,15 @@ pub fn drag(text: &str, point: &str, x: f64, y: f64, phi: f64) -> String {
 #[wasm_bindgen]
 pub fn words(lang: &str) -> String {
     ui_words::json(lang)
+}
+
+/// The message `text` (English, as the solver makes it) in `lang`, as JSON
+/// `{"text": …}`, the text `null` when a part of it has no wording in the
+/// page's word file (see [`messages::translate`]).
+#[wasm_bindgen]
+pub fn say(text: &str, lang: &str) -> String {
+    let l = tmm_report::project::Language::from_code(lang).unwrap_or(tmm_report::project::Language::En);
+    serde_json::json!({ "text": messages::translate(text, l) }).to_string()
 }
 
 fn with_page(f: impl FnOnce(&page::Page) -> String) -> String {

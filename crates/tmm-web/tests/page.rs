@@ -14,12 +14,18 @@ fn parse(s: &str) -> Value {
 #[test]
 fn every_example_file_is_offered() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples");
-    let mut on_disk: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.ends_with(".toml"))
-        .collect();
-    on_disk.sort();
+    let list = |sub: &str| {
+        let mut v: Vec<String> = std::fs::read_dir(format!("{dir}/{sub}"))
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .filter(|n| n.ends_with(".toml"))
+            .map(|n| format!("{sub}{n}"))
+            .collect();
+        v.sort();
+        v
+    };
+    let mut on_disk = list("");
+    on_disk.extend(list("textbook/"));
     let offered: Vec<String> = tmm_web::examples::EXAMPLES.iter().map(|(n, _)| n.to_string()).collect();
     assert_eq!(offered, on_disk);
     for (name, text) in tmm_web::examples::EXAMPLES {
