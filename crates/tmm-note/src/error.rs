@@ -49,6 +49,13 @@ pub enum NoteError {
         /// The rejected math.
         math: String,
     },
+    /// The drawings made for the note's page could not be made (the task
+    /// was refused; the run of the same task would have been too).
+    #[error("the note's figures: {message}")]
+    Figures {
+        /// The report's message.
+        message: String,
+    },
     /// A figure's width is not a positive finite number of millimetres.
     #[error("figure {caption:?}: width_mm = {width_mm}; valid: 1 … 1000 mm")]
     FigureWidth {

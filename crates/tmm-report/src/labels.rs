@@ -13,6 +13,48 @@ use crate::picture::Picture;
 use crate::project::Language;
 use crate::svg::Style;
 
+/// The capital height per em of the lowest-capped face a drawing's text
+/// may be printed in: osifont 1510/2048 = 0.737, DejaVu Sans 0.729, and the
+/// faces the PDF typesetter falls back to when none of the SVG's families
+/// is at hand, New Computer Modern 683/1000 and Libertinus Serif Italic
+/// 645/1000 (each font's OS/2 `sCapHeight` over its units per em). A
+/// letter size of h / CAP_PER_EM mm has capitals at least h mm high
+/// wherever it is printed.
+pub const CAP_PER_EM: f64 = 0.645;
+/// The letter size (em, mm) whose capitals are GOST 2.304's smallest
+/// height, 2.5 mm, in every face that may print it: the floor of the
+/// drawings made for the note ([`with_lettering_floor`]).
+pub const MIN_EM: f64 = 2.5 / CAP_PER_EM;
+
+thread_local! {
+    /// The smallest letter size the SVG writer puts down, mm (0: none).
+    static FLOOR: std::cell::Cell<f64> = const { std::cell::Cell::new(0.0) };
+}
+
+/// Run `f` with every text and index its drawings write raised to at
+/// least `floor` mm (em): the note's drawings are made with
+/// [`MIN_EM`], so no capital in the note prints under 2.5 mm. The sheets'
+/// drawings keep their sizes (their layouts are laid out and tested at
+/// them; raising them too is still to do).
+///
+/// ```
+/// use tmm_report::labels::{lettering_floor, with_lettering_floor, MIN_EM};
+/// assert_eq!(lettering_floor(), 0.0);
+/// assert_eq!(with_lettering_floor(MIN_EM, lettering_floor), MIN_EM);
+/// assert_eq!(lettering_floor(), 0.0);
+/// ```
+pub fn with_lettering_floor<T>(floor: f64, f: impl FnOnce() -> T) -> T {
+    let before = FLOOR.with(|c| c.replace(floor));
+    let out = f();
+    FLOOR.with(|c| c.set(before));
+    out
+}
+
+/// The smallest letter size the SVG writer puts down now, mm (0: none).
+pub fn lettering_floor() -> f64 {
+    FLOOR.with(std::cell::Cell::get)
+}
+
 /// Lettering heights of GOST 2.304, mm (шрифт чертёжный): labels of points
 /// and circles, headings, titles.
 pub const H_LABEL: f64 = 3.5;

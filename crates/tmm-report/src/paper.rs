@@ -25,13 +25,17 @@ pub enum Slot {
 
 /// The width and height in mm of a slot on a sheet of `format`. The A2
 /// boxes are the A1 ones reduced by 1/√2 (a sheet of half the area) and
-/// rounded down to 5 mm.
+/// rounded down to 5 mm. On A4 (the note's page) every drawing is as wide
+/// as the note's figures ([`NOTE_WIDTH_MM`]) and at most [`NOTE_HEIGHT_MM`]
+/// high, so it is printed in the note at its own size and scale.
 ///
 /// ```
-/// use tmm_report::{paper::{slot_mm, Slot}, project::SheetFormat};
+/// use tmm_report::{paper::{slot_mm, Slot, NOTE_HEIGHT_MM}, project::SheetFormat};
 /// assert_eq!(slot_mm(Slot::Scheme, SheetFormat::A1), (400.0, 280.0));
 /// let (w, h) = slot_mm(Slot::Plan, SheetFormat::A2);
 /// assert!(w < 200.0 && h < 200.0);
+/// let (w, h) = slot_mm(Slot::Scheme, SheetFormat::A4);
+/// assert!(w == 165.0 && h <= NOTE_HEIGHT_MM);
 /// ```
 pub fn slot_mm(slot: Slot, format: SheetFormat) -> (f64, f64) {
     let a1 = match slot {
@@ -41,6 +45,15 @@ pub fn slot_mm(slot: Slot, format: SheetFormat) -> (f64, f64) {
         Slot::Small => (200.0, 150.0),
     };
     match format {
+        SheetFormat::A4 => {
+            let h = match slot {
+                Slot::Scheme => NOTE_HEIGHT_MM,
+                Slot::Plan => 165.0,
+                Slot::Diagram => 95.0,
+                Slot::Small => 125.0,
+            };
+            (NOTE_WIDTH_MM, h)
+        }
         SheetFormat::A1 => a1,
         SheetFormat::A2 => {
             let r = |x: f64| (x / std::f64::consts::SQRT_2 / 5.0).floor() * 5.0;
@@ -48,6 +61,32 @@ pub fn slot_mm(slot: Slot, format: SheetFormat) -> (f64, f64) {
         }
     }
 }
+
+/// A drawing of a fixed size `wh` (mm) on a sheet, reduced with its
+/// proportions to the note's width on the note's page (A4).
+///
+/// ```
+/// use tmm_report::{paper::fit_page, project::SheetFormat};
+/// assert_eq!(fit_page((200.0, 110.0), SheetFormat::A1), (200.0, 110.0));
+/// assert_eq!(fit_page((200.0, 110.0), SheetFormat::A4), (165.0, 90.75));
+/// ```
+pub fn fit_page(wh: (f64, f64), format: SheetFormat) -> (f64, f64) {
+    match format {
+        SheetFormat::A4 if wh.0 > NOTE_WIDTH_MM || wh.1 > NOTE_HEIGHT_MM => {
+            let k = (NOTE_WIDTH_MM / wh.0).min(NOTE_HEIGHT_MM / wh.1);
+            (wh.0 * k, wh.1 * k)
+        }
+        _ => wh,
+    }
+}
+
+/// The width of a figure in the note, mm: the text width of an A4 page
+/// (175 mm inside the frame, 165 mm with the GOST 7.32 margins).
+pub const NOTE_WIDTH_MM: f64 = 165.0;
+
+/// The tallest figure in the note, mm: the text height of an A4 page with
+/// the frame (252 mm) less the room the note keeps for the caption (30 mm).
+pub const NOTE_HEIGHT_MM: f64 = 215.0;
 
 /// A scale of a drawing (масштаб изображения), paper : nature.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -310,6 +310,19 @@ impl From<Picture> for String {
     }
 }
 
+/// The letter size (em, mm) a text of size `size` is written at: never
+/// under the lettering floor ([`crate::labels::with_lettering_floor`]).
+pub fn em(size: f64) -> f64 {
+    size.max(crate::labels::lettering_floor())
+}
+
+/// The letter size of an index (sub- or superscript) of a text of size
+/// `size`: 0.7 of it (GOST 2.304's next smaller size), never under the
+/// lettering floor.
+pub fn index_em(size: f64) -> f64 {
+    (0.7 * size).max(crate::labels::lettering_floor())
+}
+
 /// A scale as written (`1:2,5`, `2:1`, `1:1`) as a GOST 2.302 scale, from
 /// the table of [`crate::paper::STANDARD_SCALES`].
 pub fn gost_scale(text: &str) -> Option<tmm_draw::Scale> {
@@ -445,6 +458,7 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             rich: r,
         } => {
             let a = anchor_word(*anchor);
+            let size = &em(*size);
             if *r {
                 let _ = writeln!(
                     s,
@@ -464,6 +478,7 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             }
         }
         Element::Upward { at, text, size } => {
+            let size = em(*size);
             let _ = writeln!(
                 s,
                 "<text x=\"{}\" y=\"{:.2}\" font-size=\"{size}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"middle\" transform=\"rotate(-90 {} {:.2})\">{}</text>",
@@ -482,6 +497,7 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             start,
         } => {
             let n = crate::labels::plain(text).chars().count();
+            let h = &em(*h);
             let _ = write!(
                 s,
                 "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
@@ -495,7 +511,7 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
                 if sh == 0 {
                     let _ = write!(s, "<tspan dy=\"{dy:.3}\">{}</tspan>", escape(&t));
                 } else {
-                    let _ = write!(s, "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>", 0.7 * h, escape(&t));
+                    let _ = write!(s, "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>", index_em(*h), escape(&t));
                 }
                 level = sh;
             }

@@ -59,6 +59,11 @@ pub enum SheetFormat {
     A1,
     /// A2, 594 × 420 mm.
     A2,
+    /// A4 portrait, 210 × 297 mm: the page of the explanatory note. Only
+    /// the note's figures are made for it (each for the text width, at a
+    /// standard scale that fits, [`crate::paper::slot_mm`]); no sheet is,
+    /// and `[project] sheet` is A1 or A2.
+    A4,
 }
 
 impl SheetFormat {
@@ -68,19 +73,22 @@ impl SheetFormat {
     /// use tmm_report::project::SheetFormat;
     /// assert_eq!(SheetFormat::A1.size_mm(), (841.0, 594.0));
     /// assert_eq!(SheetFormat::A2.size_mm(), (594.0, 420.0));
+    /// assert_eq!(SheetFormat::A4.size_mm(), (210.0, 297.0));
     /// ```
     pub fn size_mm(self) -> (f64, f64) {
         match self {
             SheetFormat::A1 => (841.0, 594.0),
             SheetFormat::A2 => (594.0, 420.0),
+            SheetFormat::A4 => (210.0, 297.0),
         }
     }
 
-    /// The format's name, `A1` or `A2`.
+    /// The format's name, `A1`, `A2` or `A4`.
     pub fn name(self) -> &'static str {
         match self {
             SheetFormat::A1 => "A1",
             SheetFormat::A2 => "A2",
+            SheetFormat::A4 => "A4",
         }
     }
 }

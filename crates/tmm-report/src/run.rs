@@ -85,6 +85,40 @@ pub struct Prepared {
     pub task: TaskSource,
 }
 
+/// The drawings of a run made for the explanatory note's page
+/// ([`SheetFormat::A4`](crate::project::SheetFormat::A4)): each drawing
+/// the note shows, built again for the note's text width at a standard
+/// scale that fits, every letter and index raised to capitals of 2.5 mm
+/// ([`crate::labels::MIN_EM`]), so the note prints it at its own size, its
+/// "М 1:n" and μ are what the page shows and nothing is under GOST 2.304. Only the
+/// drawings (SVG) are kept; the sheets are not laid out. Called by the note
+/// when one is asked for, so a run without a note pays nothing for it.
+///
+/// ```
+/// use tmm_report::{TaskSource, run::{note_figures, DEFAULT_TASK}};
+/// let figs = note_figures(&TaskSource::new("t.toml", DEFAULT_TASK), None).unwrap();
+/// let p = figs.picture("linkage/positions.svg").unwrap();
+/// assert!(p.width <= tmm_report::paper::NOTE_WIDTH_MM && p.height <= tmm_report::paper::NOTE_HEIGHT_MM);
+/// assert!(figs.get("sheets/sheet-1.svg").is_none() && figs.get("gear/mesh.dxf").is_none());
+/// ```
+pub fn note_figures(task: &TaskSource, lang: Option<crate::project::Language>) -> Result<Documents, Error> {
+    let prepared = prepare(task, lang)?;
+    let task = prepared.task.with_sheet(crate::project::SheetFormat::A4);
+    let mut out = Documents::for_task(&task);
+    // no capital under GOST 2.304's 2.5 mm in the faces that print the note
+    crate::labels::with_lettering_floor(crate::labels::MIN_EM, || {
+        for run in RUNNERS {
+            if let Some(o) = run(&task)? {
+                for d in o.docs.iter().filter(|d| d.path.ends_with(".svg")) {
+                    out.add_copy(&o.docs, d);
+                }
+            }
+        }
+        Ok::<(), Error>(())
+    })?;
+    Ok(out)
+}
+
 /// Check the task's sections, read `[project]` and write in the mechanism
 /// a `[synthesis]` without `[linkage]` gives; the first step of
 /// [`run_task_in`], for a caller that runs the sections one by one

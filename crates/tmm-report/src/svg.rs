@@ -705,7 +705,11 @@ pub fn rich(s: &str, size: f64) -> String {
             out.push_str(&escape(run));
         } else {
             let dy = shift(level) - *at;
-            let fs = if level == Level::Base { size } else { 0.7 * size };
+            let fs = if level == Level::Base {
+                size
+            } else {
+                crate::picture::index_em(size)
+            };
             let _ = write!(out, "<tspan dy=\"{dy:.2}\" font-size=\"{fs:.2}\">{}</tspan>", escape(run));
             *at = shift(level);
         }

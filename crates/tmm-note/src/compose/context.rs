@@ -13,16 +13,15 @@ use crate::number::format_quantity;
 /// four significant digits, the accuracy a course project reports).
 pub const DIGITS: u8 = 4;
 
-/// The width of a figure on the page, mm (the text width of an A4 page with
-/// the frame is 175 mm).
-pub const FIGURE_WIDTH_MM: f64 = 165.0;
-
 /// The composing context.
 pub(crate) struct Ctx<'a> {
     pub lang: Lang,
     pub words: &'a Words,
     pub report: &'a Value,
     pub docs: &'a Documents,
+    /// The drawings made for the note's page
+    /// ([`tmm_report::run::note_figures`]), at their own sizes and scales.
+    pub figures: &'a Documents,
     pub task: &'a toml::Table,
 }
 
@@ -85,15 +84,20 @@ impl Ctx<'_> {
         format_quantity(self.v(ptr)?.to_degrees(), DIGITS, "°", self.lang)
     }
 
-    /// The figure of the run's drawing `path`, or `None` if the run has none.
+    /// The figure of the run's drawing `path`, or `None` if the run has
+    /// none: the drawing as made for the note's page, set at its own width
+    /// (never scaled), so its printed scale and μ are the page's.
     pub fn figure(&self, path: &str, caption_key: &str) -> Result<Option<Block>, NoteError> {
-        let Some(svg) = self.docs.get(path).and_then(|d| d.as_text()) else {
+        if self.docs.get(path).is_none() {
+            return Ok(None);
+        }
+        let Some(p) = self.figures.picture(path) else {
             return Ok(None);
         };
         Ok(Some(Block::Figure {
             caption: self.w(caption_key)?,
-            svg: svg.to_string(),
-            width_mm: FIGURE_WIDTH_MM,
+            svg: p.svg().to_string(),
+            width_mm: p.width,
             label: None,
         }))
     }

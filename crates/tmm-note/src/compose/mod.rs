@@ -81,11 +81,14 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
     let lang = lang_of(run.project.lang);
     let words = Words::load(lang)?;
     let task_table: toml::Table = toml::from_str(&task.text).unwrap_or_default();
+    // the drawings again, made for the note's page (the run's are the sheets')
+    let figures = tmm_report::run::note_figures(task, Some(run.project.lang)).map_err(|e| NoteError::Figures { message: e.to_string() })?;
     let cx = Ctx {
         lang,
         words: &words,
         report: &run.report,
         docs: &run.docs,
+        figures: &figures,
         task: &task_table,
     };
     let p = &run.project;

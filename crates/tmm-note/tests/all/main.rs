@@ -5,7 +5,9 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;
+mod figures_pdf;
 mod formulas;
 mod frame;
 mod notation;
+mod pdf_read;
 mod typeset;

@@ -96,9 +96,13 @@ const TOP: f64 = 24.0;
 const BOTTOM: f64 = 16.0;
 
 /// Draw `panels` one under another, each in a `Slot::Diagram` box of
-/// `sheet`; `omega` (rad/s) adds the time scale μ_t to the scale line.
+/// `sheet` (on the note's page, the page's height shared between them); `omega` (rad/s) adds the time scale μ_t to the scale line.
 pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat, omega: Option<f64>) -> Picture {
-    let (w, ph) = slot_mm(Slot::Diagram, sheet);
+    let (w, mut ph) = slot_mm(Slot::Diagram, sheet);
+    if sheet == SheetFormat::A4 {
+        // the note's page: the panels share its height
+        ph = ph.min(crate::paper::NOTE_HEIGHT_MM / panels.len().max(1) as f64);
+    }
     let total = ph * panels.len().max(1) as f64;
     let mut c = Canvas::new(w, total);
     let mut lab = Placer::new(w, total);

@@ -482,6 +482,8 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
         }
     }
     if let Some(b) = &a.beam {
+        // 200 × 110 mm on a sheet, the note's width on its page
+        let (w, h) = crate::paper::fit_page((200.0, 110.0), task.sheet);
         let link = &m.link_names[b.beam.link];
         for (key, name, unit, idx) in [
             ("N", "forces.strength_n", "forces.unit_n", 0),
@@ -505,8 +507,8 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
                     points: &pts,
                     color: "#c00000",
                 }],
-                200.0,
-                110.0,
+                w,
+                h,
             );
             docs.add_text(format!("{dir}strength-{key}.svg"), svg)?;
         }

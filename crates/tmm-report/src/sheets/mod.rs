@@ -38,15 +38,11 @@ use crate::picture::Picture;
 use crate::project::{Language, Project};
 use crate::svg::escape;
 use crate::words::word;
-use frame::{FONTS, inner_frame, text_width};
+use frame::inner_frame;
 use layout::{Packer, Rect};
 
 /// The clear distance between drawings and from the frame, mm.
 pub const GAP_MM: f64 = 5.0;
-/// The caption's font size above each drawing, mm (GOST 2.304).
-pub const CAPTION_MM: f64 = 5.0;
-/// The height of the caption strip above each drawing, mm.
-pub const CAPTION_STRIP_MM: f64 = 7.0;
 
 /// One sheet of the course: its title key and the drawings it holds, in
 /// the course's order; `*` ends a prefix (`forces/group-*`); `!` marks a
@@ -280,15 +276,11 @@ fn collect(docs: &Documents, t: &Template, lang: Language, next_id: &mut usize) 
     (out, unreadable)
 }
 
-/// The size of a drawing's box with its caption: (width, height, caption size).
-fn item_size(d: &Drawing) -> (f64, f64, f64) {
-    let size = if text_width(&d.caption, CAPTION_MM) <= d.w {
-        CAPTION_MM
-    } else {
-        3.5
-    };
-    let w = d.w.max(text_width(&d.caption, size));
-    (w, d.h + CAPTION_STRIP_MM, size)
+/// The size of a drawing's box: (width, height). A drawing carries its
+/// own title (with its scale and μ) inside its paper, so the sheet adds no
+/// caption of its own: one title per drawing.
+fn item_size(d: &Drawing) -> (f64, f64) {
+    (d.w, d.h)
 }
 
 /// The field the drawings may take: the inner frame less [`GAP_MM`].
@@ -346,7 +338,7 @@ fn pack(ds: &[Drawing], order: &[usize], format: crate::project::SheetFormat, no
     }
     let mut placed = Vec::new();
     for &i in order {
-        let (w, h, _) = item_size(&ds[i]);
+        let (w, h) = item_size(&ds[i]);
         if let Some(r) = p.place_by(w + GAP_MM, h + GAP_MM, columns) {
             placed.push((i, Rect { x: r.x, y: r.y, w, h }));
         }
@@ -362,8 +354,8 @@ fn best_pack(ds: &[Drawing], left: &[usize], format: crate::project::SheetFormat
     let sorted = |key: &dyn Fn(f64, f64) -> f64| {
         let mut v = left.to_vec();
         v.sort_by(|&a, &b| {
-            let (wa, ha, _) = item_size(&ds[a]);
-            let (wb, hb, _) = item_size(&ds[b]);
+            let (wa, ha) = item_size(&ds[a]);
+            let (wb, hb) = item_size(&ds[b]);
             (ds[b].required, key(wb, hb))
                 .partial_cmp(&(ds[a].required, key(wa, ha)))
                 .unwrap_or(std::cmp::Ordering::Equal)
@@ -414,6 +406,10 @@ fn note_lines(lang: Language, left_out: &[String]) -> Vec<String> {
 pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
     let lang = project.lang;
     let format = project.sheet;
+    if format == crate::project::SheetFormat::A4 {
+        // the note's page: its figures are set in the note, not on a sheet
+        return Vec::new();
+    }
     let mut next_id = 0;
     // (template index, drawings placed, left out, note box, continued)
     let mut pages: Vec<Page> = Vec::new();
@@ -426,7 +422,7 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
         let tb = title_block::place(inner_frame(format));
         // a drawing larger than an empty field can never be placed
         let fits_empty = |d: &Drawing| {
-            let (w, h, _) = item_size(d);
+            let (w, h) = item_size(d);
             (w <= empty.w && h <= empty.h - (tb.h + GAP_MM)) || (w <= empty.w - (tb.w + GAP_MM) && h <= empty.h)
         };
         let mut left_out: Vec<String> = unreadable;
@@ -524,13 +520,12 @@ fn to_placed(ds: &[Drawing], placed: &[(usize, Rect)]) -> Vec<Placed> {
         .iter()
         .map(|&(i, r)| {
             let d = &ds[i];
-            let (w, _, _) = item_size(d);
             Placed {
                 source: d.path.clone(),
                 caption: d.caption.clone(),
                 rect: Rect {
-                    x: r.x + 0.5 * (w - d.w),
-                    y: r.y + CAPTION_STRIP_MM,
+                    x: r.x,
+                    y: r.y,
                     w: d.w,
                     h: d.h,
                 },
@@ -551,16 +546,42 @@ fn num(x: f64) -> String {
     if s == "-0" { "0".to_string() } else { s.to_string() }
 }
 
+/// Graph 9 of the title block (GOST 2.104: the name *or the distinctive
+/// index* of the organisation): the university, the department and the
+/// group; when that does not fit the 50 × 15 mm cell at 2.5 mm, the
+/// university's index, the abbreviation it ends with in brackets
+/// ("… университет (МАДИ)" → "МАДИ"), so the field wraps inside its cell
+/// rather than being cut.
+fn organisation(project: &Project) -> String {
+    let join = |university: &str| {
+        [university, &project.department, &project.group]
+            .into_iter()
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let full = join(&project.university);
+    // the room `tmm_draw::eskd::sheet` leaves in the cell: 0.6 mm and the slant's lean
+    let (w, h) = ORGANISATION_CELL_MM;
+    let room = w - 0.6 - TextHeight::H3_5.mm() * tmm_draw::svg::SLANT_DEG.to_radians().tan();
+    let (_, _, cut) = tmm_draw::eskd::fit(&full, TextHeight::H3_5, room, h - 0.6);
+    let u = project.university.trim();
+    match (cut, u.strip_suffix(')').and_then(|v| v.rsplit_once('('))) {
+        (Some(_), Some((_, index))) if !index.trim().is_empty() => join(index.trim()),
+        _ => full,
+    }
+}
+
+/// The organisation's cell (graph 9) of title block form 1, mm.
+const ORGANISATION_CELL_MM: (f64, f64) = (50.0, 15.0);
+
 /// The title block's words and fields of a sheet.
 fn title_block_of(sheet: &Sheet, project: &Project, count: usize) -> tmm_draw::eskd::TitleBlock {
     let lang = project.lang;
     let w = |k: &str| word(lang, k).to_string();
     let five = |k: [&str; 5]| k.map(w);
-    let organisation: Vec<&str> = [&project.university, &project.department, &project.group]
-        .into_iter()
-        .map(|s| s.trim())
-        .filter(|s| !s.is_empty())
-        .collect();
+    let organisation = organisation(project);
     tmm_draw::eskd::TitleBlock {
         captions: tmm_draw::eskd::Captions {
             changes: five([
@@ -592,7 +613,7 @@ fn title_block_of(sheet: &Sheet, project: &Project, count: usize) -> tmm_draw::e
         sheets: count,
         student: project.student.clone(),
         teacher: project.teacher.clone(),
-        organisation: organisation.join(", "),
+        organisation,
         letter: w("sheet.tb_letter_value"),
     }
 }
@@ -633,8 +654,9 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
     let lang = project.lang;
     let (w, h) = project.sheet.size_mm();
     let format = match project.sheet {
-        crate::project::SheetFormat::A1 => tmm_draw::eskd::Format::A1,
         crate::project::SheetFormat::A2 => tmm_draw::eskd::Format::A2,
+        // the note's page has no sheets (`layout_sheets` makes none)
+        crate::project::SheetFormat::A1 | crate::project::SheetFormat::A4 => tmm_draw::eskd::Format::A1,
     };
     let tb = title_block_of(sheet, project, count);
     let mut scene = match tmm_draw::eskd::sheet(format, &tb) {
@@ -644,7 +666,6 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
             .unwrap_or_else(|_| unreachable!("a sheet's size is positive")),
     };
     let frame_scene = scene.clone();
-    scene.layer("CAPTION", 7, tmm_draw::LineType::Thin);
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -661,15 +682,6 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
         let Some(d) = ds.iter().find(|d| d.path == p.source) else {
             continue;
         };
-        let (_, _, size) = item_size(d);
-        let cap_y = p.rect.y - 0.5 * (CAPTION_STRIP_MM - size) - 0.5;
-        let _ = write!(
-            s,
-            "<text class=\"caption\" x=\"{}\" y=\"{}\" font-size=\"{size}\" font-family=\"{FONTS}\" font-style=\"italic\" text-anchor=\"middle\" fill=\"#000000\">{}</text>",
-            num(p.rect.x + 0.5 * p.rect.w),
-            num(cap_y),
-            escape(&d.caption)
-        );
         let scale = d.scale.as_ref().map_or(String::new(), |k| format!(" data-scale=\"{}\"", escape(k)));
         let _ = writeln!(
             s,
@@ -683,17 +695,7 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
             num(d.h),
             d.pic.body(&format!("d{}-", d.id))
         );
-        // the same on the scene: the caption and the drawing moved to its box (y up)
-        let size_h = TextHeight::new(size).unwrap_or(TextHeight::H3_5);
-        let _ = scene.text(
-            "CAPTION",
-            sheet_text(
-                Point::new(p.rect.x + 0.5 * p.rect.w, h - cap_y),
-                size_h,
-                &d.caption,
-                tmm_draw::Anchor::Middle,
-            ),
-        );
+        // the same on the scene: the drawing moved to its box (y up)
         scene.insert(&d.pic.scene(), Vec2::new(p.rect.x, h - p.rect.bottom()));
     }
     s.push_str("</g>\n");
