@@ -139,6 +139,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             results.push(f);
         }
     }
+    results.extend(worked(cx, osc)?);
     let book = book_blocks(cx)?;
     formulas.extend(book.formulas);
     results.extend(book.results);
@@ -336,4 +337,55 @@ fn book_blocks(cx: &Ctx) -> Result<BookBlocks, NoteError> {
         )?);
     }
     Ok(b)
+}
+
+/// The follower's largest speed and acceleration worked from the analogues
+/// with the run's numbers (v = ω·ds/dφ, a = ω²·d²s/dφ², the formulas of the
+/// section), at the cam angles where the report's speed and acceleration
+/// are largest; for a translating follower (an oscillating one's analogues
+/// are of an angle).
+fn worked(cx: &Ctx, osc: bool) -> Result<Vec<Block>, NoteError> {
+    use crate::calc::{self, Calculation, Expr, Quantity};
+    let mut out = Vec::new();
+    if osc {
+        return Ok(out);
+    }
+    let arr = |k: &str| -> Vec<f64> {
+        cx.report
+            .pointer(&format!("/cam/{k}"))
+            .and_then(Value::as_array)
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default()
+    };
+    let (v, ds, a, dds) = (arr("velocity"), arr("ds_dphi"), arr("acceleration"), arr("d2s_dphi2"));
+    let Some(omega) = cx.opt("/cam/omega").map(f64::abs) else {
+        return Ok(out);
+    };
+    let largest = |x: &[f64]| (0..x.len()).max_by(|&i, &j| x[i].abs().total_cmp(&x[j].abs()));
+    let (Some(iv), Some(ia)) = (largest(&v), largest(&a)) else {
+        return Ok(out);
+    };
+    if ds.len() != v.len() || dds.len() != a.len() {
+        return Ok(out);
+    }
+    out.push(cx.para("calc_cam", &[])?);
+    // the analogues in mm, the speed in m/s: ds/dφ·10⁻³
+    let milli = || calc::exact(1e-3, "10^(-3)");
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new("v_max", v[iv], &cx.w("u_m_s")?),
+        Expr::Mul(vec![
+            calc::q("omega", omega, ""),
+            calc::q("(dif s) / (dif phi)", ds[iv] * 1e3, ""),
+            milli(),
+        ]),
+    )));
+    out.push(Block::Calculation(Calculation::new(
+        Quantity::new("a_max", a[ia], &cx.w("u_m_s2")?),
+        Expr::Mul(vec![
+            calc::pow(calc::q("omega", omega, ""), 2),
+            calc::q("(dif^2 s) / (dif phi^2)", dds[ia] * 1e3, ""),
+            milli(),
+        ]),
+    )));
+    Ok(out)
 }

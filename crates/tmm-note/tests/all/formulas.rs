@@ -143,3 +143,18 @@ fn the_worked_formulas_typeset_without_a_warning() {
     let t = typeset_with_warnings(&note).unwrap();
     assert!(t.warnings.is_empty(), "{:#?}", t.warnings);
 }
+
+#[test]
+fn the_cam_sections_worked_speed_and_acceleration_check() {
+    // v = ω·ds/dφ and a = ω²·d²s/dφ² with the report's ω and analogues
+    // against the report's speed and acceleration at their largest
+    for (file, text) in [
+        ("default.toml", DEFAULT_TASK.to_string()),
+        ("cam-seed-001-roller.toml", example("cam-seed-001-roller.toml")),
+    ] {
+        for lang in [Language::Ru, Language::En] {
+            let note = note_of(file, &text, lang);
+            check_all(&note, &["v_max", "a_max"]);
+        }
+    }
+}

@@ -51,6 +51,10 @@ impl Panel {
     }
 }
 
+/// A panel placed: its index, its origin on the paper (y up) and its
+/// titles' top centre (y down).
+type Placed = (usize, (f64, f64), (f64, f64));
+
 /// The lettering heights on a sheet: labels and titles, mm (GOST 2.304).
 fn heights(sheet: SheetFormat) -> (f64, f64) {
     match sheet {
@@ -202,7 +206,7 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
     // metres per paper mm, as the other drawings write μ_l
     c.root_attr("data-mu-l", &format!("{}", 1.0 / s.max(1e-9)));
     // each panel's origin on the paper (y up) and its title's top centre (y down)
-    let mut placed: Vec<(usize, (f64, f64), (f64, f64))> = Vec::new();
+    let mut placed: Vec<Placed> = Vec::new();
     let mut top = h;
     for r in &rows {
         let widths: Vec<f64> = r
@@ -306,7 +310,7 @@ fn draw_links(c: &mut Canvas, m: &Mechanism, sol: &Solution, p: &Panel, to: &dyn
                     let (x, y) = q.links();
                     for li in [x, y].into_iter().filter(|&li| li != 0 && li != guide) {
                         for jt in joints_of(m, sol, li) {
-                            away = away + (jt - here);
+                            away += jt - here;
                         }
                     }
                 }
