@@ -381,8 +381,9 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
     await js(`(() => { const s = document.getElementById('lang'); s.value = '${lang}'; s.dispatchEvent(new Event('change')); return true; })()`);
     await until(`document.documentElement.lang === '${lang}'`);
     for (const [kind, text, view] of cases) {
+      const prev = await js("window.tmmPage.error ? window.tmmPage.error.message : ''");
       await setText(text);
-      await until("!document.getElementById('error').hidden");
+      await until(`!document.getElementById('error').hidden && window.tmmPage.error && window.tmmPage.error.message !== ${JSON.stringify(prev)}`);
       await openView(view);
       const t = await js(screen);
       const untranslated = await js("!!document.querySelector('#error details')");
@@ -413,6 +414,7 @@ check(`no stale view over the ${exampleNames.length} examples`, staleBad.length 
   await js(`(() => { const s = document.getElementById('lang'); s.value = ''; s.dispatchEvent(new Event('change')); return true; })()`);
   await setText(defaultText);
   await until("document.getElementById('error').hidden && /Механизм/.test(document.getElementById('tabs').innerText)");
+  await sleep(800); // the editor's history records the typed text 600 ms after the last keystroke
 }
 
 // ---------- the mechanism edited by dragging ----------

@@ -19,6 +19,9 @@
 //!   translations joined alike (a message is usually the place, the field,
 //!   then what is wrong, then what would be valid).
 //!
+//! Numbers take a decimal comma ([`decimal_commas`]), except where the user
+//! would copy them into the task file.
+//!
 //! When some part has no wording, the message has no translation: the page
 //! then says so in the interface's language and keeps the English text out
 //! of sight until asked (see `web/app.js`, `said`).
@@ -311,7 +314,55 @@ pub fn translate(text: &str, lang: Language) -> Option<String> {
         budget: &mut budget,
     }
     .text(text, 0)?;
-    Some(tmm_report::message_numbers::tidy(&out))
+    Some(decimal_commas(&tmm_report::message_numbers::tidy(&out)))
+}
+
+/// `text` with the decimal point of each number written as a comma, as
+/// Russian and Ukrainian write numbers (the page's other numbers do so too),
+/// except where the user would copy it into the task file: after `= ` and
+/// inside quotes or backticks (TOML and the unit reader take a point). A
+/// number glued to a letter, digit, `_` or `.` before it (`x1.5`,
+/// `task.toml`) or followed by a second point (`0.2.130`) is left alone.
+///
+/// ```
+/// use tmm_web::messages::decimal_commas;
+/// assert_eq!(decimal_commas("x1 = 0.2: сумма -1.0750 > 0.5 mm"), "x1 = 0.2: сумма -1,0750 > 0,5 mm");
+/// assert_eq!(decimal_commas("t.toml:3:5: links.1.mass, \"0.5 mm\", `2.5`, 0.2.130"), "t.toml:3:5: links.1.mass, \"0.5 mm\", `2.5`, 0.2.130");
+/// ```
+pub fn decimal_commas(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let mut quote: Option<u8> = None;
+    let mut i = 0;
+    let mut done = 0;
+    while i < b.len() {
+        let c = b[i];
+        match quote {
+            Some(q) if c == q => quote = None,
+            Some(_) => {}
+            None if c == b'"' || c == b'`' => quote = Some(c),
+            None if c.is_ascii_digit() => {
+                let glued = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_' || b[i - 1] == b'.');
+                let digits_end = |from: usize| (from..b.len()).find(|&k| !b[k].is_ascii_digit()).unwrap_or(b.len());
+                let j = digits_end(i);
+                let point = j + 1 < b.len() && b[j] == b'.' && b[j + 1].is_ascii_digit();
+                let k = if point { digits_end(j + 1) } else { j };
+                let second = point && k + 1 < b.len() && b[k] == b'.' && b[k + 1].is_ascii_digit();
+                let assigned = text[..i].trim_end_matches(['-', '+']).ends_with("= ");
+                if point && !glued && !second && !assigned {
+                    out.push_str(&text[done..j]);
+                    out.push(',');
+                    done = j + 1;
+                }
+                i = k;
+                continue;
+            }
+            None => {}
+        }
+        i += 1;
+    }
+    out.push_str(&text[done..]);
+    out
 }
 
 struct Tr<'a> {
