@@ -59,7 +59,7 @@ type Placed = (usize, (f64, f64), (f64, f64));
 fn heights(sheet: SheetFormat) -> (f64, f64) {
     match sheet {
         SheetFormat::A1 => (3.5, 3.5),
-        SheetFormat::A2 => (2.5, 2.5),
+        SheetFormat::A2 | SheetFormat::A4 => (2.5, 2.5),
     }
 }
 
