@@ -104,6 +104,22 @@ impl Dim {
     }
 }
 
+impl Dim {
+    /// The indefinite article of the dimension's English name ("an angle").
+    ///
+    /// ```
+    /// use tmm_geom::units::Dim;
+    /// assert_eq!(format!("{} {}", Dim::Angle.article(), Dim::Angle), "an angle");
+    /// assert_eq!(format!("{} {}", Dim::Length.article(), Dim::Length), "a length");
+    /// ```
+    pub fn article(self) -> &'static str {
+        match self {
+            Dim::Angle | Dim::AngularVelocity | Dim::AngularAcceleration | Dim::Acceleration => "an",
+            _ => "a",
+        }
+    }
+}
+
 impl fmt::Display for Dim {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let s = match self {
@@ -128,7 +144,7 @@ impl fmt::Display for Dim {
 
 /// A value that could not be read as the required quantity.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("cannot read `{input}` as a {dim}: {reason}; accepted units: {accepted}; e.g. {example}", accepted = dim.accepted(), example = dim.example())]
+#[error("cannot read `{input}` as {article} {dim}: {reason}; accepted units: {accepted}; e.g. {example}", article = dim.article(), accepted = dim.accepted(), example = dim.example())]
 pub struct UnitError {
     /// The text as given.
     pub input: String,

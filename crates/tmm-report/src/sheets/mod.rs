@@ -19,7 +19,7 @@
 //! holding the same frame and every drawing's scene moved to its place.
 //! The drawings are packed by [`layout`] without overlap and off the title
 //! block; what does not fit goes to a continuation sheet (the drawings the
-//! course requires) or is left out with a note on the sheet (the optional
+//! course requires) or is left out of the sheet (the optional
 //! ones). See `docs/sheets.md`.
 
 pub mod frame;
@@ -159,7 +159,8 @@ pub struct Sheet {
     pub scale: String,
     /// The drawings on it.
     pub placed: Vec<Placed>,
-    /// Captions of drawings left out of it (written in its note).
+    /// Captions of optional drawings left out of it (they are in the note
+    /// and the drawing files; the sheet itself does not list them).
     pub left_out: Vec<String>,
     /// The note's box, when there is one.
     pub note: Option<Rect>,
@@ -385,21 +386,6 @@ type Packing = (Vec<(usize, Rect)>, Option<Rect>);
 /// A page before numbering: template, drawings, placed, left out, note, continued.
 type Page = (usize, Vec<Drawing>, Vec<Placed>, Vec<String>, Option<Rect>, bool);
 
-/// The note's lettering, mm (GOST 2.304).
-const NOTE_H: TextHeight = TextHeight::H3_5;
-const NOTE_LINE_MM: f64 = 5.5;
-/// The note's box width, mm: the title block's, right above it.
-const NOTE_W_MM: f64 = title_block::WIDTH_MM;
-/// The width its lines are wrapped to by type B's letter widths, mm: a
-/// sixth less than the box, room for a face wider than type B (the PDF's).
-const NOTE_WRAP_MM: f64 = NOTE_W_MM * 5.0 / 6.0;
-
-fn note_lines(lang: Language, left_out: &[String]) -> Vec<String> {
-    let text = format!("{}: {}.", word(lang, "sheet.left_out"), left_out.join("; "));
-    // wrapped by type B's letter widths at the note's size, never narrowed
-    tmm_draw::wrap(&text, NOTE_H, NOTE_WRAP_MM).unwrap_or_else(|| vec![text.clone()])
-}
-
 /// Lay out the sheets of a run: the drawings of each course sheet found in
 /// `docs`, in `project`'s language and format. Sheets without drawings are
 /// not made. Numbers and the count are set over the whole set.
@@ -450,24 +436,11 @@ pub fn layout_sheets(docs: &Documents, project: &Project) -> Vec<Sheet> {
                 continued = true;
                 continue;
             }
-            // the optional rest is left out, with a note above the title block
+            // the optional rest is left out: it is in the note and the
+            // drawing files, and a sheet shows no list of what is not on it
             let mut out = left_out.clone();
             out.extend(rest.iter().map(|&i| ds[i].caption.clone()));
-            let (placed, note) = if out.is_empty() {
-                (placed, None)
-            } else {
-                let lines = note_lines(lang, &out);
-                let nw = NOTE_W_MM;
-                let nh = NOTE_LINE_MM * (lines.len() as f64 + 2.0);
-                let (placed, note) = best_pack(&ds, &left, format, Some((nw, nh)));
-                out = left_out.clone();
-                out.extend(
-                    left.iter()
-                        .filter(|i| !placed.iter().any(|(j, _)| j == *i))
-                        .map(|&i| ds[i].caption.clone()),
-                );
-                (placed, note)
-            };
+            let note = None;
             pages.push((ti, ds.clone(), to_placed(&ds, &placed), out, note, continued));
             break;
         }
@@ -637,21 +610,9 @@ fn frame_part(it: &tmm_draw::Item, w: f64, h: f64) -> u8 {
     }
 }
 
-/// A text on the sheet's scene: plain words at a GOST 2.304 size.
-fn sheet_text(at: Point, size: TextHeight, s: &str, anchor: tmm_draw::Anchor) -> tmm_draw::Text {
-    tmm_draw::Text {
-        at,
-        height: size,
-        rich: tmm_draw::Rich::plain_text(s),
-        anchor,
-        rotation_deg: 0.0,
-    }
-}
-
-/// A sheet's SVG and its whole scene (the frame, the captions, the note and
-/// every drawing's scene at its place), from which the DXF is written.
+/// A sheet's SVG and its whole scene (the frame, the title block and every
+/// drawing's scene at its place), from which the DXF is written.
 fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -> (String, Scene) {
-    let lang = project.lang;
     let (w, h) = project.sheet.size_mm();
     let format = match project.sheet {
         crate::project::SheetFormat::A2 => tmm_draw::eskd::Format::A2,
@@ -699,27 +660,6 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
         scene.insert(&d.pic.scene(), Vec2::new(p.rect.x, h - p.rect.bottom()));
     }
     s.push_str("</g>\n");
-    if let Some(r) = sheet.note {
-        let lines = note_lines(lang, &sheet.left_out);
-        let _ = writeln!(
-            s,
-            "<g id=\"note\" data-box=\"{} {} {} {}\">",
-            num(r.x),
-            num(r.y),
-            num(r.w),
-            num(r.h)
-        );
-        let mut note = Scene::new(w, h, tmm_draw::Scale::NATURAL, tmm_draw::Thickness::A1)
-            .unwrap_or_else(|_| unreachable!("a sheet's size is positive"));
-        for (i, l) in lines.iter().enumerate() {
-            let at = Point::new(r.x, h - (r.y + NOTE_LINE_MM * (i as f64 + 1.0)));
-            let t = sheet_text(at, NOTE_H, l, tmm_draw::Anchor::Start);
-            let _ = note.text("TEXT", t.clone());
-            let _ = scene.text("TEXT", t);
-        }
-        s.push_str(&tmm_draw::svg::items_markup(&note, |_| true));
-        s.push_str("</g>\n");
-    }
     for (id, part) in [("frame", 0u8), ("graph-26", 1), ("title-block", 2)] {
         let _ = writeln!(s, "<g id=\"{id}\">");
         s.push_str(&tmm_draw::svg::items_markup(&frame_scene, |it| frame_part(it, w, h) == part));

@@ -198,7 +198,10 @@ impl Fields {
             RawField::Text(s) => units::parse(s, dim),
             _ => {
                 return Err(self
-                    .error(key, format!("expected a {} (a number or a text with a unit)", dim_word(dim)))
+                    .error(
+                        key,
+                        format!("expected {} {} (a number or a text with a unit)", dim.article(), dim_word(dim)),
+                    )
                     .with_help(example(dim)));
             }
         };

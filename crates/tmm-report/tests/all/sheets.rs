@@ -483,7 +483,7 @@ fn fake(w: f64, h: f64, scale: Option<&str>) -> tmm_report::picture::Picture {
 }
 
 #[test]
-fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
+fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_left_off_the_sheet() {
     use tmm_report::project::Project;
     use tmm_report::sheets::layout_sheets;
     let mut docs = Documents::new();
@@ -497,7 +497,9 @@ fn the_scale_comes_from_the_main_drawing_and_what_cannot_fit_is_named() {
     assert_eq!(s.scale, "2:1");
     assert_eq!(s.placed.len(), 3);
     assert_eq!(s.left_out, vec![word(Language::Ru, "sheet.fig_cam_cam_pressure").to_string()]);
-    assert!(s.svg.contains(word(Language::Ru, "sheet.left_out")));
+    // a sheet shows what it holds: no list of what is not on it
+    assert!(!s.svg.contains(word(Language::Ru, "sheet.left_out")));
+    assert!(!s.svg.contains(word(Language::Ru, "sheet.fig_cam_cam_pressure")));
     let (_, texts) = group(&s.svg, "title-block");
     // the name is wrapped in its cell: its lines in order
     assert!(
