@@ -21,6 +21,7 @@ mod linkage;
 mod load_period;
 mod machine_mesh;
 mod note;
+mod periods;
 mod planetary_cli;
 mod redundant;
 mod seed_003_direction;

@@ -529,8 +529,8 @@ fn p3_shaper_against_the_books_four_equations_and_measured_back() {
     use tmm_linkage::synthesis::shaper;
     let s = shaper::synthesize(&p3_request(Rotation::Cw)).unwrap();
     // the book's four equations, Newton from its guesses 0.1, 0.3, 45°, −45°
-    let (h, k, l_bc, l_cd, l_oc) = (0.3, 1.4, 0.5, 0.7, 0.3);
-    let g = (h / (2.0 * l_cd) as f64).asin();
+    let (h, k, l_bc, l_cd, l_oc): (f64, f64, f64, f64, f64) = (0.3, 1.4, 0.5, 0.7, 0.3);
+    let g = (h / (2.0 * l_cd)).asin();
     let d_px = 2.0 * PI - 2.0 * PI / (k + 1.0);
     let x = newton(
         |v| {

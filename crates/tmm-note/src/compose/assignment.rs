@@ -9,23 +9,31 @@ use crate::model::{Block, Cell};
 /// The assignment's blocks.
 pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
     let mut b = vec![cx.para("assign_intro", &[])?];
+    // a synthesised mechanism: the task gives the synthesis' data (П3's
+    // H, K, λ, l_BC, l_OC), not the lengths it finds
+    let synthesised = cx.report.get("synthesis").is_some();
+    if synthesised {
+        b.push(cx.quantities("assign_synthesis", super::synthesis::given_rows(cx)?)?);
+    }
     if cx.report.get("linkage").is_some() {
         let mut rows: Vec<Vec<Cell>> = Vec::new();
         for (name, l) in link_lengths(cx) {
             rows.push(vec![text(cx.fill("link_n", &[name])?), num(l * 1000.0)]);
         }
-        b.push(cx.table("assign_links", &[("col_link", ""), ("col_length", "u_mm")], rows)?);
+        if !synthesised {
+            b.push(cx.table("assign_links", &[("col_link", ""), ("col_length", "u_mm")], rows)?);
+        }
         let omega = cx.v("/linkage/input/omega")?;
-        b.push(cx.quantities(
-            "assign_linkage",
-            vec![
-                (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
-                (cx.w("q_n1")?, cx.q(omega * 30.0 / std::f64::consts::PI, "u_rpm")?),
-                (cx.w("q_position")?, cx.deg("/linkage/plans/phi")?),
-            ],
-        )?);
-    } else if cx.report.get("synthesis").is_some() {
-        b.push(cx.quantities("assign_synthesis", super::synthesis::given_rows(cx)?)?);
+        let mut q = vec![
+            (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
+            (cx.w("q_n1")?, cx.q(omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
+        ];
+        // the time of one turn T = 60/n1
+        if omega != 0.0 {
+            q.push((cx.w("q_revolution_time")?, cx.q(std::f64::consts::TAU / omega.abs(), "cy_u_s")?));
+        }
+        q.push((cx.w("q_position")?, cx.deg("/linkage/plans/phi")?));
+        b.push(cx.quantities("assign_linkage", q)?);
     }
     if cx.report.get("forces").is_some() {
         let mut rows = Vec::new();
@@ -67,6 +75,9 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
     }
     if cx.report.get("cam").is_some() {
         b.push(cx.quantities("assign_cam", super::cam::given_rows(cx)?)?);
+    }
+    if cx.report.get("cylinder").is_some() {
+        b.push(cx.quantities("assign_cylinder", super::cylinder::given_rows(cx)?)?);
     }
     b.push(cx.para("assign_rounding", &[super::DIGITS.to_string()])?);
     Ok(b)

@@ -20,11 +20,10 @@ fn arr(cx: &Ctx, p: &str) -> Vec<Option<f64>> {
         .unwrap_or_default()
 }
 
-/// The section, if the report has `cylinder`.
-pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
-    if cx.report.get("cylinder").is_none() {
-        return Ok(None);
-    }
+/// The given values of `[cylinder]` as (name, value) rows: the geometry,
+/// the masses, the control force's switch point and the kinetostatics'
+/// position (the section's table and the technical assignment's).
+pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let synthesised = cx.report.pointer("/cylinder/synthesis").is_some();
     let mut given = vec![
         (cx.w("cy_q_hmin")?, cx.qv("/cylinder/geometry/h_min", 1.0, "cy_u_m")?),
@@ -45,7 +44,35 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     ];
     if synthesised {
         given.insert(3, (cx.w("cy_q_swing")?, cx.deg("/cylinder/geometry/swing")?));
+        // the pressure angle given at the end or the start, and Y_D
+        let mut at = 4;
+        for (key, word) in [("pressure_end", "cy_q_pressure_end"), ("pressure_start", "cy_q_pressure_start")] {
+            if let Some(v) = cx
+                .report
+                .pointer(&format!("/cylinder/synthesis/given/{key}"))
+                .and_then(Value::as_f64)
+            {
+                given.insert(at, (cx.w(word)?, cx.q(v.to_degrees(), "u_deg")?));
+                at += 1;
+            }
+        }
+        if cx.report.pointer("/cylinder/synthesis/given/frame_y").is_some() {
+            given.insert(
+                at,
+                (cx.w("cy_q_frame_y")?, cx.qv("/cylinder/synthesis/given/frame_y", 1.0, "cy_u_m")?),
+            );
+        }
     }
+    Ok(given)
+}
+
+/// The section, if the report has `cylinder`.
+pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
+    if cx.report.get("cylinder").is_none() {
+        return Ok(None);
+    }
+    let synthesised = cx.report.pointer("/cylinder/synthesis").is_some();
+    let given = given_rows(cx)?;
     let statement = vec![
         Block::List(vec![
             cx.w("assume_rigid")?.into(),

@@ -30,6 +30,16 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("dy_sought", &[])?,
     ];
     let mut statement = statement;
+    // the time of one turn T = 60/n1 and of the machine's cycle (two turns
+    // of a four-stroke engine)
+    if let (Some(t), Some(tc)) = (cx.opt("/dynamics/revolution_time"), cx.opt("/dynamics/cycle_time_nominal"))
+        && t > 0.0
+    {
+        statement.push(cx.para(
+            "dy_cycle_time",
+            &[cx.q(t, "cy_u_s")?, cx.deg("/dynamics/cycle_period")?, cx.q(tc, "cy_u_s")?],
+        )?);
+    }
     // the summed loads repeat within the machine's cycle (П2's opposed engine)
     if let (Some(lp), Some(cp)) = (cx.opt("/dynamics/load_period"), cx.opt("/dynamics/cycle_period"))
         && lp < cp * (1.0 - 1e-9)

@@ -124,6 +124,15 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     }
     c.fixed_pivot((0.0, 0.0), 1.2);
     c.fixed_pivot(xy(d.d), 1.2);
+    // the markers and the pivots' supports are kept free of the labels (the
+    // placer avoids lines and texts; a dot is neither)
+    for (st, _, main) in &poses {
+        c.reserve_point(xy(st.k.p), if *main { 2.8 } else { 2.2 });
+        c.reserve_point(xy(st.b.p), 1.4);
+    }
+    c.reserve_point(xy(a.at.s2.p), 1.2);
+    c.reserve_point((0.0, 0.0), 2.5);
+    c.reserve_point(xy(d.d), 2.5);
     let st = &a.at;
     for (p, name) in [
         (Vec2::ZERO, "A"),
@@ -135,9 +144,11 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     ] {
         c.label(xy(p), name, H_LABEL, "#000");
     }
+    // the positions named at the load, on a leader when the load's
+    // neighbourhood is taken
     for (st, col, txt) in [(&first, BLUE, "s = 0"), (&last, RED, "s = s_max")] {
-        c.label(xy(st.k.p), txt, H_SMALL, col);
+        c.label_led(xy(st.k.p), txt, H_SMALL, col);
     }
-    c.label(xy(a.at.k.p), &format!("s = {} m", num(a.at.s, 3, lang)), H_SMALL, BLACK);
+    c.label_led(xy(a.at.k.p), &format!("s = {} m", num(a.at.s, 3, lang)), H_SMALL, BLACK);
     c.finish()
 }

@@ -44,6 +44,9 @@ pub fn document(a: &Analysis) -> Value {
         for (k, v) in &s.angles {
             syn.insert(k.clone(), num(*v));
         }
+        // the synthesis' own givens (θ_к or θ_н, Y_D when given), SI and rad
+        let given: Map<String, Value> = s.given.iter().map(|(k, v)| (k.clone(), num(*v))).collect();
+        syn.insert("given".into(), Value::Object(given));
         if let Some(fp) = &s.free_parameter {
             syn.insert("free_parameter".into(), json!({"name": fp.name, "value": num(fp.value)}));
         }

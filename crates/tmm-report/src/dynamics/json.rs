@@ -97,6 +97,10 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         "reduced_moment": arr(&c.moment, s),
         "driving_moment": num(c.driving_moment),
         "cycle_period": num(d.reducer.period),
+        // T = 2π/ω_m = 60/n1 and the cycle's time Φ/ω_m at the nominal speed, s
+        // (`cycle_time` below is the true motion's ∫dφ/ω)
+        "revolution_time": num(if d.omega_nominal > 0.0 { std::f64::consts::TAU / d.omega_nominal } else { 0.0 }),
+        "cycle_time_nominal": num(if d.omega_nominal > 0.0 { d.reducer.period / d.omega_nominal } else { 0.0 }),
         "load_period": num(d.load_period),
         "work": arr(&c.work_loads, s),
         "work_driving": arr(&c.work_driving, s),

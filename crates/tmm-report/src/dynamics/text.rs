@@ -52,6 +52,17 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
             String::new()
         }
     );
+    // the time of one turn T = 2π/ω_m = 60/n1 and of the machine's cycle
+    // Φ/ω_m (two turns of a four-stroke engine: 2T)
+    if d.omega_nominal > 0.0 {
+        let _ = writeln!(
+            o,
+            "Time of one turn T = 60/n1 = {:.6} s; of the machine's cycle of {:.0}° at the nominal speed {:.6} s",
+            std::f64::consts::TAU / d.omega_nominal,
+            d.reducer.period.to_degrees(),
+            d.reducer.period / d.omega_nominal
+        );
+    }
     let _ = writeln!(
         o,
         "Grid: {} intervals; the work by 3-point Gauss–Legendre; every extremum refined between the nodes.",

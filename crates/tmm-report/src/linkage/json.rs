@@ -50,6 +50,48 @@ fn pair_point<'a>(p: &tmm_linkage::mechanism::Pair, m: &'a tmm_linkage::mechanis
     m.points.get(i).map_or("", |q| q.name.as_str())
 }
 
+/// The geometry as analysed (размеры звеньев): each link's points in its
+/// own frame, the distance between every two of them (its lengths: l_OA,
+/// l_CB, l_CD, l_BD of a three-joint rocker), its centre of mass; the frame's
+/// fixed points and the distance between every two; each slider's guide.
+fn geometry(l: &Loaded) -> Value {
+    let d = &l.def;
+    let pairwise = |pts: &[(String, tmm_geom::Vec2)]| -> Map<String, Value> {
+        let mut m = Map::new();
+        for (i, (a, pa)) in pts.iter().enumerate() {
+            for (b, pb) in &pts[i + 1..] {
+                m.insert(format!("{a}{b}"), num((*pb - *pa).hypot()));
+            }
+        }
+        m
+    };
+    let mut links = Map::new();
+    for k in &d.links {
+        let mut pts = Map::new();
+        for (n, p) in &k.points {
+            pts.insert(n.clone(), json!([num(p.x), num(p.y)]));
+        }
+        links.insert(
+            k.name.clone(),
+            json!({"points": pts, "lengths": pairwise(&k.points),
+                "mass_center": [num(k.mass_center.x), num(k.mass_center.y)]}),
+        );
+    }
+    let mut fixed = Map::new();
+    for (n, p) in &d.fixed {
+        fixed.insert(n.clone(), json!([num(p.x), num(p.y)]));
+    }
+    let sliders: Vec<Value> = d
+        .sliders
+        .iter()
+        .map(|s| {
+            json!({"link": s.slider, "point": s.point, "guide_link": s.guide_link,
+                "through": [num(s.through.x), num(s.through.y)], "angle": num(s.angle)})
+        })
+        .collect();
+    json!({"links": links, "fixed": fixed, "frame_lengths": pairwise(&d.fixed), "sliders": sliders})
+}
+
 /// The whole document.
 pub fn document(l: &Loaded, a: &Analysis) -> Value {
     let m = &l.mech;
@@ -101,7 +143,10 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
             "formula": s.formula, "class": s.class,
             "dof_by_rank": s.dof_rank, "redundant_constraints": s.redundant, "passive_freedoms": s.passive,
         },
-        "input": {"link": m.link_names[m.crank.link], "omega": num(m.crank.omega), "epsilon": num(m.crank.eps)},
+        // the time of one turn of the crank T = 2π/|ω1| = 60/n1 (s)
+        "input": {"link": m.link_names[m.crank.link], "omega": num(m.crank.omega), "epsilon": num(m.crank.eps),
+            "revolution_time": num(if w > 0.0 { std::f64::consts::TAU / w } else { 0.0 })},
+        "geometry": geometry(l),
         "output": {"link": m.link_names[out.link], "kind": match out.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
         "positions": a.rows.iter().map(|r| row_json(l, r)).collect::<Vec<_>>(),
         "pressure_angle_max": pmax,

@@ -38,6 +38,7 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
         );
     }
     let _ = writeln!(o, "  class of the mechanism: {}", tmm_linkage::structure::roman(s.class));
+    geometry(&mut o, l);
     let out = a.reading.output;
     let unit = if out.kind == OutputKind::Linear { "m" } else { "rad" };
     let _ = writeln!(
@@ -188,5 +189,40 @@ fn partial_cycle(o: &mut String, p: &PartialCycle, kind: OutputKind) {
     }
     if let Some(why) = &p.map.reason {
         let _ = writeln!(o, "  at the gaps: {why}");
+    }
+}
+
+/// The geometry as analysed: every link's lengths (the distance between
+/// every two of its points), the frame's, and the crank's speed with the
+/// time of one turn T = 2π/|ω1| = 60/n1.
+fn geometry(o: &mut String, l: &Loaded) {
+    let _ = writeln!(o, "\nGEOMETRY (m)");
+    let pairwise = |pts: &[(String, tmm_geom::Vec2)]| -> Vec<String> {
+        let mut v = Vec::new();
+        for (i, (a, pa)) in pts.iter().enumerate() {
+            for (b, pb) in &pts[i + 1..] {
+                v.push(format!("l_{a}{b} = {:.6}", (*pb - *pa).hypot()));
+            }
+        }
+        v
+    };
+    for k in &l.def.links {
+        let v = pairwise(&k.points);
+        if !v.is_empty() {
+            let _ = writeln!(o, "  link {}: {}", k.name, v.join(", "));
+        }
+    }
+    let v = pairwise(&l.def.fixed);
+    if !v.is_empty() {
+        let _ = writeln!(o, "  frame: {}", v.join(", "));
+    }
+    let w = l.mech.crank.omega.abs();
+    if w > 0.0 {
+        let t = std::f64::consts::TAU / w;
+        let _ = writeln!(
+            o,
+            "  crank: |ω1| = {w:.6} rad/s, n1 = {:.4} rpm, one turn T = 60/n1 = {t:.6} s",
+            60.0 / t
+        );
     }
 }

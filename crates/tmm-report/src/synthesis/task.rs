@@ -836,7 +836,7 @@ pub fn spec(f: &Fields) -> Result<Spec, Error> {
             // П3, p. 130)
             if f.one_of(&["speed", "cutting_speed"], true)? == Some("cutting_speed") {
                 let v = f.need("cutting_speed", Dim::Velocity)?;
-                if !(v > 0.0) {
+                if v.is_nan() || v <= 0.0 {
                     return Err(f.error("cutting_speed", "the cutting speed must be > 0"));
                 }
                 if k.is_finite() && k >= 1.0 && stroke > 0.0 {
