@@ -155,6 +155,7 @@ const NOT_WORDS: &[&str] = &[
     "sin",
     "tan",
     "atan",
+    "arg",
     "mod",
     "exp",
     "ln",
@@ -170,6 +171,8 @@ const NOT_WORDS: &[&str] = &[
     "planetary",
     "cam",
     "cylinder",
+    // the task file's one-word values
+    "shaper",
 ];
 
 /// English words of one or two letters, written in lower case (the rest of

@@ -215,7 +215,7 @@ pub fn synthesize(r: &ShaperRequest) -> Result<Synthesis, SynthesisError> {
         let l_oa = 0.5 * (b0.hypot() - b1.hypot());
         if l_oa <= 0.0 {
             notes.push(format!(
-                "β = {:.6}°: rejected, l_OA = (|OB_н| − |OB_к|)/2 = {} m ≤ 0 (the extreme positions exchanged: the crank would turn the other way)",
+                "β = {:.6}°: rejected, l_OA = (|OB_н| − |OB_к|)/2 = {} m ≤ 0 (the extreme positions are exchanged and the crank would turn the other way)",
                 beta.to_degrees(),
                 show(l_oa)
             ));
