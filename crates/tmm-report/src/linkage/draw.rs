@@ -183,9 +183,13 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         ymin = ymin.min(p.1);
         ymax = ymax.max(p.1);
     }
-    // room for the guides, the labels and the title
-    let margin = 22.0;
-    let top = 16.0;
+    // room for the guides, the labels and the title (less on the note's
+    // page, where a wide margin would cost a whole step of scale)
+    let (margin, top) = if task.sheet == crate::project::SheetFormat::A4 {
+        (12.0, 12.0)
+    } else {
+        (22.0, 16.0)
+    };
     let sx = standard_scale((xmax - xmin).max(1e-6) * 1e3, w - 2.0 * margin);
     let sy = standard_scale((ymax - ymin).max(1e-6) * 1e3, h - 2.0 * margin - top);
     let scale = match (sx, sy) {
@@ -200,6 +204,9 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         (None, None) => crate::paper::Scale { factor: 1.0, text: "1:1" },
     };
     let s = scale.factor * 1e3; // paper mm per metre
+    // the paper no taller than the drawing needs: no empty band above and
+    // below it on the note's page or on the sheet
+    let h = h.min(s * (ymax - ymin) + 2.0 * margin + top);
     let mut c = Canvas::new(w, h);
     let cx = 0.5 * w - s * 0.5 * (xmin + xmax);
     let cy = 0.5 * (h - top) - s * 0.5 * (ymin + ymax);
