@@ -335,8 +335,10 @@ pub fn gost_scale(text: &str) -> Option<tmm_draw::Scale> {
     }
 }
 
-fn f3(v: f64) -> String {
-    format!("{v:.3}")
+/// A coordinate with three decimals, as `{:.3}` writes it (without its
+/// slow exact expansion: [`tmm_draw::fixed::Fixed`]).
+fn f3(v: f64) -> tmm_draw::fixed::Fixed {
+    tmm_draw::fixed::Fixed(v, 3)
 }
 
 fn style_attr(s: &Style) -> String {
@@ -399,7 +401,7 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             );
         }
         Element::Poly { points, style, closed } => {
-            let d: Vec<String> = points.iter().map(|p| format!("{:.3},{:.3}", p.0, p.1)).collect();
+            let d: Vec<String> = points.iter().map(|p| format!("{},{}", f3(p.0), f3(p.1))).collect();
             let tag = if *closed { "polygon" } else { "polyline" };
             let _ = writeln!(
                 s,
@@ -523,19 +525,19 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
                 PathData::Runs(runs) => {
                     for run in runs {
                         for (i, p) in run.iter().enumerate() {
-                            let _ = write!(d, "{}{:.3},{:.3} ", if i == 0 { "M" } else { "L" }, p.0, p.1);
+                            let _ = write!(d, "{}{},{} ", if i == 0 { "M" } else { "L" }, f3(p.0), f3(p.1));
                         }
                     }
                 }
                 PathData::Segments(segs) => {
                     for (a, b) in segs {
-                        let _ = write!(d, "M{:.3},{:.3}", a.0, a.1);
+                        let _ = write!(d, "M{},{}", f3(a.0), f3(a.1));
                         if a.1 == b.1 {
-                            let _ = write!(d, "H{:.3}", b.0);
+                            let _ = write!(d, "H{}", f3(b.0));
                         } else if a.0 == b.0 {
-                            let _ = write!(d, "V{:.3}", b.1);
+                            let _ = write!(d, "V{}", f3(b.1));
                         } else {
-                            let _ = write!(d, "L{:.3},{:.3}", b.0, b.1);
+                            let _ = write!(d, "L{},{}", f3(b.0), f3(b.1));
                         }
                     }
                 }
