@@ -133,45 +133,8 @@ pub fn wordings() -> &'static [Wording] {
 /// Units, function names and symbols written with Latin letters that are
 /// not English words (they read the same in a Russian text).
 const NOT_WORDS: &[&str] = &[
-    "mm",
-    "cm",
-    "dm",
-    "km",
-    "in",
-    "ft",
-    "rad",
-    "deg",
-    "rpm",
-    "min",
-    "max",
-    "kg",
-    "kgf",
-    "Pa",
-    "kPa",
-    "MPa",
-    "bar",
-    "inv",
-    "cos",
-    "sin",
-    "tan",
-    "atan",
-    "arg",
-    "mod",
-    "exp",
-    "ln",
-    "lg",
-    "sqrt",
-    "title",
-    "project",
-    "synthesis",
-    "linkage",
-    "forces",
-    "dynamics",
-    "gear",
-    "planetary",
-    "cam",
-    "cylinder",
-    // the task file's one-word values
+    "mm", "cm", "dm", "km", "in", "ft", "rad", "deg", "rpm", "min", "max", "kg", "kgf", "Pa", "kPa", "MPa", "bar", "inv", "cos", "sin",
+    "tan", "atan", "arg", "mod", "exp", "ln", "lg", "sqrt", // the task file's one-word values
     "shaper",
 ];
 
@@ -189,8 +152,8 @@ const SHORT_WORDS: &[&str] = &[
 /// `equal-sliding`: the wordings write no hyphenated English), a key before
 /// ` = ` is the task file's own, a word of
 /// capitals (`RRR`, `TOML`, `OA`) or with a capital inside (`kPa`, `Kv`) is
-/// a symbol, and so are the units, function names and the task file's
-/// section names of [`NOT_WORDS`]; `e.g.` and `i.e.` are English.
+/// a symbol, and so are the units, function names and one-word values of
+/// [`NOT_WORDS`] and the task file's section names (`tmm_report::task::SECTIONS`); `e.g.` and `i.e.` are English.
 /// The browser test applies the same rule to the Russian and Ukrainian
 /// screens.
 ///
@@ -241,7 +204,7 @@ pub fn has_prose(text: &str) -> bool {
 
 /// Whether one run of ASCII letters is an English word (see [`has_prose`]).
 fn is_word(w: &str) -> bool {
-    if w.is_empty() || !w.chars().all(|c| c.is_ascii_alphabetic()) || NOT_WORDS.contains(&w) {
+    if w.is_empty() || !w.chars().all(|c| c.is_ascii_alphabetic()) || NOT_WORDS.contains(&w) || tmm_report::task::SECTIONS.contains(&w) {
         return false;
     }
     let lower = w.to_ascii_lowercase();
