@@ -71,12 +71,13 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     c.rich_paper(
         (0.5 * w, 12.0),
         &format!(
-            "{} {},   μ_l = {} {},   s_max = {} m,   β = {}°",
+            "{} {},   μ_l = {} {},   s_max = {} {},   β = {}°",
             word(lang, "common.scale"),
             scale.text,
             mu_text(0.001 / scale.factor, lang),
             wd("m_per_mm"),
             num(d.travel(), 3, lang),
+            wd("unit_m"),
             num(a.task.swing.to_degrees(), 2, lang)
         ),
         H_SMALL + 0.5,
@@ -149,6 +150,11 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     for (st, col, txt) in [(&first, BLUE, "s = 0"), (&last, RED, "s = s_max")] {
         c.label_led(xy(st.k.p), txt, H_SMALL, col);
     }
-    c.label_led(xy(a.at.k.p), &format!("s = {} m", num(a.at.s, 3, lang)), H_SMALL, BLACK);
+    c.label_led(
+        xy(a.at.k.p),
+        &format!("s = {} {}", num(a.at.s, 3, lang), wd("unit_m")),
+        H_SMALL,
+        BLACK,
+    );
     c.finish()
 }
