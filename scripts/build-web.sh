@@ -29,14 +29,18 @@ if ! command -v wasm-bindgen >/dev/null || [ "$(wasm-bindgen --version | awk '{p
   rm -f "$log"
 fi
 
-cargo build --release --locked --target wasm32-unknown-unknown -p tmm-web
+# the page's module and its PDF module (the typesetter, loaded only when
+# the PDFs are asked for), in one cargo invocation
+cargo build --release --locked --target wasm32-unknown-unknown -p tmm-web -p tmm-web-pdf
 rm -rf web/dist && mkdir -p web/dist
-wasm-bindgen --target web --no-typescript --out-dir web/dist \
-  "$target_dir/wasm32-unknown-unknown/release/tmm_web.wasm"
-if command -v wasm-opt >/dev/null; then
-  wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int \
-    -o web/dist/tmm_web_bg.wasm.opt web/dist/tmm_web_bg.wasm \
-    && mv web/dist/tmm_web_bg.wasm.opt web/dist/tmm_web_bg.wasm
-fi
-cp web/index.html web/app.js web/style.css web/dist/
+for module in tmm_web tmm_web_pdf; do
+  wasm-bindgen --target web --no-typescript --out-dir web/dist \
+    "$target_dir/wasm32-unknown-unknown/release/$module.wasm"
+  if command -v wasm-opt >/dev/null; then
+    wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int \
+      -o "web/dist/${module}_bg.wasm.opt" "web/dist/${module}_bg.wasm" \
+      && mv "web/dist/${module}_bg.wasm.opt" "web/dist/${module}_bg.wasm"
+  fi
+done
+cp web/index.html web/app.js web/pdf-worker.js web/style.css web/dist/
 echo "web/dist: $(du -sh web/dist | cut -f1); serve with: python3 -m http.server --bind 127.0.0.1 -d web/dist 8000"

@@ -15,6 +15,8 @@ if [ -z "$chromium_bin" ]; then
   apt-get update && apt-get install -y --no-install-recommends chromium
   chromium_bin=$(command -v chromium)
 fi
+# pdfinfo and pdftotext read the PDFs the page typesets
+command -v pdftotext >/dev/null || { apt-get update && apt-get install -y --no-install-recommends poppler-utils; }
 command -v node >/dev/null || { apt-get update && apt-get install -y --no-install-recommends nodejs; }
 node_flags=()
 [ "$(node -p 'process.versions.node.split(".")[0]')" -ge 22 ] || node_flags=(--experimental-websocket)

@@ -619,6 +619,54 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   check("the ZIP holds every file with its folders", z[1].length === nFiles && z[1].includes("linkage/positions.svg") && z[1].includes("report.json"), `${z[0]}: ${z[1].length} files, list ${nFiles}`);
 }
 
+// ---------- the note and the sheets as PDF, typeset in the page ----------
+{
+  // the typesetter is a second module, loaded only when asked for
+  const early = await js("performance.getEntriesByType('resource').map((e) => e.name).filter((n) => /tmm_web_pdf/.test(n)).length");
+  check("the first load does not fetch the PDF module", early === 0, `${early} requests`);
+  const taskText = await js("document.getElementById('editor').value");
+  const t0 = Date.now();
+  await js("(document.getElementById('pdf').click(), true)");
+  const made = await until("/\\d/.test(document.getElementById('pdf-status').textContent) && !document.getElementById('pdf').disabled", 600000);
+  results.figures.pdf_first_ms = Date.now() - t0;
+  const status = await js("document.getElementById('pdf-status').textContent");
+  check("the note and the sheets are typeset in the page", made && !(await js("document.getElementById('pdf-status').classList.contains('bad')")), `${status} (${results.figures.pdf_first_ms} ms with the module's load)`);
+  const pdfNames = await js("[...document.querySelectorAll('#file-list li')].map((li) => li.textContent.replace(/ \\(.*$/, '')).filter((n) => n.endsWith('.pdf'))");
+  const cliPdf = join(editedDir, "out-pdf");
+  writeFileSync(join(editedDir, "pdf-task.toml"), taskText);
+  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], { stdio: "pipe" });
+  const cliPdfs = walk(cliPdf).filter((f) => f.endsWith(".pdf")).sort();
+  check("the page offers the same PDFs as tmm run", JSON.stringify([...pdfNames].sort()) === JSON.stringify(cliPdfs), `page ${pdfNames.join(" ")}; cli ${cliPdfs.join(" ")}`);
+  // the note's text and pages against the command line's (pdftotext, pdfinfo)
+  const n0 = await js("window.__downloads.length");
+  await js(`[...document.querySelectorAll('#file-list li')].find((li) => li.textContent.startsWith("note.pdf ")).querySelector('a').dispatchEvent(new MouseEvent('click', { bubbles: true, cancelable: true })), true`);
+  await until(`window.__downloads.length > ${n0}`);
+  const b64 = await js(`fetch(window.__downloads[${n0}][1]).then((r) => r.arrayBuffer()).then((b) => { let s = ''; const u = new Uint8Array(b); for (let i = 0; i < u.length; i += 32768) s += String.fromCharCode(...u.subarray(i, i + 32768)); return btoa(s); })`);
+  const pagePdf = join(editedDir, "page-note.pdf");
+  writeFileSync(pagePdf, Buffer.from(b64, "base64"));
+  const pages = (f) => Number(/Pages:\s+(\d+)/.exec(execFileSync("pdfinfo", [f]).toString())[1]);
+  const words = (f) => execFileSync("pdftotext", [f, "-"], { maxBuffer: 64 << 20 }).toString().split(/\s+/).filter(Boolean);
+  const [wp, wc] = [words(pagePdf), words(join(cliPdf, "note.pdf"))];
+  let differ = Math.abs(wp.length - wc.length);
+  for (let i = 0; i < Math.min(wp.length, wc.length); i++) if (wp[i] !== wc[i]) differ++;
+  // WebAssembly's libm may round a last printed digit differently: allow 1 word in 1000
+  check("the page's note.pdf reads as the CLI's (pages, words)", pages(pagePdf) === pages(join(cliPdf, "note.pdf")) && differ <= wc.length / 1000, `${pages(pagePdf)} pages, ${wp.length} words, ${differ} differ`);
+  // a second request reuses the loaded module
+  await setText(taskText + "\n# again\n");
+  await sleep(400);
+  const t1 = Date.now();
+  await js("(document.getElementById('pdf').click(), true)");
+  await until("/\\d/.test(document.getElementById('pdf-status').textContent) && !document.getElementById('pdf').disabled", 600000);
+  results.figures.pdf_again_ms = Date.now() - t1;
+  const nZip = await js("document.querySelectorAll('#file-list li').length");
+  const z0 = await js("window.__downloads.length");
+  await js("(document.getElementById('zip').click(), true)");
+  await until(`window.__downloads.length > ${z0}`);
+  const zn = await js(`fetch(window.__downloads[${z0}][1]).then((r) => r.arrayBuffer()).then((b) => { const d = new DataView(b); return d.getUint16(b.byteLength - 22 + 10, true); })`);
+  check("the ZIP then holds the PDFs too", zn === nZip, `${zn} files, list ${nZip}; typeset again in ${results.figures.pdf_again_ms} ms`);
+  await shot("files", "files-pdf");
+}
+
 // ---------- edits are never lost ----------
 {
   // kept in the browser: a page opened without a link restores the task
@@ -670,5 +718,9 @@ results.figures.wasm_bytes = wasm.length;
 results.figures.wasm_gzip_bytes = gzipSync(wasm, { level: 9 }).length;
 results.figures.bundle_gzip_bytes = results.figures.wasm_gzip_bytes + glue.reduce((s, b) => s + gzipSync(b, { level: 9 }).length, 0);
 check("bundle under 3 MB compressed", results.figures.bundle_gzip_bytes < 3e6, `${(results.figures.bundle_gzip_bytes / 1e6).toFixed(2)} MB gzip (wasm ${(wasm.length / 1e6).toFixed(2)} MB raw)`);
+// the PDF module, loaded only when the PDFs are asked for
+const pdfWasm = readFileSync(join(distDir, "tmm_web_pdf_bg.wasm"));
+results.figures.pdf_module_bytes = pdfWasm.length;
+results.figures.pdf_module_gzip_bytes = gzipSync(pdfWasm, { level: 9 }).length + gzipSync(readFileSync(join(distDir, "tmm_web_pdf.js")), { level: 9 }).length;
 console.log(JSON.stringify(results.figures, null, 2));
 finish(0);

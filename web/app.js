@@ -168,6 +168,7 @@ function analyse() {
   const r = JSON.parse(out);
   state.timings.push(t1 - t0);
   state.lists = {};
+  if (state.pdfs && state.pdfs.key !== pdfKey(text)) { state.pdfs = null; $("pdf-status").textContent = ""; }
   state.contour = null;
   state.pick = null;
   state.dirty = new Set(Object.keys(VIEWS));
@@ -377,8 +378,40 @@ function showFiles() {
   const ul = $("file-list"); ul.replaceChildren();
   const add = (label, fn) => { const li = document.createElement("li"); const b = document.createElement("a"); b.href = "#"; b.textContent = label; b.onclick = (e) => { e.preventDefault(); fn(); }; li.append(b); ul.append(li); };
   add(`task.toml (${W("task_file")})`, () => download(state.name, $("editor").value, "text/plain"));
+  for (const f of pdfFiles()) add(`${f.path} (${(f.bytes.length / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), f.bytes, "application/pdf"));
   for (const f of allSections().flatMap(sectionFiles)) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
 }
+// The note and the sheets as PDF, typeset in a worker by the page's second
+// module (tmm_web_pdf: typst and its fonts), loaded on the first click only.
+// The PDFs belong to the task text and language they were made from.
+const pdfKey = (text) => $("lang").value + "\n" + text;
+const pdfFiles = () => (state.pdfs && state.pdfs.key === pdfKey($("editor").value) ? state.pdfs.files : []);
+let pdfWorker = null;
+$("pdf").onclick = () => {
+  if (!state.reply || $("pdf").disabled) return;
+  const text = $("editor").value, key = pdfKey(text), t0 = performance.now();
+  $("pdf").disabled = true;
+  $("pdf-status").classList.remove("bad");
+  $("pdf-status").textContent = W(pdfWorker ? "pdf_typesetting" : "pdf_loading");
+  pdfWorker ??= new Worker("pdf-worker.js", { type: "module" });
+  pdfWorker.onmessage = (e) => {
+    $("pdf").disabled = false;
+    if (e.data.ok) {
+      state.pdfs = { key, files: e.data.files, ms: performance.now() - t0 };
+      $("pdf-status").textContent = W("pdf_done", e.data.files.length, ((performance.now() - t0) / 1000).toFixed(1));
+    } else {
+      $("pdf-status").textContent = W("pdf_failed") + " " + said(e.data.message);
+      $("pdf-status").classList.add("bad");
+    }
+    if (activeView() === "files") showFiles();
+  };
+  pdfWorker.onerror = (e) => {
+    $("pdf").disabled = false;
+    $("pdf-status").textContent = W("pdf_failed") + " " + (e.message || "");
+    $("pdf-status").classList.add("bad");
+  };
+  pdfWorker.postMessage({ name: state.name, text, lang: $("lang").value });
+};
 // A ZIP of every file with its folders (stored, not compressed: the
 // drawings are small and the browser's own deflate stream has no raw
 // CRC-32), made here from the module's bytes.
@@ -409,6 +442,7 @@ function zip(entries) {
 $("zip").onclick = () => {
   if (!state.reply) return;
   const entries = [[state.name.replace(/^.*[\\/]/, ""), new TextEncoder().encode($("editor").value)]];
+  for (const f of pdfFiles()) entries.push([f.path, f.bytes]);
   for (const f of allSections().flatMap(sectionFiles)) entries.push([f.path, tmm.file_bytes(f.path)]);
   download("tmm-" + state.name.replace(/\.toml$/, "").replace(/^.*[\\/]/, "") + ".zip", zip(entries), "application/zip");
 };

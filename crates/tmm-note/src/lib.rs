@@ -25,6 +25,7 @@
 
 pub mod calc;
 pub mod compose;
+pub mod documents;
 pub mod error;
 pub mod escape;
 pub mod markup;

@@ -45,37 +45,24 @@ pub fn progress(line: &str) {
 
 /// A typesetting failure: the note or a sheet could not be produced
 /// (exit code 1, as a failed write: the input was accepted).
-fn typeset_error(what: &str, e: &tmm_note::NoteError) -> Error {
-    Error::Io(format!("cannot typeset {what}: {e}"))
+fn typeset_error(e: &tmm_note::documents::DocumentError) -> Error {
+    Error::Io(e.to_string())
 }
 
 /// The note of `run` as PDF bytes.
 pub fn note_pdf(run: &Run, task: &TaskSource) -> Result<Vec<u8>, Error> {
-    let note = tmm_note::compose(run, task).map_err(|e| typeset_error("the note", &e))?;
-    tmm_note::typeset(&note).map_err(|e| typeset_error("the note", &e))
+    tmm_note::documents::note_pdf(run, task).map_err(|e| typeset_error(&e))
 }
 
-/// The PDF documents of a run: `note.pdf` and `sheets/sheet-N.pdf` for
-/// every `sheets/sheet-N.svg` of the run, with a progress line per stage.
+/// The PDF documents of a run (`note.pdf`, `sheets/sheet-N.pdf`; see
+/// [`tmm_note::documents::pdf_documents`]), with a progress line per stage.
 pub fn pdf_documents(run: &Run, task: &TaskSource) -> Result<Documents, Error> {
-    let mut docs = Documents::new();
-    progress("typesetting the note");
-    docs.add_bytes("note.pdf", note_pdf(run, task)?)?;
-    let sheets: Vec<_> = run
-        .docs
-        .iter()
-        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-        .collect();
-    if !sheets.is_empty() {
-        progress(&format!("typesetting {} sheet(s)", sheets.len()));
-    }
-    for d in sheets {
-        let svg = d.as_text().ok_or_else(|| Error::Io(format!("{} is not text", d.path)))?;
-        let pdf = tmm_note::sheet_pdf(svg).map_err(|e| typeset_error(&d.path, &e))?;
-        let path = format!("{}.pdf", d.path.trim_end_matches(".svg"));
-        docs.add_bytes(path, pdf)?;
-    }
-    Ok(docs)
+    use tmm_note::documents::Stage;
+    tmm_note::documents::pdf_documents(run, task, |stage| match stage {
+        Stage::Note => progress("typesetting the note"),
+        Stage::Sheets(n) => progress(&format!("typesetting {n} sheet(s)")),
+    })
+    .map_err(|e| typeset_error(&e))
 }
 
 /// Run the command.
