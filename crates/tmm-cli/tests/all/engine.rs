@@ -117,3 +117,56 @@ fn a_cycle_of_three_turns_is_refused() {
         "1 turn of the crank (360°) or 2",
     );
 }
+
+#[test]
+fn a_table_for_no_process_is_refused() {
+    let from = "[forces.cylinders.tables.exhaust]\n";
+    let stray = "[forces.cylinders.tables.scavenge]\n";
+    let t = first(&p2(), from, &format!("{stray}travel = [0, 1]\npressure = [0, 0]\n\n{from}"));
+    refused(
+        "stray",
+        &t,
+        "forces.cylinders[0].tables.scavenge",
+        line_of(&t, stray),
+        "the table `scavenge` is for no process of the cylinder",
+    );
+}
+
+#[test]
+fn a_second_cylinder_on_one_piston_is_refused() {
+    // more cylinders (phases) than pistons on their cranks
+    let t = first(&p2(), "link = \"5\"\nbore", "link = \"3\"\nbore");
+    let at = t.match_indices("[[forces.cylinders]]").nth(1).unwrap().0;
+    let line = t[..at].matches('\n').count() + 2;
+    refused(
+        "piston",
+        &t,
+        "forces.cylinders[1].link",
+        line,
+        "the piston `3` already has its cylinder (forces.cylinders[0])",
+    );
+}
+
+#[test]
+fn a_pressure_that_is_not_a_number_is_refused() {
+    let t = first(&p2(), "pressure = [0.08, 0.08, 0.05]", "pressure = [0.08, nan, 0.05]");
+    refused(
+        "nan",
+        &t,
+        "forces.cylinders[0].tables.exhaust.pressure[1]",
+        line_of(&t, "pressure = [0.08, nan, 0.05]"),
+        "must be finite, not NaN",
+    );
+}
+
+#[test]
+fn a_shift_outside_the_cycle_is_refused() {
+    let t = first(&p2(), "shift = \"360 deg\"", "shift = \"720 deg\"");
+    refused(
+        "shift",
+        &t,
+        "forces.cylinders[1].shift",
+        line_of(&t, "shift = \"720 deg\""),
+        "the shift must be in [0°, 720°)",
+    );
+}

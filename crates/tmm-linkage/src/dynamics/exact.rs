@@ -10,9 +10,16 @@
 //! The points move with (I_I, T₀): the iteration finds them anew on the
 //! motion ω(φ) itself until nothing changes. When I_I is given (the flywheel
 //! is not needed), only T₀ is found, for the mean speed ω_m.
+//!
+//! The points a, b are searched over the period of the summed loads
+//! ([`super::load_period`]): where M_c and I_II repeat within the cycle, ΔT
+//! and ω(φ) repeat with them (the work over each period is the same, so the
+//! constant moment makes ΔT zero at each period's end), and the extremes of
+//! ω over the first period are those over the cycle. The time integration
+//! over the whole cycle checks it (docs/dynamics.md).
 
 use super::error::DynamicsError;
-use super::extremum::{maximize, minimize};
+use super::extremum::{intervals_in, maximize, minimize};
 use super::reduced::Reducer;
 use super::reduction::{EnergyPoint, ReducedCycle};
 use crate::Solution;
@@ -24,9 +31,9 @@ pub struct Steady {
     pub inertia: f64,
     /// The kinetic energy at the start of the cycle T₀, J.
     pub energy_start: f64,
-    /// Cycle angle of ω_max, rad.
+    /// Cycle angle of ω_max (within the span searched), rad.
     pub phi_max: f64,
-    /// Cycle angle of ω_min, rad.
+    /// Cycle angle of ω_min (within the span searched), rad.
     pub phi_min: f64,
     /// ω_max, rad/s.
     pub omega_max: f64,
@@ -52,7 +59,9 @@ fn omega2(p: &EnergyPoint, inertia: f64, t0: f64) -> f64 {
 }
 
 /// Solve the steady motion for mean speed `omega_m` (rad/s), starting from
-/// the constant inertia `guess` (Mertsalov's, say).
+/// the constant inertia `guess` (Mertsalov's, say), its extreme speeds
+/// searched over the first `span` radians of the cycle (the period of the
+/// summed loads; the cycle's length for all of it).
 pub fn steady(
     red: &Reducer,
     cyc: &ReducedCycle,
@@ -60,25 +69,28 @@ pub fn steady(
     omega_m: f64,
     target: Target,
     guess: f64,
+    span: f64,
 ) -> Result<Steady, DynamicsError> {
     let mut ii = match target {
         Target::Delta(_) => guess,
         Target::Inertia(i) => i,
     };
-    let imin = cyc.inertia.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+    let m = intervals_in(cyc, span);
+    let (inertia, energy) = (&cyc.inertia[..=m], &cyc.energy[..=m]);
+    let imin = inertia.iter().fold(f64::INFINITY, |a, &b| a.min(b));
     if ii + imin <= 0.0 {
-        ii = 1e-9 * (1.0 + cyc.inertia.iter().fold(0.0f64, |a, &b| a.max(b))) - imin;
+        ii = 1e-9 * (1.0 + inertia.iter().fold(0.0f64, |a, &b| a.max(b))) - imin;
     }
     let km = 0.5 * omega_m * omega_m;
-    let emax = cyc.energy.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b));
-    let emin = cyc.energy.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+    let emax = energy.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b));
+    let emin = energy.iter().fold(f64::INFINITY, |a, &b| a.min(b));
     // any start energy that keeps T > 0 over the cycle
     let mut t0 = (km * (ii + imin) - emin).max(emax - emin + 1e-9 * emax.abs().max(1.0));
     for it in 1..=100 {
         let g = |e: f64, i: f64| (t0 + e) / (ii + i);
         let dg = |p: &EnergyPoint| p.moment * (ii + p.reduced.inertia) - (t0 + p.energy) * p.reduced.inertia_derivative;
-        let (a, _) = maximize(red, cyc, sol, g, dg)?;
-        let (b, _) = minimize(red, cyc, sol, g, dg)?;
+        let (a, _) = maximize(red, cyc, sol, span, g, dg)?;
+        let (b, _) = minimize(red, cyc, sol, span, g, dg)?;
         let (ni, nt) = match target {
             Target::Delta(delta) => {
                 let wmax = omega_m * (1.0 + 0.5 * delta);

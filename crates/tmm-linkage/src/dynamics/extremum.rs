@@ -6,22 +6,41 @@
 //! derivative g′ = ∂g/∂ΔT·(M_d + M_c) + ∂g/∂I·I_II′ by Brent's method. A
 //! maximum at a kink (a load law that jumps at a dead position) is the
 //! node itself or the jump, which Brent's method finds as the sign change.
+//!
+//! The search walks the first `span` radians of the cycle: the whole cycle,
+//! or the period of the summed loads ([`super::load_period`]) where they
+//! repeat within it — then g repeats too, and its extremes over the first
+//! period are those over the cycle.
 
 use super::error::DynamicsError;
 use super::reduced::Reducer;
 use super::reduction::{EnergyPoint, ReducedCycle};
 use crate::Solution;
 
-/// Largest value over the cycle of `g(ΔT, I_II)` whose derivative along the
-/// cycle is `dg(point)`. Returns the point where it is reached and the value.
+/// The number of grid intervals in the first `span` radians of the cycle
+/// (1…all of them): the nodes the extremes are searched on.
+pub fn intervals_in(cyc: &ReducedCycle, span: f64) -> usize {
+    let n = cyc.len();
+    if span.is_finite() && span > 0.0 {
+        ((span / cyc.step).round() as usize).clamp(1, n)
+    } else {
+        n
+    }
+}
+
+/// Largest value over the first `span` radians of the cycle (see the
+/// module's header) of `g(ΔT, I_II)` whose derivative along the cycle is
+/// `dg(point)`. Returns the point where it is reached, its angle within
+/// 0…span, and the value.
 pub fn maximize(
     red: &Reducer,
     cyc: &ReducedCycle,
     sol: &mut Solution,
+    span: f64,
     g: impl Fn(f64, f64) -> f64,
     dg: impl Fn(&EnergyPoint) -> f64,
 ) -> Result<(EnergyPoint, f64), DynamicsError> {
-    let n = cyc.len();
+    let n = intervals_in(cyc, span);
     let mut j = 0;
     let mut best = f64::NEG_INFINITY;
     for k in 0..n {
@@ -70,19 +89,20 @@ pub fn maximize(
             what: "an extremum over the cycle".into(),
         });
     }
-    // report the angle in 0…period
-    out.0.phi = out.0.phi.rem_euclid(red.period);
+    // report the angle in 0…span (the node n is the node 0 of the next period)
+    out.0.phi = out.0.phi.rem_euclid(cyc.step * n as f64);
     Ok(out)
 }
 
-/// Smallest value of `g` (the largest of −g).
+/// Smallest value of `g` over the first `span` radians (the largest of −g).
 pub fn minimize(
     red: &Reducer,
     cyc: &ReducedCycle,
     sol: &mut Solution,
+    span: f64,
     g: impl Fn(f64, f64) -> f64,
     dg: impl Fn(&EnergyPoint) -> f64,
 ) -> Result<(EnergyPoint, f64), DynamicsError> {
-    let (p, v) = maximize(red, cyc, sol, |e, i| -g(e, i), |p| -dg(p))?;
+    let (p, v) = maximize(red, cyc, sol, span, |e, i| -g(e, i), |p| -dg(p))?;
     Ok((p, -v))
 }

@@ -156,7 +156,10 @@ pub struct Dynamics {
     /// The least period of the summed loads M_c and of I_II within the
     /// machine's cycle, rad ([`load_period`]): the cycle itself, or a part
     /// of it (one turn of П2's opposed engine, whose cylinders' cycles are
-    /// two turns), over which the flywheel is the same.
+    /// two turns), over which the flywheel is the same. Mertsalov's,
+    /// Wittenbauer's and the exact method search their extremes over
+    /// 0…load_period and give their angles there; the motion, the positions
+    /// and the time integration cover the whole cycle.
     pub load_period: f64,
     /// The constant inertia already on the crank shaft.
     pub inertia_given: GivenInertia,
@@ -211,21 +214,16 @@ impl Dynamics {
         };
         let delta = spec.delta;
         let (wmax, wmin) = (omega_m * (1.0 + 0.5 * delta), omega_m * (1.0 - 0.5 * delta));
-        let mut mertsalov = mertsalov::mertsalov(&red, &cycle, &mut sol, omega_m, delta)?;
-        let mut wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin)?;
-        let mut exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), mertsalov.inertia)?;
-        // where the summed loads repeat within the cycle, so do the extremes:
-        // each is given at its first angle, within 0…load_period, as the
-        // book gives П2's (Φ_A in 140°…180°, Φ_B in 0°…30°)
-        if load_period < red.period {
-            let first = |phi: &mut f64| *phi = phi.rem_euclid(load_period);
-            first(&mut mertsalov.phi_max);
-            first(&mut mertsalov.phi_min);
-            first(&mut wittenbauer.upper.phi);
-            first(&mut wittenbauer.lower.phi);
-            first(&mut exact.phi_max);
-            first(&mut exact.phi_min);
-        }
+        // each method walks the period of the summed loads, as the book
+        // does (П2: 0…2π of the 4π cycle): where the loads repeat within the
+        // cycle so do ΔT, T_I, the energy–mass curve and ω(φ), and the
+        // extremes over the first period are those over the cycle; each is
+        // given at its first angle, within 0…load_period (П2's Φ_A in
+        // 140°…180°, Φ_B in 0°…30°)
+        let span = load_period;
+        let mertsalov = mertsalov::mertsalov(&red, &cycle, &mut sol, omega_m, delta, span)?;
+        let wittenbauer = wittenbauer::wittenbauer(&red, &cycle, &mut sol, wmax, wmin, span)?;
+        let exact = exact::steady(&red, &cycle, &mut sol, omega_m, Target::Delta(delta), mertsalov.inertia, span)?;
         let required = RequiredInertia {
             mertsalov: mertsalov.inertia,
             wittenbauer: wittenbauer.inertia,
@@ -248,7 +246,7 @@ impl Dynamics {
         let st = if fw_crank > 0.0 {
             exact
         } else {
-            exact::steady(&red, &cycle, &mut sol, omega_m, Target::Inertia(given.total), given.total)?
+            exact::steady(&red, &cycle, &mut sol, omega_m, Target::Inertia(given.total), given.total, span)?
         };
         let motion = Motion::new(&cycle, st.inertia, st.energy_start, st.omega_max, st.omega_min)?;
         let n = cycle.len();

@@ -10,6 +10,11 @@
 //! the energy–mass diagram).
 //! Done exactly (the supporting lines touch the exact curve), this is the
 //! exact steady motion, not an approximation.
+//!
+//! The lines are found over the period of the summed loads
+//! ([`super::load_period`]): where M_c and I_II repeat within the cycle the
+//! curve retraces itself, and its supporting lines over the first period
+//! are those over the cycle.
 
 use super::error::DynamicsError;
 use super::extremum::{maximize, minimize};
@@ -45,13 +50,16 @@ pub struct Wittenbauer {
     pub energy_start: f64,
 }
 
-/// Wittenbauer's construction for ω_max and ω_min (rad/s).
+/// Wittenbauer's construction for ω_max and ω_min (rad/s) over the first
+/// `span` radians of the cycle (the period of the summed loads; the cycle's
+/// length for all of it).
 pub fn wittenbauer(
     red: &Reducer,
     cyc: &ReducedCycle,
     sol: &mut Solution,
     omega_max: f64,
     omega_min: f64,
+    span: f64,
 ) -> Result<Wittenbauer, DynamicsError> {
     let (kmax, kmin) = (0.5 * omega_max * omega_max, 0.5 * omega_min * omega_min);
     let tangent = |p: EnergyPoint, slope: f64, b: f64| Tangent {
@@ -65,6 +73,7 @@ pub fn wittenbauer(
         red,
         cyc,
         sol,
+        span,
         |e, i| e - kmax * i,
         |p| p.moment - kmax * p.reduced.inertia_derivative,
     )?;
@@ -72,6 +81,7 @@ pub fn wittenbauer(
         red,
         cyc,
         sol,
+        span,
         |e, i| e - kmin * i,
         |p| p.moment - kmin * p.reduced.inertia_derivative,
     )?;

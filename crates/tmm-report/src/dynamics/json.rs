@@ -102,6 +102,10 @@ pub fn document(l: &Loaded, d: &Dynamics) -> Value {
         "revolution_time": num(if d.omega_nominal > 0.0 { std::f64::consts::TAU / d.omega_nominal } else { 0.0 }),
         "cycle_time_nominal": num(if d.omega_nominal > 0.0 { d.reducer.period / d.omega_nominal } else { 0.0 }),
         "load_period": num(d.load_period),
+        // the part of the cycle from its start over which Mertsalov's,
+        // Wittenbauer's and the exact method searched their extremes: the
+        // period of the summed loads (their angles are given within it)
+        "flywheel_span": num(d.load_period),
         "work": arr(&c.work_loads, s),
         "work_driving": arr(&c.work_driving, s),
         "kinetic_energy_change": arr(&c.energy, s),

@@ -71,14 +71,21 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
     if d.load_period < d.reducer.period {
         let _ = writeln!(
             o,
-            "The summed loads repeat every {:.0}° of the {:.0}° cycle (M_c and I_II at φ and φ + {:.0}° agree to {:e} at every node), though each cylinder's cycle is {:.0}°: the flywheel over 0…{:.0}° is the one over the whole cycle, as the book restricts its analysis; the extremes below are given within 0…{:.0}°.",
+            "The summed loads repeat every {:.0}° of the {:.0}° cycle (M_c and I_II at φ and φ + {:.0}° agree to {:e} at every node), though each cylinder's cycle is {:.0}°: Mertsalov's, Wittenbauer's and the exact flywheel are found over 0…{:.0}°, as the book restricts its analysis, and are the ones over the whole cycle (the time integration below runs over the whole {:.0}° with this flywheel); the extremes below are given within 0…{:.0}°.",
             d.load_period.to_degrees(),
             d.reducer.period.to_degrees(),
             d.load_period.to_degrees(),
             tmm_linkage::dynamics::load_period::TOLERANCE,
             d.reducer.period.to_degrees(),
             d.load_period.to_degrees(),
+            d.reducer.period.to_degrees(),
             d.load_period.to_degrees()
+        );
+    } else if d.reducer.period > std::f64::consts::TAU * (1.0 + 1e-9) {
+        let _ = writeln!(
+            o,
+            "The summed loads repeat only over the whole {:.0}° cycle: Mertsalov's, Wittenbauer's and the exact flywheel walk all of it.",
+            d.reducer.period.to_degrees()
         );
     }
     let _ = writeln!(o, "\nThe 12 positions (ω₁, ε₁ in the direction of rotation, with the flywheel):");
@@ -238,8 +245,11 @@ pub fn report(l: &Loaded, d: &Dynamics) -> String {
     );
     let _ = writeln!(
         o,
-        "  cycle time {:.7} s; by time integration (Dormand–Prince 5(4)): {:.7} s, δ = {:.8}",
-        mo.cycle_time, d.simulated.period, d.simulated.delta
+        "  cycle time {:.7} s; by time integration (Dormand–Prince 5(4)) over the whole {:.0}° cycle: {:.7} s, δ = {:.8}",
+        mo.cycle_time,
+        d.reducer.period.to_degrees(),
+        d.simulated.period,
+        d.simulated.delta
     );
     match (&d.runup, sp.driving) {
         (Some(r), DrivingMoment::Motor(m)) => {

@@ -204,8 +204,16 @@ fn travel_unit(task: &TaskSource, field: &str, s: Option<&S<String>>) -> Result<
     }
 }
 
-/// Points of a table: equal lengths, at least two.
-fn points(task: &TaskSource, field: &str, x: &S<Vec<f64>>, y: &S<Vec<f64>>, xs: f64, ys: f64) -> Result<Vec<(f64, f64)>, Error> {
+/// Points of a table: equal lengths, finite numbers (`xname`, `yname`:
+/// the arrays' keys, for the messages).
+fn points(
+    task: &TaskSource,
+    field: &str,
+    (xname, x): (&str, &S<Vec<f64>>),
+    (yname, y): (&str, &S<Vec<f64>>),
+    xs: f64,
+    ys: f64,
+) -> Result<Vec<(f64, f64)>, Error> {
     if x.get_ref().len() != y.get_ref().len() {
         return Err(Error::at(
             task,
@@ -217,6 +225,16 @@ fn points(task: &TaskSource, field: &str, x: &S<Vec<f64>>, y: &S<Vec<f64>>, xs: 
                 y.get_ref().len()
             ),
         ));
+    }
+    for (name, v) in [(xname, x), (yname, y)] {
+        if let Some(i) = v.get_ref().iter().position(|a| !a.is_finite()) {
+            return Err(Error::at(
+                task,
+                v.span(),
+                &format!("{field}.{name}[{i}]"),
+                format!("each number of the table must be finite, not {}", v.get_ref()[i]),
+            ));
+        }
     }
     Ok(x.get_ref().iter().zip(y.get_ref()).map(|(a, b)| (a * xs, b * ys)).collect())
 }
@@ -270,6 +288,22 @@ pub(crate) fn read(
         spans.insert(key.clone(), cs.span());
         let c = cs.get_ref();
         let link = slider_link(task, m, &format!("{field}.link"), &c.link)?;
+        // one cylinder per piston: the cylinders' phases are their pistons'
+        // cranks and shifts, so a second cylinder needs its own piston
+        if let Some(j) = cylinders[..k].iter().position(|o| o.get_ref().link.get_ref() == c.link.get_ref()) {
+            return Err(Error::at(
+                task,
+                c.link.span(),
+                &format!("{field}.link"),
+                format!(
+                    "the piston `{}` already has its cylinder (forces.cylinders[{j}]); a piston has one cylinder",
+                    c.link.get_ref()
+                ),
+            )
+            .with_help(
+                "give each cylinder its own piston: a connecting rod and a slider in [linkage] on its crank (П2: rods 2 and 4 on cranks at 180°, pistons 3 and 5), and its phase by shift",
+            ));
+        }
         spans.insert(format!("{key}.link"), c.link.span());
         spans.insert(format!("{key}.bore"), c.bore.span());
         let bore = qty(task, &format!("{field}.bore"), &c.bore, Dim::Length)?;
@@ -332,7 +366,7 @@ pub(crate) fn read(
                 t.interpolation.as_ref(),
                 Interpolation::Linear,
             )?;
-            let pts = points(task, &tf, &t.travel, &t.pressure, xs, 1.0)?;
+            let pts = points(task, &tf, ("travel", &t.travel), ("pressure", &t.pressure), xs, 1.0)?;
             let curve = Curve::new(&pts, ip, "t").map_err(|e| table_error(task, t.travel.span(), &format!("{tf}.travel"), e))?;
             names.push(name.clone());
             tables.push(curve);
@@ -426,6 +460,22 @@ pub(crate) fn read(
                 push(0.0, b - period);
             }
         }
+        // a table no process names is a misspelt process or a stray table
+        if let Some((name, ts)) = c.tables.get_ref().iter().find(|(name, _)| !procs.contains(name)) {
+            return Err(Error::at(
+                task,
+                ts.span(),
+                &format!("{field}.tables.{name}"),
+                format!(
+                    "the table `{name}` is for no process of the cylinder; its processes are {}",
+                    procs.join(", ")
+                ),
+            )
+            .with_help(format!(
+                "name each table after a process of processes = [{}], or add `{name}` to processes",
+                procs.iter().map(|p| format!("\"{p}\"")).collect::<Vec<_>>().join(", ")
+            )));
+        }
         processes.sort_by(|p, q| p.from.total_cmp(&q.from));
         if let Some(p) = processes.first_mut() {
             p.from = 0.0;
@@ -493,7 +543,7 @@ pub(crate) fn read(
             s.interpolation.as_ref(),
             Interpolation::Linear,
         )?;
-        let pts = points(task, &format!("{field}.force"), &s.travel, &s.force, xs, 1.0)?;
+        let pts = points(task, &field, ("travel", &s.travel), ("force", &s.force), xs, 1.0)?;
         let table = Curve::new(&pts, ip, "t").map_err(|e| table_error(task, s.travel.span(), &format!("{field}.travel"), e))?;
         sliders.push(SliderLoad {
             link,
