@@ -65,6 +65,27 @@ pub enum LinkageError {
         /// Why (`|BD| = 0.91 m > BC + CD = 0.86 m`).
         reason: String,
     },
+    /// A group cannot be assembled at a travel of the input slider.
+    #[error("cannot be assembled at s = {s_mm:.4} mm: group {group}: {reason}")]
+    AssemblyAtTravel {
+        /// The slider's travel, mm.
+        s_mm: f64,
+        /// The group (`II(2,3) RRR`).
+        group: String,
+        /// Why.
+        reason: String,
+    },
+    /// The velocity equations of a group are singular at a travel of the
+    /// input slider (a dead centre of the group).
+    #[error("no finite velocities at s = {s_mm:.6} mm: group {group}: {reason}")]
+    SingularAtTravel {
+        /// The slider's travel, mm.
+        s_mm: f64,
+        /// The group.
+        group: String,
+        /// Why.
+        reason: String,
+    },
     /// The mechanism cannot be assembled over whole ranges of the crank angle.
     #[error("cannot be assembled for crank angles {ranges}: {reason}")]
     AssemblyRanges {

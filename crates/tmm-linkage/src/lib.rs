@@ -39,7 +39,7 @@ pub mod synthesis;
 pub mod whole;
 
 pub use error::LinkageError;
-pub use mechanism::{MAX_COUPLED, Mechanism, Solution};
-pub use model::{AssemblyHint, FRAME, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
+pub use mechanism::{MAX_COUPLED, Mechanism, SliderDrive, Solution};
+pub use model::{AssemblyHint, FRAME, HintKind, InputDef, LinkDef, MechanismDef, SliderDef, SliderInputDef};
 pub use state::{LinkState, PointState};
 pub use structure::Structure;

@@ -112,6 +112,36 @@ pub fn speed(omega: f64, eps: f64) -> Result<(), LinkageError> {
     Ok(())
 }
 
+/// The slowest driving slider accepted, m/s.
+pub const MIN_SLIDER_SPEED: f64 = 1e-9;
+/// The fastest driving slider accepted, m/s.
+pub const MAX_SLIDER_SPEED: f64 = 1e4;
+/// The largest acceleration of a driving slider accepted, m/s².
+pub const MAX_SLIDER_ACCELERATION: f64 = 1e9;
+
+/// The speed v (m/s, signed) and acceleration a (m/s²) of a driving slider.
+///
+/// ```
+/// use tmm_linkage::limits::slider_speed;
+/// assert!(slider_speed(0.5, 0.0).is_ok());
+/// assert!(slider_speed(0.0, 0.0).is_err());
+/// assert!(slider_speed(0.5, f64::NAN).is_err());
+/// ```
+pub fn slider_speed(v: f64, a: f64) -> Result<(), LinkageError> {
+    if !(v.is_finite() && v.abs() >= MIN_SLIDER_SPEED && v.abs() <= MAX_SLIDER_SPEED) {
+        return Err(range(
+            "input.speed",
+            format!("{v:e} m/s"),
+            "1e-9 m/s ≤ |v| ≤ 1e4 m/s",
+            ", in either direction along the guide; the driving slider must move",
+        ));
+    }
+    if !(a.is_finite() && a.abs() <= MAX_SLIDER_ACCELERATION) {
+        return Err(range("input.acceleration", format!("{a:e} m/s²"), "|a| ≤ 1e9 m/s²", ""));
+    }
+    Ok(())
+}
+
 /// A link length `len` against the mechanism's size `size`, m.
 pub fn link_length(field: &str, len: f64, size: f64) -> Result<(), LinkageError> {
     if len >= MIN_RELATIVE_LENGTH * size && len > 0.0 {

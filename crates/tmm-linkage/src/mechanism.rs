@@ -108,6 +108,137 @@ pub struct Crank {
     pub pivot_point: usize,
 }
 
+/// The input slider (ведущий ползун) on a guide fixed to the frame, driven
+/// along it: at travel s its point P is at `Q + s·d` with velocity `v·d`
+/// and acceleration `a·d`, and it does not turn (its orientation is the
+/// guide's, `u = rel`, ω = ε = 0). Derived in docs/linkage.md, "A slider as
+/// the input".
+#[derive(Debug, Clone, PartialEq)]
+pub struct SliderDrive {
+    /// The slider link.
+    pub link: usize,
+    /// The slider's point index (P).
+    pub point: usize,
+    /// The index of its prismatic pair with the frame.
+    pub pair: usize,
+    /// The guide's point Q (global), m: s = 0 there.
+    pub through: Vec2,
+    /// The guide's unit direction d (global).
+    pub dir: Vec2,
+    /// P on the slider, local.
+    pub ps: Vec2,
+    /// The slider's orientation (constant).
+    pub u: Vec2,
+    /// v = ds/dt, m/s (signed).
+    pub speed: f64,
+    /// a = d²s/dt², m/s².
+    pub accel: f64,
+}
+
+impl SliderDrive {
+    /// The drive of link `cl` described by `si`: its prismatic pair must
+    /// have the frame as the guide.
+    fn new(cl: usize, names: &[String], pairs: &[Pair], si: &crate::model::SliderInputDef) -> Result<Self, LinkageError> {
+        let mut found = None;
+        for (k, p) in pairs.iter().enumerate() {
+            if let Pair::P { slider, guide, .. } = *p {
+                if slider == cl {
+                    if guide == 0 {
+                        found = Some(k);
+                        break;
+                    }
+                    found = found.or(Some(k));
+                }
+            }
+        }
+        let Some(k) = found else {
+            return Err(de(
+                "input.slider",
+                format!(
+                    "`{}` slides on no guide: a driving slider needs its prismatic pair with the frame (a `sliders` entry with guide.link = \"frame\")",
+                    si.link
+                ),
+            ));
+        };
+        let Pair::P {
+            guide,
+            ps,
+            q,
+            d,
+            rel,
+            point,
+            ..
+        } = pairs[k]
+        else {
+            unreachable!("a prismatic pair was found")
+        };
+        if guide != 0 {
+            return Err(de(
+                "input.slider",
+                format!(
+                    "the guide of `{}` is on the moving link `{}`; a driving slider moves on a guide fixed to the frame (guide.link = \"frame\")",
+                    si.link, names[guide]
+                ),
+            ));
+        }
+        limits::slider_speed(si.speed, si.acceleration)?;
+        Ok(SliderDrive {
+            link: cl,
+            point,
+            pair: k,
+            through: q,
+            dir: d,
+            ps,
+            u: rel,
+            speed: si.speed,
+            accel: si.acceleration,
+        })
+    }
+
+    /// The slider's state at travel `s`, m.
+    ///
+    /// ```
+    /// # use tmm_linkage::*; use tmm_geom::Vec2;
+    /// // an inverted slider-crank: slider B on the x-axis, coupler BC, rocker DC
+    /// let def = MechanismDef {
+    ///     fixed: vec![("D".into(), Vec2::new(0.1, 0.2))],
+    ///     links: vec![LinkDef::block("1", "B"), LinkDef::bar("2", "B", "C", 0.25), LinkDef::bar("3", "D", "C", 0.12)],
+    ///     sliders: vec![SliderDef { slider: "1".into(), point: "B".into(), guide_link: FRAME.into(),
+    ///         through: Vec2::ZERO, angle: 0.0, angle_on_slider: 0.0 }],
+    ///     slider_input: Some(SliderInputDef::new("1", 0.5)),
+    ///     assembly_angle: 0.05,
+    ///     ..Default::default()
+    /// };
+    /// let m = Mechanism::new(&def).unwrap();
+    /// let d = m.drive.as_ref().unwrap();
+    /// let st = d.state(0.04);
+    /// assert_eq!((st.o, st.v, st.omega), (Vec2::new(0.04, 0.0), Vec2::new(0.5, 0.0), 0.0));
+    /// ```
+    #[inline(always)]
+    pub fn state(&self, s: f64) -> LinkState {
+        let p = PointState {
+            p: self.through + self.dir * s,
+            v: self.dir * self.speed,
+            a: self.dir * self.accel,
+        };
+        LinkState::from_point(&p, self.ps, self.u, 0.0, 0.0)
+    }
+
+    /// The travel s of a solved position, m.
+    pub fn travel(&self, sol: &Solution) -> f64 {
+        (sol.points[self.point].p - self.through).dot(self.dir)
+    }
+}
+
+/// The row that holds the input in the rank count: the crank's rotation,
+/// or the slider's displacement along its guide.
+fn held_row(drive: &Option<SliderDrive>) -> [f64; 3] {
+    match drive {
+        Some(d) => [d.dir.x, d.dir.y, 0.0],
+        None => [0.0, 0.0, 1.0],
+    }
+}
+
 #[derive(Debug, Clone, PartialEq)]
 enum Solver {
     Dyad(DyadGeom),
@@ -151,8 +282,13 @@ pub struct Mechanism {
     pub points: Vec<NamedPoint>,
     /// All pairs.
     pub pairs: Vec<Pair>,
-    /// The crank.
+    /// The crank; for a slider input ([`Mechanism::drive`]) its fields say
+    /// of the slider: `link` the slider, `pivot` the guide's point Q,
+    /// `pin` and `pivot_point` the slider's point, `radius` 0, `omega` the
+    /// speed v (m/s) and `eps` the acceleration (m/s²).
     pub crank: Crank,
+    /// The input slider on a fixed guide, when the input is not a crank.
+    pub drive: Option<SliderDrive>,
     /// Assur groups in solving order.
     pub groups: Vec<Group>,
     /// Structure (W, groups, formula, class).
@@ -362,53 +498,88 @@ impl Mechanism {
                 point: pidx[&s.point],
             });
         }
-        // --- input crank
-        let inp = def
-            .input
-            .as_ref()
-            .ok_or_else(|| de("input", "the mechanism needs an input crank (input.link)"))?;
-        let cl = *index
-            .get(inp.link.as_str())
-            .ok_or_else(|| de("input.link", format!("unknown link `{}`", inp.link)))?;
-        if cl == 0 {
-            return Err(de("input.link", "the input must be a moving link"));
-        }
-        let cdef = &def.links[cl - 1];
-        let pivot_local = cdef
-            .point(&inp.pivot)
-            .ok_or_else(|| de("input.pivot", format!("`{}` is not a point of the crank `{}`", inp.pivot, inp.link)))?;
-        let pin_local = cdef
-            .point(&inp.pin)
-            .ok_or_else(|| de("input.pin", format!("`{}` is not a point of the crank `{}`", inp.pin, inp.link)))?;
-        let pivot = def
-            .fixed
-            .iter()
-            .find(|(n, _)| *n == inp.pivot)
-            .map(|(_, p)| *p)
-            .ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
-        let radius = (pin_local - pivot_local).hypot();
-        limits::speed(inp.omega, inp.epsilon)?;
+        // --- the input: a crank, or a slider on a fixed guide
+        let (crank, drive, radius) = match (&def.input, &def.slider_input) {
+            (Some(_), Some(_)) => {
+                return Err(de(
+                    "input",
+                    "give the input as a crank (input.link) or as a slider (input.slider), not both",
+                ));
+            }
+            (None, None) => {
+                return Err(de(
+                    "input",
+                    "the mechanism needs an input crank (input.link) or an input slider (input.slider)",
+                ));
+            }
+            (Some(inp), None) => {
+                let cl = *index
+                    .get(inp.link.as_str())
+                    .ok_or_else(|| de("input.link", format!("unknown link `{}`", inp.link)))?;
+                if cl == 0 {
+                    return Err(de("input.link", "the input must be a moving link"));
+                }
+                let cdef = &def.links[cl - 1];
+                let pivot_local = cdef
+                    .point(&inp.pivot)
+                    .ok_or_else(|| de("input.pivot", format!("`{}` is not a point of the crank `{}`", inp.pivot, inp.link)))?;
+                let pin_local = cdef
+                    .point(&inp.pin)
+                    .ok_or_else(|| de("input.pin", format!("`{}` is not a point of the crank `{}`", inp.pin, inp.link)))?;
+                let pivot = def
+                    .fixed
+                    .iter()
+                    .find(|(n, _)| *n == inp.pivot)
+                    .map(|(_, p)| *p)
+                    .ok_or_else(|| de("input.pivot", format!("the crank pivot `{}` must be a fixed point", inp.pivot)))?;
+                let radius = (pin_local - pivot_local).hypot();
+                limits::speed(inp.omega, inp.epsilon)?;
+                let crank = Crank {
+                    link: cl,
+                    pivot,
+                    pivot_local,
+                    dir_local: unit(pin_local - pivot_local),
+                    radius,
+                    omega: inp.omega,
+                    eps: inp.epsilon,
+                    pin: pidx[&inp.pin],
+                    pivot_point: pidx[&inp.pivot],
+                };
+                (crank, None, radius)
+            }
+            (None, Some(si)) => {
+                let cl = *index
+                    .get(si.link.as_str())
+                    .filter(|&&l| l != 0)
+                    .ok_or_else(|| de("input.slider", format!("unknown link `{}` (a slider listed in `sliders`)", si.link)))?;
+                let drive = SliderDrive::new(cl, &link_names, &pairs, si)?;
+                let crank = Crank {
+                    link: cl,
+                    pivot: drive.through,
+                    pivot_local: drive.ps,
+                    dir_local: Vec2::new(1.0, 0.0),
+                    radius: 0.0,
+                    omega: si.speed,
+                    eps: si.acceleration,
+                    pin: drive.point,
+                    pivot_point: drive.point,
+                };
+                (crank, Some(drive), 0.0)
+            }
+        };
+        let cl = crank.link;
         limits::angle("assembly_angle", def.assembly_angle)?;
         // the size of the mechanism: the largest extent of a link, of the
         // frame's points and of the guides' points; every tolerance is relative to it
         let size = scale_of(def, radius);
-        limits::link_length("input (crank length)", radius, size)?;
+        if drive.is_none() {
+            limits::link_length("input (crank length)", radius, size)?;
+        }
         for l in &def.links {
             if l.points.len() >= 2 {
                 limits::link_length(&format!("links.{}.length", l.name), (l.points[1].1 - l.points[0].1).hypot(), size)?;
             }
         }
-        let crank = Crank {
-            link: cl,
-            pivot,
-            pivot_local,
-            dir_local: unit(pin_local - pivot_local),
-            radius,
-            omega: inp.omega,
-            eps: inp.epsilon,
-            pin: pidx[&inp.pin],
-            pivot_point: pidx[&inp.pivot],
-        };
         // --- connectivity
         for (l, name) in link_names.iter().enumerate().skip(1) {
             if !pairs.iter().any(|p| {
@@ -469,16 +640,21 @@ impl Mechanism {
                 // count met most often is the mechanism's (a tie goes to the
                 // smaller mobility)
                 let size = scale_of(def, radius);
-                let piv = PointState {
-                    p: pivot,
-                    v: Vec2::ZERO,
-                    a: Vec2::ZERO,
-                };
-                let crank_at = |angle: f64| {
-                    let (sc, cc) = angle.sin_cos();
-                    let u = crate::state::unrotate(Vec2::new(cc, sc), unit(pin_local - pivot_local));
+                let input_at = |q: f64| {
                     let mut st = vec![LinkState::default(); nl];
-                    st[cl] = LinkState::from_point(&piv, pivot_local, u, inp.omega, inp.epsilon);
+                    st[cl] = match &drive {
+                        Some(d) => d.state(q),
+                        None => {
+                            let (sc, cc) = q.sin_cos();
+                            let u = crate::state::unrotate(Vec2::new(cc, sc), crank.dir_local);
+                            let piv = PointState {
+                                p: crank.pivot,
+                                v: Vec2::ZERO,
+                                a: Vec2::ZERO,
+                            };
+                            LinkState::from_point(&piv, crank.pivot_local, u, crank.omega, crank.eps)
+                        }
+                    };
                     st
                 };
                 let near: Vec<(usize, Vec2, Vec2)> = def
@@ -502,12 +678,14 @@ impl Mechanism {
                 let fixed: Vec<Vec2> = def.fixed.iter().map(|(_, p)| *p).collect();
                 let centre = fixed.iter().fold(Vec2::ZERO, |a, b| a + *b) * (1.0 / fixed.len().max(1) as f64);
                 let mut counts: Vec<(crate::whole::RankCount, usize)> = Vec::new();
+                // a slider's travel is shifted by parts of the mechanism's size
+                let unit_shift = if drive.is_some() { 0.05 * size } else { 1.0 };
                 for shift in [0.0, 0.7, 1.9, 3.4, 4.6] {
-                    let st = crank_at(def.assembly_angle + shift);
+                    let st = input_at(def.assembly_angle + shift * unit_shift);
                     let Some(asm) = crate::whole::assemble_all(&pairs, &st, cl, &near, centre, size, 64) else {
                         continue;
                     };
-                    let rc = crate::whole::rank_count(&pairs, nl, cl, &asm, size);
+                    let rc = crate::whole::rank_count(&pairs, nl, cl, held_row(&drive), &asm, size);
                     match counts.iter_mut().find(|(c, _)| *c == rc) {
                         Some((_, k)) => *k += 1,
                         None => counts.push((rc, 1)),
@@ -526,8 +704,9 @@ impl Mechanism {
                         redundant: rc.redundant,
                         passive: rc.passive,
                         detail: format!(
-                            "the Assur groups on the crank `{}` leave {} over, whose pairs repeat constraints the groups already impose{lone_text}",
-                            inp.link,
+                            "the Assur groups on the {} `{}` leave {} over, whose pairs repeat constraints the groups already impose{lone_text}",
+                            if drive.is_some() { "input slider" } else { "crank" },
+                            link_names[cl],
                             left.iter()
                                 .map(|&l| {
                                     let joints: Vec<&str> = def.links[l - 1]
@@ -551,9 +730,10 @@ impl Mechanism {
                         detail: format!("; links {} do not form Assur groups{lone_text}", names.join(", ")),
                     },
                     _ => LinkageError::Structure(format!(
-                        "links {} do not form Assur groups on the crank `{}`{lone_text}",
+                        "links {} do not form Assur groups on the {} `{}`{lone_text}",
                         names.join(", "),
-                        inp.link
+                        if drive.is_some() { "input slider" } else { "crank" },
+                        link_names[cl]
                     )),
                 });
             }
@@ -626,6 +806,7 @@ impl Mechanism {
             points,
             pairs,
             crank,
+            drive,
             groups,
             structure,
             output,
@@ -639,6 +820,30 @@ impl Mechanism {
         m.choose_branches(def)?;
         m.count_rank()?;
         Ok(m)
+    }
+
+    /// The input coordinate as text: `φ = 12.000°` for a crank, `s =
+    /// 40.000 mm` for a slider.
+    pub fn at_text(&self, q: f64) -> String {
+        match self.drive {
+            Some(_) => format!("s = {:.3} mm", q * 1e3),
+            None => format!("φ = {:.3}°", q.to_degrees()),
+        }
+    }
+
+    /// An error for a calculation that needs a crank when the input is a
+    /// slider: `what` names it.
+    pub fn require_crank(&self, what: &str) -> Result<(), LinkageError> {
+        match &self.drive {
+            None => Ok(()),
+            Some(d) => Err(de(
+                "input.slider",
+                format!(
+                    "{what} needs a crank as the input; this mechanism is driven by the slider `{}`",
+                    self.link_names[d.link]
+                ),
+            )),
+        }
     }
 
     /// Index of a link by name.
@@ -721,8 +926,12 @@ impl Mechanism {
                 sol.links.clone_from(&self.init);
                 self.assembly_angle
             });
-            let gap = tmm_geom::angle::diff(from, phi);
-            let steps = (gap.abs() / (2.0 * PI / 180.0)).ceil() as usize;
+            // steps of 2° of the crank, or of 1 % of the size along a slider
+            let (gap, step) = match self.drive {
+                Some(_) => (phi - from, 0.01 * self.scale),
+                None => (tmm_geom::angle::diff(from, phi), 2.0 * PI / 180.0),
+            };
+            let steps = (gap.abs() / step).ceil() as usize;
             for k in 1..steps {
                 let p = from + gap * k as f64 / steps as f64;
                 self.solve_once(p, sol)?;
@@ -761,7 +970,7 @@ impl Mechanism {
     ) -> Result<(), LinkageError> {
         limits::angle("phi0", phi0)?;
         limits::angle("phi0 + n·dphi", phi0 + dphi * n as f64)?;
-        if self.has_general {
+        if self.has_general || self.drive.is_some() {
             for k in 0..n {
                 self.solve(phi0 + dphi * k as f64, sol)?;
                 f(k, sol);
@@ -787,6 +996,9 @@ impl Mechanism {
 
     #[inline]
     fn solve_once(&self, phi: f64, sol: &mut Solution) -> Result<(), LinkageError> {
+        if self.drive.is_some() {
+            return self.solve_dir(phi, Vec2::ZERO, sol);
+        }
         let (s, co) = phi.sin_cos();
         self.solve_dir(phi, Vec2::new(co, s), sol)
     }
@@ -796,13 +1008,18 @@ impl Mechanism {
     fn solve_dir(&self, phi: f64, dir: Vec2, sol: &mut Solution) -> Result<(), LinkageError> {
         sol.phi = phi;
         let c = &self.crank;
-        let u = crate::state::unrotate(dir, c.dir_local);
-        let piv = PointState {
-            p: c.pivot,
-            v: Vec2::ZERO,
-            a: Vec2::ZERO,
+        sol.links[c.link] = match &self.drive {
+            Some(d) => d.state(phi),
+            None => {
+                let u = crate::state::unrotate(dir, c.dir_local);
+                let piv = PointState {
+                    p: c.pivot,
+                    v: Vec2::ZERO,
+                    a: Vec2::ZERO,
+                };
+                LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps)
+            }
         };
-        sol.links[c.link] = LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps);
         for g in &self.groups {
             match &g.solver {
                 Solver::Dyad(dy) => {
@@ -848,6 +1065,20 @@ impl Mechanism {
     }
 
     fn fail(&self, g: &Group, phi: f64, e: DyadFail) -> LinkageError {
+        if self.drive.is_some() {
+            return match e {
+                DyadFail::Singular { .. } => LinkageError::SingularAtTravel {
+                    s_mm: phi * 1e3,
+                    group: g.label(),
+                    reason: e.to_string(),
+                },
+                _ => LinkageError::AssemblyAtTravel {
+                    s_mm: phi * 1e3,
+                    group: g.label(),
+                    reason: e.to_string(),
+                },
+            };
+        }
         match e {
             DyadFail::Singular { .. } => LinkageError::Singular {
                 phi_deg: phi.to_degrees(),
@@ -1212,9 +1443,9 @@ impl Mechanism {
                 return Err(LinkageError::desc(
                     "assembly",
                     format!(
-                        "the hints ({}) do not choose one assembly at φ = {:.3}°: two assemblies satisfy them equally well ({}); add a hint that tells them apart, e.g. on the side of a line",
+                        "the hints ({}) do not choose one assembly at {}: two assemblies satisfy them equally well ({}); add a hint that tells them apart, e.g. on the side of a line",
                         h.join("; "),
-                        phi.to_degrees(),
+                        self.at_text(phi),
                         differ.join("; ")
                     ),
                 ));
@@ -1241,8 +1472,8 @@ impl Mechanism {
         LinkageError::desc(
             "assembly",
             format!(
-                "no assembly at φ = {:.3}° satisfies every hint ({})",
-                self.assembly_angle.to_degrees(),
+                "no assembly at {} satisfies every hint ({})",
+                self.at_text(self.assembly_angle),
                 h.join("; ")
             ),
         )
@@ -1253,14 +1484,19 @@ impl Mechanism {
     fn solve_groups(&self, phi: f64, groups: &[usize], sol: &mut Solution) -> Result<(), LinkageError> {
         sol.phi = phi;
         let c = &self.crank;
-        let (s, co) = phi.sin_cos();
-        let u = crate::state::unrotate(Vec2::new(co, s), c.dir_local);
-        let piv = PointState {
-            p: c.pivot,
-            v: Vec2::ZERO,
-            a: Vec2::ZERO,
+        sol.links[c.link] = match &self.drive {
+            Some(d) => d.state(phi),
+            None => {
+                let (s, co) = phi.sin_cos();
+                let u = crate::state::unrotate(Vec2::new(co, s), c.dir_local);
+                let piv = PointState {
+                    p: c.pivot,
+                    v: Vec2::ZERO,
+                    a: Vec2::ZERO,
+                };
+                LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps)
+            }
         };
-        sol.links[c.link] = LinkState::from_point(&piv, c.pivot_local, u, c.omega, c.eps);
         for &gi in groups {
             let g = &self.groups[gi];
             match &g.solver {
@@ -1325,8 +1561,8 @@ impl Mechanism {
                         return Err(LinkageError::desc(
                             format!("assembly[{i}]"),
                             format!(
-                                "`{h}`: at φ = {:.3}° the line {a}–{b} is {}, so it has no {}; use {}",
-                                self.assembly_angle.to_degrees(),
+                                "`{h}`: at {} the line {a}–{b} is {}, so it has no {}; use {}",
+                                self.at_text(self.assembly_angle),
                                 if len == 0.0 {
                                     "not a line (the points coincide)"
                                 } else if vertical {
@@ -1415,7 +1651,14 @@ impl Mechanism {
     /// Rank of the constraint equations at the assembly: the true DOF,
     /// redundant constraints and passive freedoms.
     fn count_rank(&mut self) -> Result<(), LinkageError> {
-        let rc = crate::whole::rank_count(&self.pairs, self.link_names.len(), self.crank.link, &self.init, self.scale);
+        let rc = crate::whole::rank_count(
+            &self.pairs,
+            self.link_names.len(),
+            self.crank.link,
+            held_row(&self.drive),
+            &self.init,
+            self.scale,
+        );
         let s = &mut self.structure;
         s.dof_rank = rc.dof;
         s.redundant = rc.redundant;

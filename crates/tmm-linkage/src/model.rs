@@ -83,6 +83,38 @@ impl InputDef {
     }
 }
 
+/// The input link as a slider (ведущий ползун) on a guide fixed to the
+/// frame, driven along it at a given speed: the input coordinate is the
+/// slider's travel s (m) along the guide from the guide's `through` point,
+/// `s = (P − Q)·d` with P the slider's point, Q `through` and d the guide's
+/// unit direction (docs/linkage.md, "A slider as the input").
+#[derive(Debug, Clone, PartialEq)]
+pub struct SliderInputDef {
+    /// The driving slider: a link listed in [`MechanismDef::sliders`] on a
+    /// guide of the frame.
+    pub link: String,
+    /// ds/dt, m/s, signed (> 0: s increases).
+    pub speed: f64,
+    /// d²s/dt², m/s² (0: constant speed).
+    pub acceleration: f64,
+}
+
+impl SliderInputDef {
+    /// A slider `link` driven at the constant speed `speed` (m/s).
+    ///
+    /// ```
+    /// let i = tmm_linkage::SliderInputDef::new("3", 0.5);
+    /// assert_eq!((i.link.as_str(), i.speed, i.acceleration), ("3", 0.5, 0.0));
+    /// ```
+    pub fn new(link: &str, speed: f64) -> Self {
+        SliderInputDef {
+            link: link.into(),
+            speed,
+            acceleration: 0.0,
+        }
+    }
+}
+
 /// Where a point should be at assembly, to choose the branch (вариант сборки).
 #[derive(Debug, Clone, PartialEq)]
 pub enum HintKind {
@@ -146,11 +178,14 @@ pub struct MechanismDef {
     pub links: Vec<LinkDef>,
     /// Prismatic pairs.
     pub sliders: Vec<SliderDef>,
-    /// The input crank.
+    /// The input crank (none when the input is a slider).
     pub input: Option<InputDef>,
+    /// The input slider on a fixed guide, instead of a crank.
+    pub slider_input: Option<SliderInputDef>,
     /// Assembly hints.
     pub hints: Vec<AssemblyHint>,
-    /// Crank angle at which the hints hold, rad.
+    /// The input coordinate at which the hints hold: the crank angle, rad,
+    /// or for a slider input its travel s, m.
     pub assembly_angle: f64,
     /// The output link (выходное звено), whose motion gives the dead positions,
     /// the stroke and Kv. Default: the last link of the last group.

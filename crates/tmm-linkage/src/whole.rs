@@ -35,9 +35,11 @@ pub struct RankCount {
 }
 
 /// The rank count of the constraint equations of `pairs` among `n_links`
-/// links (0 the frame) at the states `links`, with the crank `crank` held for
-/// the passive freedoms. Angles are scaled by `1/scale`.
-pub fn rank_count(pairs: &[Pair], n_links: usize, crank: usize, links: &[LinkState], scale: f64) -> RankCount {
+/// links (0 the frame) at the states `links`, with the input link `crank`
+/// held for the passive freedoms by the row `held` on its (x, y, θ)
+/// columns: `[0, 0, 1]` holds a crank's rotation, `[dx, dy, 0]` a driving
+/// slider's travel along its guide d. Angles are scaled by `1/scale`.
+pub fn rank_count(pairs: &[Pair], n_links: usize, crank: usize, held: [f64; 3], links: &[LinkState], scale: f64) -> RankCount {
     let n = n_links - 1;
     let unknown: Vec<usize> = (1..=n).collect();
     let prs: Vec<&Pair> = pairs.iter().collect();
@@ -48,7 +50,9 @@ pub fn rank_count(pairs: &[Pair], n_links: usize, crank: usize, links: &[LinkSta
     constraints::assemble(&prs, &unknown, links, Mode::Velocity, &mut jac[..rows * cols], &mut rhs[..rows]);
     constraints::scale_angle_columns(&mut jac[..rows * cols], rows, cols, 1.0 / scale);
     let r = constraints::rank(&jac[..rows * cols], rows, cols, 1e-9);
-    jac[rows * cols + 3 * (crank - 1) + 2] = 1.0;
+    for (k, h) in held.iter().enumerate() {
+        jac[rows * cols + 3 * (crank - 1) + k] = *h;
+    }
     let r_held = constraints::rank(&jac, rows + 1, cols, 1e-9);
     RankCount {
         dof: cols as i64 - r as i64,

@@ -48,6 +48,7 @@ pub const EXAMPLES: &[(&str, &str)] = &[
         "seed-004-two-sliders.toml",
         include_str!("../../../examples/seed-004-two-sliders.toml"),
     ),
+    ("slider-input.toml", include_str!("../../../examples/slider-input.toml")),
     (
         "synth-seed-002-ex1-crank-rocker.toml",
         include_str!("../../../examples/synth-seed-002-ex1-crank-rocker.toml"),

@@ -11,15 +11,18 @@ use super::common::{checked, json_text, print, read_task, write_dir, written};
 
 /// Structure (Assur groups, formula) and kinematics (dead positions, Kv, the
 /// 12-position table, diagrams, velocity and acceleration plans) of the
-/// `[linkage]` section of a task file.
+/// `[linkage]` section of a task file. The input is a crank, or a slider on
+/// a fixed guide driven at a given speed over a travel
+/// (`input = { slider = "1", speed = "0.5 m/s" }`, `travel = ["0 mm", "120 mm"]`):
+/// then the positions are equal steps of the slider's s and the analogues are d/ds.
 #[derive(clap::Args)]
 pub struct Args {
     /// The task file (TOML) with a [linkage] section
     pub file: PathBuf,
-    /// One crank angle only: the absolute angle of the crank from the x-axis, counter-clockwise (e.g. 15, "15 deg", "0.26 rad"); or "all": the table of every position and, with --svg, the velocity and acceleration plans of each (plan-velocity-N.svg, plan-acceleration-N.svg)
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    /// One crank angle only: the absolute angle of the crank from the x-axis, counter-clockwise (e.g. 15, "15 deg", "0.26 rad"); for a slider input the slider's s inside the travel (e.g. "40 mm"); or "all": the table of every position and, with --svg, the velocity and acceleration plans of each (plan-velocity-N.svg, plan-acceleration-N.svg)
+    #[arg(long, value_name = "DEG|MM", allow_hyphen_values = true)]
     pub at: Option<String>,
-    /// Number of equally spaced positions from the dead position that starts the working stroke (default: the file's, else 12)
+    /// Number of equally spaced positions from the dead position that starts the working stroke; for a slider input the number of equal steps over the travel (default: the file's, else 12)
     #[arg(long, value_name = "N")]
     pub positions: Option<usize>,
     /// Print one JSON document (SI, angles in radians) instead of the tables
@@ -42,6 +45,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
     let all = a.at.as_deref().is_some_and(|t| t.trim().eq_ignore_ascii_case("all"));
     let at = match &a.at {
         Some(_) if all => None,
+        Some(t) if l.task.travel.is_some() => Some(arg_qty("--at", t, Dim::Length)?),
         Some(t) => Some(arg_qty("--at", t, Dim::Angle)?),
         None => None,
     };

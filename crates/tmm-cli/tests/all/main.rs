@@ -27,6 +27,7 @@ mod redundant;
 mod seed_003_direction;
 mod shaper;
 mod single_stroke;
+mod slider_input;
 mod synth;
 mod textbook_cams;
 mod textbook_synthesis;

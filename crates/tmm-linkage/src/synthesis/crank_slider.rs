@@ -549,6 +549,7 @@ fn point_of(check: &super::result::CheckReport, i: usize, name: &str) -> Vec2 {
 /// extended dead position).
 fn mechanism(l1: f64, l2: f64, yg: f64, omega: f64, b_ext: Vec2) -> MechanismDef {
     MechanismDef {
+        slider_input: None,
         fixed: vec![("O".into(), Vec2::ZERO)],
         links: vec![
             LinkDef::bar("1", "O", "A", l1),

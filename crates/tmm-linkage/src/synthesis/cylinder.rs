@@ -139,6 +139,7 @@ pub fn mechanism(l1: f64, d: Vec2, h_max: f64, omega: f64, phi: f64) -> Mechanis
     let b = polar(phi) * l1;
     let e = d + (b - d) * (h_max / (b - d).hypot());
     MechanismDef {
+        slider_input: None,
         fixed: vec![("O".into(), Vec2::ZERO), ("D".into(), d)],
         links: vec![
             LinkDef::bar("1", "O", "B", l1),

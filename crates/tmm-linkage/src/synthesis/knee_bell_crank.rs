@@ -166,6 +166,7 @@ pub fn synthesize(r: &BellKneeRequest) -> Result<Synthesis, SynthesisError> {
         Vec2::new(co * v.x - s * v.y, s * v.x + co * v.y)
     };
     let def = MechanismDef {
+        slider_input: None,
         fixed: vec![("C".into(), c), ("O".into(), b.o)],
         links: vec![
             LinkDef::bar("1", "O", "A", b.l1),

@@ -140,6 +140,7 @@ pub fn synthesize(r: &KneeRequest) -> Result<Synthesis, SynthesisError> {
     let b = choice.bar;
     let fpos = |bb: Vec2| Vec2::new(0.0, bb.y - (lf * lf - bb.x * bb.x).max(0.0).sqrt());
     let def = MechanismDef {
+        slider_input: None,
         fixed: vec![("C".into(), c), ("O".into(), b.o)],
         links: vec![
             LinkDef::bar("1", "O", "A", b.l1),

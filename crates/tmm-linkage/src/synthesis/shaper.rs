@@ -87,6 +87,7 @@ pub fn mechanism(
     let mut ram = LinkDef::block("5", "E");
     ram.mass_center = Vec2::new(ram_center, 0.0);
     MechanismDef {
+        slider_input: None,
         fixed: vec![("O".into(), Vec2::ZERO), ("C".into(), c)],
         links: vec![
             LinkDef::bar("1", "O", "A", l_oa),

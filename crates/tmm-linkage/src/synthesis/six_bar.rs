@@ -429,6 +429,7 @@ fn six_bar_def(
     assembly_angle: f64,
 ) -> MechanismDef {
     MechanismDef {
+        slider_input: None,
         fixed: vec![(crank_pivot.into(), o), (lever_pivot.into(), Vec2::ZERO)],
         links: vec![
             LinkDef::bar("1", crank_pivot, "A", l1),

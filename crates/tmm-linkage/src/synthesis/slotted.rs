@@ -147,6 +147,7 @@ pub fn synthesize(r: &SlottedRequest) -> Result<Synthesis, SynthesisError> {
         }
     }
     let def = MechanismDef {
+        slider_input: None,
         fixed: vec![("O".into(), o), ("E".into(), Vec2::ZERO)],
         links: vec![
             LinkDef::bar("1", "O", "A", r1),

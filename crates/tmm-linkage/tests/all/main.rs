@@ -14,6 +14,7 @@ mod linear;
 mod properties;
 mod shaper;
 mod single_stroke;
+mod slider_input;
 mod synthesis_crank_rocker;
 mod synthesis_crank_slider;
 mod synthesis_kinds;

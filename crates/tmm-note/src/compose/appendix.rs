@@ -19,8 +19,10 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
             .map(|l| l.keys().cloned().collect())
             .unwrap_or_default();
         for (key, unit, caption) in [("omega", "u_rad_s", "tab_app_omega"), ("epsilon", "u_rad_s2", "tab_app_epsilon")] {
-            let mut header = vec![cx.w("col_position")?, cx.w("col_phi")?];
-            let mut units = vec![String::new(), cx.w("u_deg")?];
+            // a slider input's positions are its travel s (mm), a crank's its angle φ
+            let slider = p.first().and_then(|p| p.get("s")).is_some();
+            let mut header = vec![cx.w("col_position")?, if slider { "s".to_string() } else { cx.w("col_phi")? }];
+            let mut units = vec![String::new(), cx.w(if slider { "u_mm" } else { "u_deg" })?];
             for n in &names {
                 header.push(format!("{}{n}", if key == "omega" { "ω" } else { "ε" }));
                 units.push(cx.w(unit)?);
@@ -29,7 +31,11 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
             for pos in p {
                 let mut r = vec![
                     text(pos.get("label").and_then(Value::as_str).unwrap_or("")),
-                    num(pos.get("phi").and_then(Value::as_f64).unwrap_or(0.0).to_degrees()),
+                    num(if slider {
+                        pos.get("s").and_then(Value::as_f64).unwrap_or(0.0) * 1e3
+                    } else {
+                        pos.get("phi").and_then(Value::as_f64).unwrap_or(0.0).to_degrees()
+                    }),
                 ];
                 for n in &names {
                     r.push(

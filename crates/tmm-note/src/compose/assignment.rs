@@ -23,17 +23,28 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         if !synthesised {
             b.push(cx.table("assign_links", &[("col_link", ""), ("col_length", "u_mm")], rows)?);
         }
-        let omega = cx.v("/linkage/input/omega")?;
-        let mut q = vec![
-            (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
-            (cx.w("q_n1")?, cx.q(omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
-        ];
-        // the time of one turn T = 60/n1
-        if omega != 0.0 {
-            q.push((cx.w("q_revolution_time")?, cx.q(std::f64::consts::TAU / omega.abs(), "cy_u_s")?));
+        if cx.s("/linkage/input/kind") == Some("slider") {
+            let mm = |ptr: &str| -> Result<String, NoteError> { cx.q(cx.v(ptr)? * 1e3, "u_mm") };
+            let q = vec![
+                (cx.w("q_slider_speed")?, cx.q(cx.v("/linkage/input/speed")?, "u_m_s")?),
+                (cx.w("q_slider_from")?, mm("/linkage/input/travel/from")?),
+                (cx.w("q_slider_to")?, mm("/linkage/input/travel/to")?),
+                (cx.w("q_slider_position")?, mm("/linkage/plans/s")?),
+            ];
+            b.push(cx.quantities("assign_linkage", q)?);
+        } else {
+            let omega = cx.v("/linkage/input/omega")?;
+            let mut q = vec![
+                (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
+                (cx.w("q_n1")?, cx.q(omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
+            ];
+            // the time of one turn T = 60/n1
+            if omega != 0.0 {
+                q.push((cx.w("q_revolution_time")?, cx.q(std::f64::consts::TAU / omega.abs(), "cy_u_s")?));
+            }
+            q.push((cx.w("q_position")?, cx.deg("/linkage/plans/phi")?));
+            b.push(cx.quantities("assign_linkage", q)?);
         }
-        q.push((cx.w("q_position")?, cx.deg("/linkage/plans/phi")?));
-        b.push(cx.quantities("assign_linkage", q)?);
     }
     if cx.report.get("forces").is_some() {
         let mut rows = Vec::new();

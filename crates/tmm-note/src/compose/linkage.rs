@@ -98,6 +98,9 @@ pub(crate) fn crank(cx: &Ctx) -> Option<(String, String, f64)> {
 /// The section, if the report has `linkage`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(lk) = cx.report.get("linkage") else { return Ok(None) };
+    if cx.s("/linkage/input/kind") == Some("slider") {
+        return slider_section(cx, lk).map(Some);
+    }
     let st = "/linkage/structure";
     let dof = cx.v(&format!("{st}/dof"))?;
     let n = cx.v(&format!("{st}/n"))?;
@@ -241,6 +244,121 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[cx.q(ks, "")?, cx.q(kv, "")?])?);
     }
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
+}
+
+/// A length of the report (m) printed in mm.
+fn mm(cx: &Ctx, ptr: &str) -> Result<String, NoteError> {
+    cx.q(cx.v(ptr)? * 1e3, "u_mm")
+}
+
+/// The section of a linkage driven by a slider on a fixed guide: the
+/// input, the structure, the analogues taken by s, the figures and the
+/// points' speeds and accelerations at the plans' s.
+fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
+    let st = "/linkage/structure";
+    let dof = cx.v(&format!("{st}/dof"))?;
+    let n = cx.v(&format!("{st}/n"))?;
+    let p5 = cx.v(&format!("{st}/p5"))?;
+    let p4 = cx.v(&format!("{st}/p4"))?;
+    let formula_text = cx.s(&format!("{st}/formula")).unwrap_or("").to_string();
+    let class = cx.v(&format!("{st}/class"))?;
+    let statement = vec![
+        cx.para(
+            "lk_slider_given",
+            &[
+                cx.s("/linkage/input/link").unwrap_or("").to_string(),
+                cx.q(cx.v("/linkage/input/speed")?, "u_m_s")?,
+                mm(cx, "/linkage/input/travel/from")?,
+                mm(cx, "/linkage/input/travel/to")?,
+                mm(cx, "/linkage/plans/s")?,
+            ],
+        )?,
+        cx.para("lk_slider_method", &[])?,
+    ];
+    let formulas = vec![
+        cx.para("lk_f_dof", &[])?,
+        formula("W = 3 n - 2 p_5 - p_4"),
+        cx.para("where_dof", &[])?,
+        formula("x' = dot(x) / v, quad x'' = (dot.double(x) - x' a) / v^2"),
+    ];
+    let mut results = super::structure::blocks(cx)?;
+    results.extend([
+        cx.para("calc_dof", &[])?,
+        Block::Calculation(Calculation::new(
+            Quantity::count("W", dof),
+            calc::sub(
+                calc::sub(
+                    Expr::Mul(vec![calc::int(3), calc::count("n", n)]),
+                    Expr::Mul(vec![calc::int(2), calc::count("p_5", p5)]),
+                ),
+                calc::count("p_4", p4),
+            ),
+        )),
+    ]);
+    results.push(cx.para(
+        "lk_structure",
+        &[
+            format!("{n}"),
+            format!("{p5}"),
+            format!("{p4}"),
+            format!("{dof}"),
+            formula_text.clone(),
+            format!("{class}"),
+        ],
+    )?);
+    for (path, key) in [
+        ("linkage/positions.svg", "fig_positions"),
+        ("linkage/velocity-plan.svg", "fig_velocity_plan"),
+        ("linkage/acceleration-plan.svg", "fig_acceleration_plan"),
+        ("linkage/diagram-s.svg", "fig_diagram_s"),
+        ("linkage/diagram-v.svg", "fig_diagram_v"),
+        ("linkage/diagram-a.svg", "fig_diagram_a"),
+    ] {
+        if let Some(f) = cx.figure(path, key)? {
+            results.push(f);
+        }
+    }
+    let rows = plan_rows(lk);
+    if !rows.is_empty() {
+        results.push(cx.para("lk_slider_plans", &[mm(cx, "/linkage/plans/s")?])?);
+        results.push(cx.table(
+            "tab_point_kinematics",
+            &[("col_point", ""), ("col_speed", "u_m_s"), ("col_acceleration", "u_m_s2")],
+            rows,
+        )?);
+    }
+    let conclusions = vec![
+        cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
+        cx.para("lk_slider_conclusion", &[pressure_max(cx)?])?,
+    ];
+    four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)
+}
+
+/// The points' speeds and accelerations read off the plans' absolute vectors.
+fn plan_rows(lk: &Value) -> Vec<Vec<crate::model::Cell>> {
+    let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) else {
+        return Vec::new();
+    };
+    let acc = lk
+        .pointer("/plans/acceleration")
+        .and_then(Value::as_array)
+        .cloned()
+        .unwrap_or_default();
+    let mut rows = Vec::new();
+    for v in plan.iter().filter(|v| v.get("kind").and_then(Value::as_str) == Some("absolute")) {
+        let label = v.get("label").and_then(Value::as_str).unwrap_or("");
+        let point = label.trim_start_matches("V_").trim_start_matches("v_");
+        let mag = vec_len(v);
+        let a = acc
+            .iter()
+            .find(|a| {
+                a.get("kind").and_then(Value::as_str) == Some("absolute")
+                    && a.get("label").and_then(Value::as_str).map(|l| l.trim_start_matches("a_")) == Some(point)
+            })
+            .map(vec_len);
+        rows.push(vec![text(point), num(mag), a.map_or(crate::model::Cell::Empty, num)]);
+    }
+    rows
 }
 
 /// The crank-angle ranges where a partial-range linkage assembles

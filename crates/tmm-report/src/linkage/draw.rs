@@ -79,11 +79,21 @@ pub fn draw_with(l: &Loaded, a: &Analysis, task: &TaskSource, dir: &str, plans: 
 /// the crank redraws, without the rest of the section.
 pub fn plans_at(l: &Loaded, sol: &Solution, phi: f64, task: &TaskSource) -> (String, String) {
     let p = tmm_linkage::plans::plans(&l.mech, sol);
-    let pos = format!("φ_1 = {}°", num(phi.to_degrees(), 1, task.lang));
+    let pos = input_text(l, phi, task.lang);
     (
         plan(task, Kind::Velocity, &p.velocity, &pos).into(),
         plan(task, Kind::Acceleration, &p.acceleration, &pos).into(),
     )
+}
+
+/// The input coordinate as drawn: `φ_1 = 30°` for a crank, `s = 40 mm`
+/// for a slider.
+fn input_text(l: &Loaded, q: f64, lang: Language) -> String {
+    if l.mech.drive.is_some() {
+        format!("s = {} {}", num(q * 1e3, 1, lang), word(lang, "linkage.unit_mm"))
+    } else {
+        format!("φ_1 = {}°", num(q.to_degrees(), 1, lang))
+    }
 }
 
 /// "position 1" in the drawing's language.
@@ -101,7 +111,10 @@ fn bold_index(a: &Analysis) -> Option<usize> {
 
 fn bold_label(a: &Analysis, lang: Language) -> String {
     bold_index(a).map_or_else(
-        || format!("φ_1 = {}°", num(a.plan_row.pos.phi.to_degrees(), 1, lang)),
+        || match a.travel {
+            Some(_) => format!("s = {} {}", num(a.plan_row.pos.phi * 1e3, 1, lang), word(lang, "linkage.unit_mm")),
+            None => format!("φ_1 = {}°", num(a.plan_row.pos.phi.to_degrees(), 1, lang)),
+        },
         |i| a.rows[i].pos.label.clone(),
     )
 }
@@ -164,7 +177,11 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let mut sol = m.solution();
     let sg = m.crank.omega.signum();
     for k in 0..=720 {
-        let phi = a.start + sg * std::f64::consts::TAU * k as f64 / 720.0;
+        let phi = match a.travel {
+            // a slider input: over its travel
+            Some(t) => t.from + (t.to - t.from) * k as f64 / 720.0,
+            None => a.start + sg * std::f64::consts::TAU * k as f64 / 720.0,
+        };
         let ok = m.solve(phi, &mut sol).is_ok();
         for (j, &p) in joints.iter().enumerate() {
             // a gap where the crank cannot turn stays a gap
@@ -286,23 +303,42 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             sliders.push((slider, sp + n * half * 0.6));
         }
     }
-    // ω1: an arc arrow around the crank's pivot
-    let piv = m.crank.pivot;
-    let pin_angle = {
-        let pin = sol.points[m.crank.pin].p - piv;
-        pin.y.atan2(pin.x)
+    // the input's motion: ω1 as an arc arrow around the crank's pivot, or
+    // the slider's v as an arrow along its guide with the travel's ends marked
+    let (input_mark, input_sym) = match (&m.drive, a.travel) {
+        (Some(d), Some(t)) => {
+            let sp = sol.points[d.point].p;
+            let n = Vec2::new(-d.dir.y, d.dir.x);
+            let off = n * (7.0 / s);
+            let dv = d.dir * (m.crank.omega.signum() * 14.0 / s);
+            c.arrow(xy(sp + off), xy(sp + off + dv), Style::THIN, 3.0);
+            for end in [t.from, t.to] {
+                let e = d.through + d.dir * end;
+                c.line(xy(e - n * (4.0 / s)), xy(e + n * (4.0 / s)), Style::THIN);
+            }
+            (sp + off + dv * 0.5, format!("v_{}", typeset_name(&m.points[d.point].name, false)))
+        }
+        _ => {
+            let piv = m.crank.pivot;
+            let pin_angle = {
+                let pin = sol.points[m.crank.pin].p - piv;
+                pin.y.atan2(pin.x)
+            };
+            let r_arc = (0.45 * m.crank.radius * s).clamp(7.0, 14.0) / s;
+            let (a0, a1) = if sg > 0.0 {
+                (pin_angle + 0.5, pin_angle + 2.2)
+            } else {
+                (pin_angle - 0.5, pin_angle - 2.2)
+            };
+            c.arc(xy(piv), r_arc, a0, a1, Style::THIN);
+            let tip = piv + Vec2::new(a1.cos(), a1.sin()) * r_arc;
+            let back_a = a1 - sg * 0.25;
+            let back = piv + Vec2::new(back_a.cos(), back_a.sin()) * r_arc;
+            c.arrow(xy(back), xy(tip), Style::THIN, 3.0);
+            let mid_a = 0.5 * (a0 + a1);
+            (piv + Vec2::new(mid_a.cos(), mid_a.sin()) * r_arc, "ω_1".to_string())
+        }
     };
-    let r_arc = (0.45 * m.crank.radius * s).clamp(7.0, 14.0) / s;
-    let (a0, a1) = if sg > 0.0 {
-        (pin_angle + 0.5, pin_angle + 2.2)
-    } else {
-        (pin_angle - 0.5, pin_angle - 2.2)
-    };
-    c.arc(xy(piv), r_arc, a0, a1, Style::THIN);
-    let tip = piv + Vec2::new(a1.cos(), a1.sin()) * r_arc;
-    let back_a = a1 - sg * 0.25;
-    let back = piv + Vec2::new(back_a.cos(), back_a.sin()) * r_arc;
-    c.arrow(xy(back), xy(tip), Style::THIN, 3.0);
     c.end_group();
     // joints
     for (k, p) in m.points.iter().enumerate() {
@@ -329,8 +365,20 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             c.label(xy(pos), &typeset_name(&p.name, false), H_LABEL, "#000");
         }
     }
-    let mid_a = 0.5 * (a0 + a1);
-    c.label(xy(piv + Vec2::new(mid_a.cos(), mid_a.sin()) * r_arc), "ω_1", H_LABEL, "#000");
+    c.label(xy(input_mark), &input_sym, H_LABEL, "#000");
+    if let (Some(d), Some(t)) = (&m.drive, a.travel) {
+        // the travel's ends, their s beside their marks
+        let n = Vec2::new(-d.dir.y, d.dir.x);
+        for end in [t.from, t.to] {
+            let e = d.through + d.dir * end - n * (6.0 / s);
+            c.label(
+                xy(e),
+                &format!("s = {} {}", num(end * 1e3, 1, lang), word(lang, "linkage.unit_mm")),
+                H_SMALL,
+                "#000",
+            );
+        }
+    }
     let mut numbered: Vec<usize> = Vec::new();
     for (li, p, q) in &segs {
         if !numbered.contains(li) {
@@ -357,6 +405,9 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
 
 /// The kinematic diagrams: (file, SVG).
 fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, Picture)> {
+    if let Some(t) = a.travel {
+        return travel_diagrams(l, a, task, t);
+    }
     let lang = task.lang;
     let w = l.mech.crank.omega.abs();
     let lin = a.reading.output.kind == tmm_linkage::cycle::OutputKind::Linear;
@@ -408,6 +459,63 @@ fn diagrams(l: &Loaded, a: &Analysis, task: &TaskSource) -> Vec<(&'static str, P
             }
             let marks: Vec<(f64, String)> = a.rows.iter().map(|r| (r.pos.psi.to_degrees(), r.pos.label.clone())).collect();
             (file, cycle_diagram(task, word(lang, title), &sym, &unit, &pts, &marks, w, None))
+        })
+        .collect()
+}
+
+/// The diagrams of a slider-driven mechanism over the slider's travel s (mm):
+/// the output's x, dx/ds, d²x/ds², its velocity and acceleration.
+fn travel_diagrams(l: &Loaded, a: &Analysis, task: &TaskSource, t: super::Travel) -> Vec<(&'static str, Picture)> {
+    let lang = task.lang;
+    let m = &l.mech;
+    let (v, acc) = (m.crank.omega, m.crank.eps);
+    let lin = a.reading.output.kind == tmm_linkage::cycle::OutputKind::Linear;
+    let out = &m.link_names[m.output];
+    let u = |k: &str| word(lang, k).to_string();
+    let (su, vu, au) = if lin {
+        (u("linkage.unit_m"), u("linkage.unit_mps"), u("linkage.unit_mps2"))
+    } else {
+        (u("linkage.unit_rad"), u("linkage.unit_radps"), u("linkage.unit_radps2"))
+    };
+    let (sym_s, sym_v, sym_a) = if lin {
+        ("x".to_string(), "v".to_string(), "a".to_string())
+    } else {
+        (format!("ψ_{out}"), format!("ω_{out}"), format!("ε_{out}"))
+    };
+    let (w, h) = slot_mm(Slot::Diagram, task.sheet);
+    let xlabel = format!("s, {}", u("linkage.unit_mm"));
+    type Pick = fn(&[f64; 4], f64, f64) -> f64;
+    let list: [(&'static str, &str, String, String, Pick); 5] = [
+        ("diagram-s.svg", "linkage.diagram_s", sym_s.clone(), su.clone(), |d, _, _| d[1]),
+        (
+            "diagram-ds.svg",
+            "linkage.diagram_ds",
+            format!("d{sym_s}/ds"),
+            format!("{su}/{}", u("linkage.unit_m")),
+            |d, _, _| d[2],
+        ),
+        (
+            "diagram-dds.svg",
+            "linkage.diagram_dds",
+            format!("d²{sym_s}/ds²"),
+            format!("{su}/{}²", u("linkage.unit_m")),
+            |d, _, _| d[3],
+        ),
+        ("diagram-v.svg", "linkage.diagram_v", sym_v, vu, |d, v, _| d[2] * v),
+        ("diagram-a.svg", "linkage.diagram_a", sym_a, au, |d, v, acc| {
+            d[3] * v * v + d[2] * acc
+        }),
+    ];
+    list.into_iter()
+        .map(|(file, title, sym, unit, pick)| {
+            let pts: Vec<(f64, f64)> = a.diagram.iter().map(|d| ((t.from + d[0]) * 1e3, pick(d, v, acc))).collect();
+            let series = [crate::svg::Series {
+                name: "",
+                points: &pts,
+                color: "#000",
+            }];
+            let ylabel = format!("{sym}, {unit}");
+            (file, crate::svg::plot_in(lang, word(lang, title), &xlabel, &ylabel, &series, w, h))
         })
         .collect()
 }

@@ -5,7 +5,8 @@ use serde_json::{Map, Value, json};
 use super::{Analysis, Loaded, Row};
 use crate::output::num;
 
-fn row_json(l: &Loaded, r: &Row) -> Value {
+/// One position: every point's and link's state, the output, the pressure angles.
+pub(super) fn row_json(l: &Loaded, r: &Row) -> Value {
     let m = &l.mech;
     let mut points = Map::new();
     for (i, p) in m.points.iter().enumerate() {
@@ -92,11 +93,18 @@ fn geometry(l: &Loaded) -> Value {
     json!({"links": links, "fixed": fixed, "frame_lengths": pairwise(&d.fixed), "sliders": sliders})
 }
 
-/// The whole document.
-pub fn document(l: &Loaded, a: &Analysis) -> Value {
+/// The vectors of a plan.
+pub(super) fn plan_vectors(v: &[tmm_linkage::plans::PlanVector]) -> Vec<Value> {
+    v.iter()
+        .map(|p| json!({"label": p.label, "kind": p.kind, "from": [num(p.from.x), num(p.from.y)], "to": [num(p.to.x), num(p.to.y)]}))
+        .collect()
+}
+
+/// The parts of the document that do not depend on the input's kind: the
+/// structure, the geometry and the output link.
+pub(super) fn common(l: &Loaded, a: &Analysis) -> Value {
     let m = &l.mech;
     let s = &m.structure;
-    let out = a.reading.output;
     let groups: Vec<Value> = s
         .groups
         .iter()
@@ -125,29 +133,37 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
             json!({"point": pair_point(p, m), "links": [m.link_names[a], m.link_names[b]], "kind": kind, "class": 5})
         })
         .collect();
-    let w = m.crank.omega.abs();
-    let vec = |v: &[tmm_linkage::plans::PlanVector]| -> Vec<Value> {
-        v.iter()
-            .map(|p| json!({"label": p.label, "kind": p.kind, "from": [num(p.from.x), num(p.from.y)], "to": [num(p.to.x), num(p.to.y)]}))
-            .collect()
-    };
-    let pmax: Vec<Value> = a
-        .pressure_max
-        .iter()
-        .map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)}))
-        .collect();
-    let mut doc = json!({
+    let out = a.reading.output;
+    json!({
         "units": "SI",
         "structure": {
             "dof": s.dof, "n": s.n, "p5": s.p5, "p4": s.p4, "groups": groups, "pairs": pairs,
             "formula": s.formula, "class": s.class,
             "dof_by_rank": s.dof_rank, "redundant_constraints": s.redundant, "passive_freedoms": s.passive,
         },
+        "geometry": geometry(l),
+        "output": {"link": m.link_names[out.link], "kind": match out.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
+    })
+}
+
+/// The whole document.
+pub fn document(l: &Loaded, a: &Analysis) -> Value {
+    if let Some(t) = a.travel {
+        return super::travel::document(l, a, t);
+    }
+    let m = &l.mech;
+    let w = m.crank.omega.abs();
+    let vec = plan_vectors;
+    let pmax: Vec<Value> = a
+        .pressure_max
+        .iter()
+        .map(|&(p, v, phi)| json!({"point": m.points[p].name, "max": num(v), "phi": num(phi)}))
+        .collect();
+    let mut doc = common(l, a);
+    let more = json!({
         // the time of one turn of the crank T = 2π/|ω1| = 60/n1 (s)
         "input": {"link": m.link_names[m.crank.link], "omega": num(m.crank.omega), "epsilon": num(m.crank.eps),
             "revolution_time": num(if w > 0.0 { std::f64::consts::TAU / w } else { 0.0 })},
-        "geometry": geometry(l),
-        "output": {"link": m.link_names[out.link], "kind": match out.kind { tmm_linkage::cycle::OutputKind::Linear => "linear", tmm_linkage::cycle::OutputKind::Angular => "angular" }},
         "positions": a.rows.iter().map(|r| row_json(l, r)).collect::<Vec<_>>(),
         "pressure_angle_max": pmax,
         "diagrams": {
@@ -161,6 +177,9 @@ pub fn document(l: &Loaded, a: &Analysis) -> Value {
         },
         "plans": {"phi": num(a.plan_row.pos.phi), "velocity": vec(&a.plans.velocity), "acceleration": vec(&a.plans.acceleration)},
     });
+    if let (Value::Object(o), Value::Object(more)) = (&mut doc, more) {
+        o.extend(more);
+    }
     if let Value::Object(o) = &mut doc {
         o.insert("range".into(), json!(if a.partial.is_some() { "partial" } else { "full" }));
         // indices into the diagrams' arrays where a new range starts after a gap

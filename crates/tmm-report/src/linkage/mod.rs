@@ -6,6 +6,7 @@ mod json;
 mod structure;
 pub mod task;
 mod text;
+pub mod travel;
 
 use std::f64::consts::TAU;
 
@@ -17,7 +18,7 @@ use tmm_linkage::{LinkageError, Mechanism, MechanismDef, Solution};
 use crate::output::{Documents, SectionOutput};
 use crate::{Error, TaskSource};
 
-pub use task::{LinkageTask, RangeMode};
+pub use task::{LinkageTask, RangeMode, Travel};
 
 /// A mechanism read from a task file and compiled.
 #[derive(Debug, Clone)]
@@ -50,7 +51,13 @@ pub fn locate(src: &TaskSource, t: &LinkageTask, e: &LinkageError) -> Error {
                 .cloned();
             (format!("linkage.{field}"), span)
         }
-        None => ("linkage".to_string(), None),
+        None => match e {
+            // a slider input that does not assemble at some s: its travel
+            LinkageError::AssemblyAtTravel { .. } | LinkageError::SingularAtTravel { .. } => {
+                ("linkage.travel".to_string(), t.spans.get("travel").cloned())
+            }
+            _ => ("linkage".to_string(), None),
+        },
     };
     let msg = match e {
         LinkageError::Description { message, .. } => message.clone(),
@@ -163,6 +170,11 @@ pub struct Analysis {
     pub cycle: Option<Cycle>,
     /// The assembly ranges and gaps; `None` for a full turn.
     pub partial: Option<PartialCycle>,
+    /// The travel of a slider input; `None` for a crank. Then each row's
+    /// `pos.phi` is the slider's s (m), `pos.psi` is s from the travel's
+    /// start, the analogues are d/ds and the diagrams' first column is s
+    /// from the start (m); `start` is the travel's first s.
+    pub travel: Option<Travel>,
     /// How the output is read.
     pub reading: Reading,
     /// The crank angle where ψ = 0, rad.
@@ -202,9 +214,32 @@ pub fn row(m: &Mechanism, r: &Reading, pos: Position) -> Result<Row, LinkageErro
     })
 }
 
+/// Refuse a section that needs a crank (the forces over the cycle, the
+/// machine's dynamics and flywheel, Zhukovsky's lever) when the linkage is
+/// driven by a slider.
+pub fn require_crank(src: &TaskSource, l: &Loaded, section: &str) -> Result<(), Error> {
+    if let Some(d) = &l.mech.drive {
+        let span = l.task.spans.get("input.slider").cloned().unwrap_or(l.task.section.clone());
+        return Err(Error::at(
+            src,
+            span,
+            "linkage.input.slider",
+            format!(
+                "[{section}] needs a crank that turns as the input; this linkage is driven by the slider `{}`",
+                l.mech.link_names[d.link]
+            ),
+        )
+        .with_help(format!(
+            "[{section}] is found over a turn of a crank: drive the linkage by a crank (input = {{ link = \"…\", speed = \"… rpm\" }}), or remove [{section}]"
+        )));
+    }
+    Ok(())
+}
+
 /// Refuse a section that needs the steady cycle of a full turn when the
 /// linkage is analysed over its assembly ranges only.
 pub fn require_full_turn(src: &TaskSource, l: &Loaded, section: &str) -> Result<(), Error> {
+    require_crank(src, l, section)?;
     if l.task.range == RangeMode::Partial {
         return Err(Error::at(
             src,
@@ -258,6 +293,9 @@ const SAMPLES_PER_TURN: f64 = 360.0;
 
 /// Analyse: the cycle, `n` positions (or the one at `at`), diagrams, plans.
 pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Result<Analysis, Error> {
+    if let Some(t) = l.task.travel {
+        return travel::analyse(l, src, t, at, n);
+    }
     let m = &l.mech;
     let loc = |e: LinkageError| locate(src, &l.task, &e);
     let sg = m.crank.omega.signum();
@@ -424,6 +462,7 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
     };
     Ok(Analysis {
         cycle,
+        travel: None,
         diagram_gaps,
         partial,
         reading,

@@ -7,6 +7,9 @@
 //! fixed = { A = ["0 mm", "0 mm"], D = ["510 mm", "0 mm"] }
 //! input = { link = "1", speed = "900 rpm", direction = "ccw" }
 //! assembly = ["C below AD"]
+//! # or a slider on a fixed guide as the input, over a travel:
+//! # input = { slider = "1", speed = "0.5 m/s" }
+//! # travel = ["0 mm", "120 mm"]
 //! [[linkage.links]]
 //! name = "1"
 //! joints = ["A", "B"]
@@ -20,7 +23,7 @@ use serde::Deserialize;
 use tmm_geom::Vec2;
 use tmm_geom::units::Dim;
 use tmm_linkage::cycle::Working;
-use tmm_linkage::{AssemblyHint, FRAME, HintKind, InputDef, LinkDef, MechanismDef, SliderDef};
+use tmm_linkage::{AssemblyHint, FRAME, HintKind, InputDef, LinkDef, MechanismDef, SliderDef, SliderInputDef};
 
 use crate::task::{Qty, RawQty, qty};
 use crate::{Error, TaskSource};
@@ -50,6 +53,7 @@ struct LinkageSec {
     positions: Option<S<i64>>,
     at: Option<Qty>,
     range: Option<S<String>>,
+    travel: Option<S<Vec<Qty>>>,
 }
 
 #[derive(Deserialize)]
@@ -107,12 +111,14 @@ enum Through {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct InputSec {
-    link: S<String>,
+    link: Option<S<String>>,
+    slider: Option<S<String>>,
     pivot: Option<S<String>>,
     pin: Option<S<String>>,
     speed: Qty,
     direction: Option<S<String>>,
     epsilon: Option<Qty>,
+    acceleration: Option<Qty>,
 }
 
 #[derive(Deserialize)]
@@ -138,6 +144,16 @@ pub enum RangeMode {
     Partial,
 }
 
+/// The travel of an input slider (ход ведущего ползуна): s from `from` to
+/// `to`, m, along its guide from the guide's `through` point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Travel {
+    /// The first s, m.
+    pub from: f64,
+    /// The last s, m (> `from`).
+    pub to: f64,
+}
+
 /// The `[linkage]` section, read and checked.
 #[derive(Debug, Clone)]
 pub struct LinkageTask {
@@ -147,8 +163,11 @@ pub struct LinkageTask {
     pub working: Working,
     /// Number of equal positions (12 by default).
     pub positions: usize,
-    /// The crank angle for the plans (absolute, rad), if given.
+    /// The crank angle for the plans (absolute, rad), or the slider's s
+    /// (m) for a slider input, if given.
     pub at: Option<f64>,
+    /// The travel of a slider input (`travel` in `[linkage]`); `None` for a crank.
+    pub travel: Option<Travel>,
     /// A full turn (default) or the assembly ranges only.
     pub range: RangeMode,
     /// Where `range` was written, if it was.
@@ -364,10 +383,173 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
     // input
     let inp = sec.input.get_ref();
     spans.insert("input".into(), sec.input.span());
-    spans.insert("input.link".into(), inp.link.span());
-    let cl = inp.link.get_ref().clone();
+    let travel = match (&inp.link, &inp.slider) {
+        (Some(_), Some(sl)) => {
+            return Err(Error::at(task, sl.span(), "linkage.input.slider", "the input is a crank (`link`) or a slider (`slider`), not both")
+                .with_help("input = { link = \"1\", speed = \"900 rpm\" } for a crank, or input = { slider = \"1\", speed = \"0.5 m/s\" } with travel = [\"0 mm\", \"120 mm\"] for a slider"));
+        }
+        (None, None) => {
+            return Err(Error::at(task, sec.input.span(), "linkage.input", "the input needs `link` (a crank) or `slider` (a slider on a fixed guide)")
+                .with_help("input = { link = \"1\", speed = \"900 rpm\" } for a crank, or input = { slider = \"1\", speed = \"0.5 m/s\" } with travel = [\"0 mm\", \"120 mm\"] for a slider"));
+        }
+        (Some(link), None) => {
+            if let Some(t) = &sec.travel {
+                return Err(Error::at(
+                    task,
+                    t.span(),
+                    "linkage.travel",
+                    "a travel is the range of a slider input; this input is a crank",
+                )
+                .with_help("remove `travel`, or drive the mechanism by a slider: input = { slider = \"…\", speed = \"0.5 m/s\" }"));
+            }
+            if let Some(a) = &inp.acceleration {
+                return Err(Error::at(
+                    task,
+                    a.span(),
+                    "linkage.input.acceleration",
+                    "`acceleration` belongs to a slider input; a crank's is `epsilon`",
+                )
+                .with_help("epsilon = \"10 rad/s^2\""));
+            }
+            read_crank(task, &mut def, &mut spans, inp, link)?;
+            None
+        }
+        (None, Some(sl)) => Some(read_slider_input(task, &mut def, &mut spans, &sec, inp, sl)?),
+    };
+    def.output = sec.output.as_ref().map(|o| {
+        spans.insert("output".into(), o.span());
+        o.get_ref().clone()
+    });
+    // hints
+    for (i, h) in sec.assembly.iter().enumerate() {
+        spans.insert(format!("assembly[{i}]"), h.span());
+        let field = format!("linkage.assembly[{i}]");
+        let hint = match h.get_ref() {
+            HintSec::Text(t) => parse_hint(t, &def).map_err(|m| Error::at(task, h.span(), &field, m).with_help("e.g. \"C above AD\", \"C below A-D\", \"C left of AD\", \"C right of AD\", or { point = \"C\", near = [\"0.3 m\", \"0.35 m\"] }"))?,
+            HintSec::Near { point, near } => AssemblyHint { point: point.clone(), kind: HintKind::Near(pair(task, &format!("{field}.near"), &respan(h.span(), near), Dim::Length)?) },
+        };
+        def.hints.push(hint);
+    }
+    def.assembly_angle = match (&sec.assembly_angle, travel) {
+        (Some(a), Some(_)) => {
+            return Err(Error::at(
+                task,
+                a.span(),
+                "linkage.assembly_angle",
+                "a slider input has no crank angle: its assembly hints hold at the start of the travel",
+            )
+            .with_help("remove `assembly_angle`; the hints choose the assembly at the first s of `travel`"));
+        }
+        (Some(a), None) => qty(task, "linkage.assembly_angle", a, Dim::Angle)?,
+        (None, Some(t)) => t.from,
+        (None, None) => 0.0,
+    };
+    if travel.is_some() {
+        for (key, v) in [
+            ("working", sec.working.as_ref().map(|w| w.span())),
+            ("range", sec.range.as_ref().map(|r| r.span())),
+        ] {
+            if let Some(span) = v {
+                return Err(Error::at(
+                    task,
+                    span,
+                    &format!("linkage.{key}"),
+                    format!("`{key}` speaks of a crank's turn; a slider input is analysed over its travel"),
+                )
+                .with_help("remove it; `travel` gives the slider's range"));
+            }
+        }
+    }
+    let working = match sec.working.as_ref() {
+        None => Working::Slower,
+        Some(w) => match w.get_ref().as_str() {
+            "slower" => Working::Slower,
+            "increasing" => Working::Increasing,
+            "decreasing" => Working::Decreasing,
+            other => return Err(Error::at(task, w.span(), "linkage.working", format!("unknown working stroke `{other}`")).with_help("\"slower\" (default: the longer crank angle), \"increasing\" or \"decreasing\" (the output coordinate on the working stroke)")),
+        },
+    };
+    let positions = match &sec.positions {
+        None => 12,
+        Some(p) => {
+            let n = *p.get_ref();
+            if !(1..=MAX_POSITIONS as i64).contains(&n) {
+                return Err(Error::at(task, p.span(), "linkage.positions", format!("{n} positions"))
+                    .with_help(format!("a number from 1 to {MAX_POSITIONS}; the course uses 12")));
+            }
+            n as usize
+        }
+    };
+    let at = match &sec.at {
+        Some(a) => {
+            spans.insert("at".into(), a.span());
+            match travel {
+                None => Some(qty(task, "linkage.at", a, Dim::Angle)?),
+                Some(t) => {
+                    let x = qty(task, "linkage.at", a, Dim::Length)?;
+                    if !(t.from..=t.to).contains(&x) {
+                        return Err(Error::at(
+                            task,
+                            a.span(),
+                            "linkage.at",
+                            format!(
+                                "s = {:.3} mm is outside the travel {:.3} … {:.3} mm",
+                                x * 1e3,
+                                t.from * 1e3,
+                                t.to * 1e3
+                            ),
+                        )
+                        .with_help("for a slider input `at` is the slider's s inside `travel`, e.g. at = \"40 mm\""));
+                    }
+                    Some(x)
+                }
+            }
+        }
+        None => None,
+    };
+    let range = match sec.range.as_ref() {
+        None => RangeMode::Full,
+        Some(r) => match r.get_ref().as_str() {
+            "full" => RangeMode::Full,
+            "partial" => RangeMode::Partial,
+            other => {
+                return Err(Error::at(task, r.span(), "linkage.range", format!("unknown range `{other}`")).with_help(
+                    "\"full\" (default: the crank turns a full revolution) or \"partial\" (only the crank angles where the mechanism assembles)",
+                ));
+            }
+        },
+    };
+    if let (RangeMode::Partial, Some(w)) = (range, sec.working.as_ref()) {
+        return Err(
+            Error::at(task, w.span(), "linkage.working", "a working stroke needs a full turn of the crank")
+                .with_help("remove `working`, or remove range = \"partial\""),
+        );
+    }
+    Ok(Some(LinkageTask {
+        def,
+        working,
+        positions,
+        at,
+        travel,
+        range,
+        range_span: sec.range.as_ref().map(|r| r.span()),
+        spans,
+        section,
+    }))
+}
+
+/// The crank input: `input = { link, pivot, pin, speed, direction, epsilon }`.
+fn read_crank(
+    task: &TaskSource,
+    def: &mut MechanismDef,
+    spans: &mut HashMap<String, Range<usize>>,
+    inp: &InputSec,
+    link: &S<String>,
+) -> Result<(), Error> {
+    spans.insert("input.link".into(), link.span());
+    let cl = link.get_ref().clone();
     let cdef = def.links.iter().find(|l| l.name == cl).ok_or_else(|| {
-        Error::at(task, inp.link.span(), "linkage.input.link", format!("unknown link `{cl}`")).with_help(format!(
+        Error::at(task, link.span(), "linkage.input.link", format!("unknown link `{cl}`")).with_help(format!(
             "links: {}",
             def.links.iter().map(|l| l.name.as_str()).collect::<Vec<_>>().join(", ")
         ))
@@ -385,7 +567,7 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
             .ok_or_else(|| {
                 Error::at(
                     task,
-                    inp.link.span(),
+                    link.span(),
                     "linkage.input.pivot",
                     format!("the crank `{cl}` has no fixed joint"),
                 )
@@ -429,79 +611,86 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
         omega: sign * speed,
         epsilon,
     });
-    def.output = sec.output.as_ref().map(|o| {
-        spans.insert("output".into(), o.span());
-        o.get_ref().clone()
-    });
-    // hints
-    for (i, h) in sec.assembly.iter().enumerate() {
-        spans.insert(format!("assembly[{i}]"), h.span());
-        let field = format!("linkage.assembly[{i}]");
-        let hint = match h.get_ref() {
-            HintSec::Text(t) => parse_hint(t, &def).map_err(|m| Error::at(task, h.span(), &field, m).with_help("e.g. \"C above AD\", \"C below A-D\", \"C left of AD\", \"C right of AD\", or { point = \"C\", near = [\"0.3 m\", \"0.35 m\"] }"))?,
-            HintSec::Near { point, near } => AssemblyHint { point: point.clone(), kind: HintKind::Near(pair(task, &format!("{field}.near"), &respan(h.span(), near), Dim::Length)?) },
-        };
-        def.hints.push(hint);
+    Ok(())
+}
+
+/// The slider input: `input = { slider, speed, acceleration }` with
+/// `travel = [from, to]` in the section. The speed is signed along the
+/// guide's direction (> 0: s increases); the travel must increase.
+fn read_slider_input(
+    task: &TaskSource,
+    def: &mut MechanismDef,
+    spans: &mut HashMap<String, Range<usize>>,
+    sec: &LinkageSec,
+    inp: &InputSec,
+    sl: &S<String>,
+) -> Result<Travel, Error> {
+    spans.insert("input.slider".into(), sl.span());
+    spans.insert("input.link".into(), sl.span());
+    for (key, span) in [
+        ("pivot", inp.pivot.as_ref().map(|x| x.span())),
+        ("pin", inp.pin.as_ref().map(|x| x.span())),
+        ("direction", inp.direction.as_ref().map(|x| x.span())),
+        ("epsilon", inp.epsilon.as_ref().map(|x| x.span())),
+    ] {
+        if let Some(span) = span {
+            return Err(Error::at(
+                task,
+                span,
+                &format!("linkage.input.{key}"),
+                format!("`{key}` belongs to a crank input; this input is the slider `{}`", sl.get_ref()),
+            )
+            .with_help(
+                "a slider input takes `slider`, `speed` (signed along the guide, e.g. \"0.5 m/s\") and `acceleration` (default 0)",
+            ));
+        }
     }
-    def.assembly_angle = match &sec.assembly_angle {
-        Some(a) => qty(task, "linkage.assembly_angle", a, Dim::Angle)?,
+    let speed = qty(task, "linkage.input.speed", &inp.speed, Dim::Velocity)?;
+    spans.insert("input.speed".into(), inp.speed.span());
+    let acceleration = match &inp.acceleration {
+        Some(a) => {
+            spans.insert("input.acceleration".into(), a.span());
+            qty(task, "linkage.input.acceleration", a, Dim::Acceleration)?
+        }
         None => 0.0,
     };
-    let working = match sec.working.as_ref() {
-        None => Working::Slower,
-        Some(w) => match w.get_ref().as_str() {
-            "slower" => Working::Slower,
-            "increasing" => Working::Increasing,
-            "decreasing" => Working::Decreasing,
-            other => return Err(Error::at(task, w.span(), "linkage.working", format!("unknown working stroke `{other}`")).with_help("\"slower\" (default: the longer crank angle), \"increasing\" or \"decreasing\" (the output coordinate on the working stroke)")),
-        },
-    };
-    let positions = match &sec.positions {
-        None => 12,
-        Some(p) => {
-            let n = *p.get_ref();
-            if !(1..=MAX_POSITIONS as i64).contains(&n) {
-                return Err(Error::at(task, p.span(), "linkage.positions", format!("{n} positions"))
-                    .with_help(format!("a number from 1 to {MAX_POSITIONS}; the course uses 12")));
-            }
-            n as usize
-        }
-    };
-    let at = match &sec.at {
-        Some(a) => {
-            spans.insert("at".into(), a.span());
-            Some(qty(task, "linkage.at", a, Dim::Angle)?)
-        }
-        None => None,
-    };
-    let range = match sec.range.as_ref() {
-        None => RangeMode::Full,
-        Some(r) => match r.get_ref().as_str() {
-            "full" => RangeMode::Full,
-            "partial" => RangeMode::Partial,
-            other => {
-                return Err(Error::at(task, r.span(), "linkage.range", format!("unknown range `{other}`")).with_help(
-                    "\"full\" (default: the crank turns a full revolution) or \"partial\" (only the crank angles where the mechanism assembles)",
-                ));
-            }
-        },
-    };
-    if let (RangeMode::Partial, Some(w)) = (range, sec.working.as_ref()) {
-        return Err(
-            Error::at(task, w.span(), "linkage.working", "a working stroke needs a full turn of the crank")
-                .with_help("remove `working`, or remove range = \"partial\""),
-        );
+    let t = sec.travel.as_ref().ok_or_else(|| {
+        Error::at(
+            task,
+            sl.span(),
+            "linkage.travel",
+            "a slider input needs its travel: the s range to analyse",
+        )
+        .with_help("travel = [\"0 mm\", \"120 mm\"] in [linkage] (s along the guide from its `through` point)")
+    })?;
+    spans.insert("travel".into(), t.span());
+    let ends = t.get_ref();
+    if ends.len() != 2 {
+        return Err(Error::at(
+            task,
+            t.span(),
+            "linkage.travel",
+            format!("expected two values [from, to], found {}", ends.len()),
+        )
+        .with_help("travel = [\"0 mm\", \"120 mm\"]"));
     }
-    Ok(Some(LinkageTask {
-        def,
-        working,
-        positions,
-        at,
-        range,
-        range_span: sec.range.as_ref().map(|r| r.span()),
-        spans,
-        section,
-    }))
+    let from = qty(task, "linkage.travel[0]", &ends[0], Dim::Length)?;
+    let to = qty(task, "linkage.travel[1]", &ends[1], Dim::Length)?;
+    if from >= to {
+        return Err(Error::at(
+            task,
+            t.span(),
+            "linkage.travel",
+            format!("the travel must increase: from {:.3} mm to {:.3} mm does not", from * 1e3, to * 1e3),
+        )
+        .with_help("give [from, to] with from < to; the direction of motion is the sign of `speed`"));
+    }
+    def.slider_input = Some(SliderInputDef {
+        link: sl.get_ref().clone(),
+        speed,
+        acceleration,
+    });
+    Ok(Travel { from, to })
 }
 
 /// A point on a link from one of its forms; `None` while a referenced point

@@ -10,6 +10,17 @@ use super::{Analysis, Loaded};
 /// The report: structure, cycle, the positions table and the velocities of
 /// every point at the plan position.
 pub fn report(l: &Loaded, a: &Analysis) -> String {
+    if let Some(t) = a.travel {
+        return super::travel::report(l, a, t);
+    }
+    let mut o = structure(l);
+    crank_tables(&mut o, l, a);
+    o
+}
+
+/// The structure (n, p5, W, the formula, the groups, the class) and the
+/// geometry as analysed.
+pub(super) fn structure(l: &Loaded) -> String {
     let m = &l.mech;
     let s = &m.structure;
     let mut o = String::new();
@@ -39,6 +50,12 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
     }
     let _ = writeln!(o, "  class of the mechanism: {}", tmm_linkage::structure::roman(s.class));
     geometry(&mut o, l);
+    o
+}
+
+/// The cycle, the positions and the points of a crank-driven mechanism.
+fn crank_tables(o: &mut String, l: &Loaded, a: &Analysis) {
+    let m = &l.mech;
     let out = a.reading.output;
     let unit = if out.kind == OutputKind::Linear { "m" } else { "rad" };
     let _ = writeln!(
@@ -52,10 +69,10 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
         }
     );
     if let Some(c) = &a.cycle {
-        full_cycle(&mut o, c);
+        full_cycle(o, c);
     }
     if let Some(p) = &a.partial {
-        partial_cycle(&mut o, p, out.kind);
+        partial_cycle(o, p, out.kind);
     }
     for &(p, v, phi) in &a.pressure_max {
         let _ = writeln!(
@@ -93,6 +110,12 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
     }
     let r = &a.plan_row;
     let _ = writeln!(o, "\nPOINTS at φ = {:.4}° (m, m/s, m/s²)", r.pos.phi.to_degrees());
+    points_table(o, l, r);
+}
+
+/// Every point's position, speed, acceleration and pressure angle at one row.
+pub(super) fn points_table(o: &mut String, l: &Loaded, r: &super::Row) {
+    let m = &l.mech;
     let _ = writeln!(
         o,
         "  {:>6} {:>10} {:>10} {:>10} {:>11} {:>11}",
@@ -117,7 +140,6 @@ pub fn report(l: &Loaded, a: &Analysis) -> String {
             pa
         );
     }
-    o
 }
 
 /// The dead positions, Kv and stroke of a full turn.
@@ -217,7 +239,7 @@ fn geometry(o: &mut String, l: &Loaded) {
         let _ = writeln!(o, "  frame: {}", v.join(", "));
     }
     let w = l.mech.crank.omega.abs();
-    if w > 0.0 {
+    if w > 0.0 && l.mech.drive.is_none() {
         let t = std::f64::consts::TAU / w;
         let _ = writeln!(
             o,
