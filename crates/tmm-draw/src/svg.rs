@@ -25,9 +25,14 @@ pub const FONT_FAMILY: &str = "osifont, 'DejaVu Sans', Arial, sans-serif";
 /// (75° to the baseline).
 pub const SLANT_DEG: f64 = 15.0;
 
-/// The capital height of osifont as a fraction of its em (1510/2048 units:
-/// the height of "H"), so a font-size of h / CAP_EM gives capitals h mm high.
-pub const CAP_EM: f64 = 1510.0 / 2048.0;
+/// The capital height per em of the lowest-capped face the SVG may be
+/// printed in: osifont 1510/2048 = 0.737 (named first), DejaVu Sans
+/// 0.729, and the faces a PDF typesetter without them falls back to, New
+/// Computer Modern 683/1000 and Libertinus Serif 658/1000, its italic
+/// 645/1000 (each font's OS/2 `sCapHeight` over its units per em). A
+/// font-size of h / CAP_EM gives capitals at least h mm high in every one
+/// of them (h · 0.737 / 0.645 = 1.14 h in osifont).
+pub const CAP_EM: f64 = 0.645;
 
 /// A number for SVG: at most three decimals, no trailing zeros, no "-0".
 pub fn num(v: f64) -> String {
@@ -202,13 +207,27 @@ impl Svg {
 pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
     let ih = h.index();
     let isize = num(ih.mm() / CAP_EM);
+    // each run set to type B's width at its height (GOST 2.304, table 2):
+    // a face wider than type B prints the standard's letter widths, so a
+    // text wrapped to fit a cell by them fits it printed
+    let len = |s: &str, h: crate::TextHeight| {
+        format!(
+            " textLength=\"{}\" lengthAdjust=\"spacingAndGlyphs\"",
+            num(s.chars().map(|c| h.advance(c)).sum::<f64>())
+        )
+    };
     let mut o = String::new();
     for sp in &r.spans {
-        let _ = write!(o, "<tspan>{}</tspan>", esc(&sp.base));
+        if sp.base.is_empty() {
+            o.push_str("<tspan></tspan>");
+        } else {
+            let _ = write!(o, "<tspan{}>{}</tspan>", len(&sp.base, h), esc(&sp.base));
+        }
         if let Some(sup) = &sp.sup {
             let _ = write!(
                 o,
-                "<tspan font-size=\"{isize}\" baseline-shift=\"{}\">{}</tspan>",
+                "<tspan font-size=\"{isize}\"{} baseline-shift=\"{}\">{}</tspan>",
+                len(sup, ih),
                 num(0.5 * h.mm()),
                 esc(sup)
             );
@@ -220,7 +239,8 @@ pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
             };
             let _ = write!(
                 o,
-                "<tspan font-size=\"{isize}\"{back} baseline-shift=\"{}\">{}</tspan>",
+                "<tspan font-size=\"{isize}\"{back}{} baseline-shift=\"{}\">{}</tspan>",
+                len(sub, ih),
                 num(-h.mm() / 3.0),
                 esc(sub)
             );

@@ -22,26 +22,27 @@ use crate::svg::Style;
 /// wherever it is printed.
 pub const CAP_PER_EM: f64 = 0.645;
 /// The letter size (em, mm) whose capitals are GOST 2.304's smallest
-/// height, 2.5 mm, in every face that may print it: the floor of the
-/// drawings made for the note ([`with_lettering_floor`]).
+/// height, 2.5 mm, in every face that may print it: the floor of every
+/// drawing, on the sheets and in the note ([`lettering_floor`]).
 pub const MIN_EM: f64 = 2.5 / CAP_PER_EM;
 
 thread_local! {
-    /// The smallest letter size the SVG writer puts down, mm (0: none).
-    static FLOOR: std::cell::Cell<f64> = const { std::cell::Cell::new(0.0) };
+    /// The smallest letter size the SVG writer puts down, mm.
+    static FLOOR: std::cell::Cell<f64> = const { std::cell::Cell::new(MIN_EM) };
 }
 
 /// Run `f` with every text and index its drawings write raised to at
-/// least `floor` mm (em): the note's drawings are made with
-/// [`MIN_EM`], so no capital in the note prints under 2.5 mm. The sheets'
-/// drawings keep their sizes (their layouts are laid out and tested at
-/// them; raising them too is still to do).
+/// least `floor` mm (em) instead of [`MIN_EM`]. Every drawing — the
+/// sheets', the note's, the page's — is made with [`MIN_EM`], so no
+/// capital prints under 2.5 mm; the text boxes the labels are placed by
+/// ([`Placer`], [`crate::svg::text_box`]) are measured at the raised size,
+/// so the labels keep apart at the size they print.
 ///
 /// ```
 /// use tmm_report::labels::{lettering_floor, with_lettering_floor, MIN_EM};
-/// assert_eq!(lettering_floor(), 0.0);
-/// assert_eq!(with_lettering_floor(MIN_EM, lettering_floor), MIN_EM);
-/// assert_eq!(lettering_floor(), 0.0);
+/// assert_eq!(lettering_floor(), MIN_EM);
+/// assert_eq!(with_lettering_floor(0.0, lettering_floor), 0.0);
+/// assert_eq!(lettering_floor(), MIN_EM);
 /// ```
 pub fn with_lettering_floor<T>(floor: f64, f: impl FnOnce() -> T) -> T {
     let before = FLOOR.with(|c| c.replace(floor));
@@ -50,7 +51,7 @@ pub fn with_lettering_floor<T>(floor: f64, f: impl FnOnce() -> T) -> T {
     out
 }
 
-/// The smallest letter size the SVG writer puts down now, mm (0: none).
+/// The smallest letter size the SVG writer puts down now, mm.
 pub fn lettering_floor() -> f64 {
     FLOOR.with(std::cell::Cell::get)
 }
@@ -204,6 +205,13 @@ impl Rect {
     }
 }
 
+/// The box of a label of `chars` visible characters written at `h` mm
+/// (its letter size raised to the lettering floor, [`crate::picture::em`],
+/// as the SVG writes it), centred at `c` (paper mm).
+pub fn text_label_box(c: (f64, f64), chars: usize, h: f64) -> Rect {
+    label_box(c, chars, crate::picture::em(h))
+}
+
 /// The box of a label of `chars` visible characters, `h` mm lettering,
 /// centred at `c` (paper mm): width `CHAR_WIDTH·h·chars`, height `1.2·h`.
 pub fn label_box(c: (f64, f64), chars: usize, h: f64) -> Rect {
@@ -283,7 +291,8 @@ impl Placer {
     /// place within 45 mm fits (nothing is written).
     pub fn place_near(&mut self, anchors: &[(f64, f64)], text: &str, h: f64, color: &str) -> Option<Near> {
         let n = plain(text).chars().count();
-        let (w, hh) = (CHAR_WIDTH * h * n as f64, 1.2 * h);
+        let e = crate::picture::em(h);
+        let (w, hh) = (CHAR_WIDTH * e * n as f64, 1.2 * e);
         for d in NEAR_MM {
             for &p in anchors.iter().filter(|p| p.0.is_finite() && p.1.is_finite()) {
                 for k in 0..16 {
@@ -326,7 +335,7 @@ impl Placer {
 
     /// Would a label of `text` at `h` fit centred at `c`?
     pub fn fits(&self, c: (f64, f64), text: &str, h: f64) -> bool {
-        let b = label_box(c, plain(text).chars().count(), h);
+        let b = text_label_box(c, plain(text).chars().count(), h);
         b.inside(&self.paper) && !self.taken.iter().any(|t| t.hits(&b, 0.4)) && !self.lines.as_ref().is_some_and(|g| g.hits(&b))
     }
 
@@ -355,9 +364,9 @@ impl Placer {
 
     fn write(&mut self, c: (f64, f64), text: &str, h: f64, color: &str, start: bool) {
         let n = plain(text).chars().count();
-        let w = CHAR_WIDTH * h * n as f64;
+        let w = CHAR_WIDTH * crate::picture::em(h) * n as f64;
         let centre = if start { (c.0 + 0.5 * w, c.1) } else { c };
-        self.taken.push(label_box(centre, n, h));
+        self.taken.push(text_label_box(centre, n, h));
         self.items.push(crate::picture::Element::Label {
             c,
             text: text.to_string(),
@@ -370,8 +379,9 @@ impl Placer {
     /// Candidate centres around a point `p` (paper mm) for a label of
     /// `text`: right, above-right, above, left, below … at `gap` mm clear.
     pub fn around(p: (f64, f64), text: &str, h: f64, gap: f64) -> Vec<(f64, f64)> {
-        let w = CHAR_WIDTH * h * plain(text).chars().count() as f64;
-        let (dx, dy) = (0.5 * w + gap, 0.6 * h + gap);
+        let e = crate::picture::em(h);
+        let w = CHAR_WIDTH * e * plain(text).chars().count() as f64;
+        let (dx, dy) = (0.5 * w + gap, 0.6 * e + gap);
         let mut v = Vec::new();
         for k in 1..=3 {
             let f = k as f64;
@@ -420,4 +430,57 @@ pub fn finish_all(pic: Picture, placers: &[&Placer], scale: Option<&str>) -> Pic
     let more: Vec<crate::picture::Element> = placers.iter().flat_map(|p| p.items.iter().cloned()).collect();
     let root = scale.map(|sc| vec![("data-scale".to_string(), sc.to_string())]).unwrap_or_default();
     pic.extended(more, root)
+}
+
+/// `text` (with `_`/`^` index marks) broken at spaces into lines each no
+/// wider than `room` mm at the letter size `size` as printed
+/// ([`crate::svg::text_width`], at the lettering floor); a space inside an
+/// index group (`T_{I max}`) does not break; a word wider than the room
+/// keeps a line of its own.
+///
+/// ```
+/// use tmm_report::labels::wrap_text;
+/// let lines = wrap_text("крайнее положение; выбранная опора T_{I max}", 2.5, 40.0);
+/// assert!(lines.len() >= 2);
+/// assert!(lines.iter().any(|l| l.contains("T_{I max}")));
+/// assert_eq!(wrap_text("O", 2.5, 40.0), vec!["O".to_string()]);
+/// ```
+pub fn wrap_text(text: &str, size: f64, room: f64) -> Vec<String> {
+    // the words: split at spaces outside braces
+    let mut words: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    let mut depth = 0i32;
+    for ch in text.chars() {
+        match ch {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            _ => {}
+        }
+        if ch == ' ' && depth <= 0 {
+            words.push(std::mem::take(&mut cur));
+        } else {
+            cur.push(ch);
+        }
+    }
+    words.push(cur);
+    let width = |s: &str| crate::svg::text_width(size, crate::svg::shown_len(s));
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for w in words {
+        if line.is_empty() {
+            line = w;
+            continue;
+        }
+        let cand = format!("{line} {w}");
+        if width(cand.trim_end()) <= room {
+            line = cand;
+        } else {
+            lines.push(std::mem::take(&mut line).trim_end().to_string());
+            line = w;
+        }
+    }
+    if !line.trim().is_empty() || lines.is_empty() {
+        lines.push(line.trim_end().to_string());
+    }
+    lines
 }

@@ -518,51 +518,91 @@ impl Canvas {
         text_box(at, size_mm, Anchor::Middle, n)
     }
 
+    /// [`Canvas::label`], the places tried first in the direction
+    /// `toward` (radians from the x axis, y up): a position number out
+    /// along its crank, away from the lines that meet at the pivot. The
+    /// nearest place clear of every line and text in the directions
+    /// nearest `toward` is taken, then the least crowded.
+    pub fn label_toward(&mut self, at: (f64, f64), toward: f64, text: &str, size_mm: f64, color: &str) -> Rect {
+        let p = self.to_paper(at.0, at.1);
+        let n = shown_len(text);
+        let at = self
+            .best_spot_from(p, n, size_mm, &[0.8, 2.0, 3.5, 5.5, 8.0], false, Some(toward))
+            .map_or(p, |b| b.at);
+        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
+        text_box(at, size_mm, Anchor::Middle, n)
+    }
+
     /// The best place for a label of `n` characters around the paper point
     /// `p`, its nearest edge at one of the distances `dists`: the fewest
     /// lines and boxes hit (the paper's edge counting 1000), then the
     /// nearest. With `lead`, the leader from the box to the point counts a
     /// hit for every text box it crosses.
     fn best_spot(&self, p: (f64, f64), n: usize, size_mm: f64, dists: &[f64], lead: bool) -> Option<Spot> {
+        self.best_spot_from(p, n, size_mm, dists, lead, None)
+    }
+
+    /// [`Canvas::best_spot`]; with `toward`, the sixteen directions are
+    /// tried nearest that angle first, and a clear place in a direction
+    /// within 45° of it is preferred to a nearer one farther round.
+    fn best_spot_from(&self, p: (f64, f64), n: usize, size_mm: f64, dists: &[f64], lead: bool, toward: Option<f64>) -> Option<Spot> {
         let w = text_width(size_mm, n);
-        let (up, down) = (TEXT_ASCENT * size_mm, TEXT_DESCENT * size_mm);
+        let e = crate::picture::em(size_mm);
+        let (up, down) = (TEXT_ASCENT * e, TEXT_DESCENT * e);
         let h = up + down;
         let mut best: Option<Spot> = None;
-        for &d in dists {
-            for k in 0..16 {
-                let th = std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4;
-                let (c, s) = (th.cos(), th.sin());
-                // the box's centre so that its nearest edge is `d` from the point
-                let cx = p.0 + c * (d + 0.5 * w * c.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
-                let cy = p.1 - s * (d + 0.5 * h * s.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
-                let at = (cx, cy + 0.5 * h - down);
-                let r = Rect {
-                    x0: cx - 0.5 * w,
-                    y0: cy - 0.5 * h,
-                    x1: cx + 0.5 * w,
-                    y1: cy + 0.5 * h,
-                };
-                let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
-                let mut hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
-                    + self.segs.count((r.x0, r.y0, r.x1, r.y1), |s| r.cuts(s.0, s.1))
-                    + if inside { 0 } else { 1000 };
-                if lead {
-                    let from = (p.0 + c * (d - 0.3), p.1 - s * (d - 0.3));
-                    let at_p = |b: &&Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
-                    hits += self.boxes.iter().filter(|b| !at_p(b) && b.cuts(from, p)).count();
-                }
-                let cost = d + 0.01 * k as f64;
-                if best.is_none_or(|b| (hits, cost) < (b.hits, b.cost)) {
-                    best = Some(Spot {
-                        hits,
-                        cost,
-                        at,
-                        d,
-                        dir: (c, s),
-                    });
-                }
-                if hits == 0 {
-                    return best;
+        let step = std::f64::consts::TAU / 16.0;
+        // with a preferred direction: the three directions nearest it at
+        // every distance first, then all sixteen
+        let rounds: &[(usize, usize)] = if toward.is_some() { &[(0, 3), (3, 16)] } else { &[(0, 16)] };
+        for &(k_from, k_to) in rounds {
+            for &d in dists {
+                for k in k_from..k_to {
+                    let th = match toward {
+                        // 0, +1, −1, +2, −2 … steps from `toward`
+                        Some(a) => a + step * (if k % 2 == 1 { k.div_ceil(2) as f64 } else { -((k / 2) as f64) }),
+                        None => std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4,
+                    };
+                    let (c, s) = (th.cos(), th.sin());
+                    // the box's centre so that its nearest edge is `d` from the point
+                    let cx = p.0 + c * (d + 0.5 * w * c.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
+                    let cy = p.1 - s * (d + 0.5 * h * s.abs().min(1.0) / c.abs().max(s.abs()).max(1e-9));
+                    let at = (cx, cy + 0.5 * h - down);
+                    let r = Rect {
+                        x0: cx - 0.5 * w,
+                        y0: cy - 0.5 * h,
+                        x1: cx + 0.5 * w,
+                        y1: cy + 0.5 * h,
+                    };
+                    let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
+                    // the lines kept 0.15 mm off the box (a line grazing its corner counts)
+                    let rl = Rect {
+                        x0: r.x0 - 0.15,
+                        y0: r.y0 - 0.15,
+                        x1: r.x1 + 0.15,
+                        y1: r.y1 + 0.15,
+                    };
+                    let mut hits = self.boxes.iter().filter(|b| b.overlaps(&r)).count()
+                        + self.segs.count((rl.x0, rl.y0, rl.x1, rl.y1), |s| rl.cuts(s.0, s.1))
+                        + if inside { 0 } else { 1000 };
+                    if lead {
+                        let from = (p.0 + c * (d - 0.3), p.1 - s * (d - 0.3));
+                        let at_p = |b: &&Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
+                        hits += self.boxes.iter().filter(|b| !at_p(b) && b.cuts(from, p)).count();
+                    }
+                    let cost = d + 0.01 * k as f64;
+                    if best.is_none_or(|b| (hits, cost) < (b.hits, b.cost)) {
+                        best = Some(Spot {
+                            hits,
+                            cost,
+                            at,
+                            d,
+                            dir: (c, s),
+                        });
+                    }
+                    if hits == 0 {
+                        return best;
+                    }
                 }
             }
         }
@@ -604,8 +644,10 @@ pub const TEXT_DESCENT: f64 = 0.35;
 /// The estimated width of `n` characters of lettering `size` mm high: 0.6 of
 /// the height per character (GOST 2.304 type A is 5/7 wide at most for
 /// capitals, less for lower case and digits; subscripts are smaller).
+/// The size is the one written, raised to the lettering floor
+/// ([`crate::picture::em`]).
 pub fn text_width(size: f64, n: usize) -> f64 {
-    0.6 * size * n as f64
+    0.6 * crate::picture::em(size) * n as f64
 }
 
 /// A box on paper, mm, y down.
@@ -652,6 +694,7 @@ impl Rect {
 /// The box of a text of `n` characters written at `at` (its baseline point).
 pub fn text_box(at: (f64, f64), size: f64, anchor: Anchor, n: usize) -> Rect {
     let w = text_width(size, n);
+    let size = crate::picture::em(size);
     let x0 = match anchor {
         Anchor::Start => at.0,
         Anchor::Middle => at.0 - 0.5 * w,

@@ -21,13 +21,20 @@ fn indices_are_tspans_with_a_baseline_shift() {
     let a = svg::render(&sample::scene());
     // K_v at 3.5 mm: "v" is a 2.5 mm index lowered by a third of 3.5 mm
     assert!(
-        a.contains("<tspan>K</tspan><tspan font-size=\"3.391\" baseline-shift=\"-1.167\">v</tspan>"),
+        a.contains(
+            "<tspan textLength=\"2.8\" lengthAdjust=\"spacingAndGlyphs\">K</tspan><tspan font-size=\"3.876\" textLength=\"1.75\" lengthAdjust=\"spacingAndGlyphs\" baseline-shift=\"-1.167\">v</tspan>"
+        ),
         "{a}"
     );
     assert!(a.contains(">ур</tspan>"));
-    // the capital height of a 3.5 mm text: font-size × osifont's cap/em
-    assert!(a.contains("font-size=\"4.747\""));
-    assert!((4.747 * svg::CAP_EM - 3.5).abs() < 1e-3);
+    // a 3.5 mm text's font size gives capitals of at least 3.5 mm in the
+    // lowest-capped face that may print it, Libertinus Serif Italic
+    // (OS/2 sCapHeight 645 of 1000 units), and more in the others
+    assert!(a.contains("font-size=\"5.426\""));
+    assert!((5.426_f64 * 0.645 - 3.5).abs() < 1e-3);
+    for cap_per_em in [1510.0 / 2048.0, 0.729, 0.683, 0.658, 0.645] {
+        assert!(5.426 * cap_per_em >= 3.5 - 1e-3);
+    }
 }
 
 /// With `TMM_DRAW_DUMP=DIR`, the sample scene is written there as SVG and

@@ -211,7 +211,7 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
             let (_, yl) = map(0.0, l.value);
             c.line_paper((x0, yl), (x1, yl), Style::DASHED.colored("#c62828"));
             let n = crate::labels::plain(&l.label).chars().count() as f64;
-            let wl = crate::labels::CHAR_WIDTH * H_SMALL * n;
+            let wl = crate::labels::CHAR_WIDTH * crate::picture::em(H_SMALL) * n;
             let cands: Vec<(f64, f64)> = (0..12)
                 .flat_map(|j| {
                     let x = x1 - 0.5 * wl - 8.0 * j as f64;
@@ -230,13 +230,16 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
             let tip = (xp, yz - a.sign.signum() * len);
             c.arrow_paper((xp, yz), tip, Style::THIN.widened(0.35).colored("#c62828"), 2.5);
             let n = crate::labels::plain(&a.label).chars().count() as f64;
-            let wl = crate::labels::CHAR_WIDTH * H_SMALL * n;
-            let cands: Vec<(f64, f64)> = [1.0, -1.0]
+            let wl = crate::labels::CHAR_WIDTH * crate::picture::em(H_SMALL) * n;
+            // beside the arrow first, then farther along and off it
+            let cands: Vec<(f64, f64)> = [0.0, 8.0, 16.0]
                 .iter()
-                .flat_map(|&s| {
-                    [0.0, 4.0, -4.0, 8.0, -8.0]
-                        .map(|dy| (xp + s * (0.5 * wl + 1.5), tip.1 + dy))
-                        .into_iter()
+                .flat_map(|&dx| {
+                    [1.0, -1.0].into_iter().flat_map(move |s| {
+                        [0.0, 4.0, -4.0, 8.0, -8.0, 12.0, -12.0, 16.0, -16.0]
+                            .map(|dy| (xp + s * (0.5 * wl + 1.5 + dx), tip.1 + dy))
+                            .into_iter()
+                    })
                 })
                 .collect();
             lab.place(&cands, &a.label, H_SMALL, "#c62828");

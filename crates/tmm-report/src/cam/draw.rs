@@ -574,7 +574,16 @@ pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) ->
         if let Some(st) = st {
             c.line_paper((lx, ly), (lx + 10.0, ly), st);
         }
-        lab.put_left((lx + 12.0, ly), &t, 3.0, "#000");
+        // broken into lines that stay on the paper at the printed size (the
+        // labels' boxes are CHAR_WIDTH = 0.62 of it a letter, the
+        // wrapping's 0.6: 4 % narrower room)
+        let lines = crate::labels::wrap_text(&t, 3.0, 0.96 * (pw - lx - 12.0 - 0.6));
+        for (i, l) in lines.iter().enumerate() {
+            if i > 0 {
+                ly += 1.25 * crate::picture::em(3.0);
+            }
+            lab.put_left((lx + 12.0, ly), l, 3.0, "#000");
+        }
     }
     finish(c.finish(), &lab, Some(scale.text))
 }

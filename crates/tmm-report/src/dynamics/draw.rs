@@ -41,8 +41,12 @@ const LEFT: f64 = 17.0;
 pub const TOP: f64 = 21.0;
 #[doc(hidden)]
 pub const BOTTOM: f64 = 11.0;
+/// The baseline of the x axis' numbers under the frame, mm.
+const X_TICKS: f64 = 4.2;
 /// The room right of the frame: the names of the marked levels and the legend.
 const RIGHT: f64 = 62.0;
+/// The legend column's start right of the frame, mm.
+const LEGEND_X: f64 = 13.0;
 /// The grid step on paper, mm: the ticks stand at whole multiples of 10·μ.
 const GRID: f64 = 10.0;
 
@@ -215,20 +219,22 @@ impl Chart {
                     let (px, _) = ch.map(*phi, 0.0);
                     grid.push(((px, fy), (px, y1)));
                     let n = if *phi >= xr.1 - 1e-9 { marks.len() } else { i };
-                    ch.c.rich_paper((px, y1 + 4.2), &n.to_string(), H_SMALL, Anchor::Middle, "#000");
+                    ch.c.rich_paper((px, y1 + X_TICKS), &n.to_string(), H_SMALL, Anchor::Middle, "#000");
                 }
-                ch.c.rich_paper((x1 + 3.0, y1 + 4.2), "φ", H_LABEL, Anchor::Start, "#000");
+                ch.c.rich_paper((x1 + 3.0, y1 + X_TICKS), "φ", H_LABEL, Anchor::Start, "#000");
             }
             XKind::Other(s, u) => {
                 for k in 0..=x.steps() {
                     let v = x.grid(k);
                     let (px, _) = ch.map(v, 0.0);
                     grid.push(((px, fy), (px, y1)));
-                    if k % 2 == 0 {
-                        ch.c.rich_paper((px, y1 + 4.2), &num(v, x.decimals(), lang), H_SMALL, Anchor::Middle, "#000");
+                    // every second tick; not the frame's corner, where the
+                    // lowest y number stands
+                    if k % 2 == 0 && k > 0 {
+                        ch.c.rich_paper((px, y1 + X_TICKS), &num(v, x.decimals(), lang), H_SMALL, Anchor::Middle, "#000");
                     }
                 }
-                ch.c.rich_paper((x1, y1 + 8.6), &format!("{s}, {u}"), H_SMALL + 0.5, Anchor::End, "#000");
+                ch.c.rich_paper((x1, y1 + X_TICKS + 4.8), &format!("{s}, {u}"), H_SMALL + 0.5, Anchor::End, "#000");
             }
         }
         let thin = Style::THIN.widened(0.1).colored("#bbbbbb");
@@ -318,19 +324,27 @@ impl Chart {
             return;
         }
         let (x1, _) = self.corner();
-        let x = x1 + 13.0;
+        let x = x1 + LEGEND_X;
         let y = self.fy + 3.0 + 5.0 * self.legend as f64;
         self.c.line_paper((x, y - 0.9), (x + 6.0, y - 0.9), s);
-        self.c.rich_paper((x + 7.5, y), name, H_SMALL, Anchor::Start, "#000");
-        self.legend += 1;
+        self.legend_lines(x + 7.5, name);
     }
 
     /// A text line in the legend's column, with no sample line.
     fn note(&mut self, text: &str) {
         let (x1, _) = self.corner();
-        let y = self.fy + 3.0 + 5.0 * self.legend as f64;
-        self.c.rich_paper((x1 + 13.0, y), text, H_SMALL, Anchor::Start, "#000");
-        self.legend += 1;
+        self.legend_lines(x1 + LEGEND_X, text);
+    }
+
+    /// `text` in the legend's column from `x`, on the next rows, broken
+    /// into lines that stay on the paper.
+    fn legend_lines(&mut self, x: f64, text: &str) {
+        let room = self.c.size().0 - x - 0.5;
+        for line in crate::labels::wrap_text(text, H_SMALL, room) {
+            let y = self.fy + 3.0 + 5.0 * self.legend as f64;
+            self.c.rich_paper((x, y), &line, H_SMALL, Anchor::Start, "#000");
+            self.legend += 1;
+        }
     }
 
     /// A dashed level across the frame, its name right of the frame at its
@@ -346,17 +360,21 @@ impl Chart {
         let (x1, _) = self.corner();
         let (_, py) = self.map(self.x.lo, v);
         self.c.line_paper((self.fx, py), (x1, py), s);
-        let mut at = py + 0.9;
+        // the name inside the frame at its right end, over the line (the
+        // legend's column right of the frame has no room for it at the
+        // printed size), one printed line clear of the names above
+        let step = (1.2 * crate::picture::em(H_SMALL)).max(3.2);
+        let mut at = py - 0.8;
         for l in &self.levels {
-            if (at - l).abs() < 3.2 {
-                at = l + 3.2;
+            if (at - l).abs() < step {
+                at = l + step;
             }
         }
-        // above the row of the positions' numbers under the frame
+        // under the frame's top and above its bottom
         let (_, y1) = self.corner();
-        at = at.min(y1);
+        at = at.clamp(self.fy + 0.85 * crate::picture::em(H_SMALL) + 0.5, y1 - 0.5);
         self.levels.push(at);
-        self.c.rich_paper((x1 + 1.0, at), name, H_SMALL, Anchor::Start, color);
+        self.c.rich_paper((x1 - 1.0, at), name, H_SMALL, Anchor::End, color);
         self.legend_entry(&format!("{name} = {value}"), s);
     }
 
@@ -556,15 +574,18 @@ fn wittenbauer(d: &Dynamics, lang: Language, sheet: SheetFormat) -> Picture {
     let top = ch.y.lo + ch.y.len * ch.y.mu;
     let right = ch.x.lo + ch.x.len * ch.x.mu;
     let bx = (ch.x.lo, right, ch.y.lo, top);
-    for (t, color, name, up) in [(&w.upper, RED, "ω_{max}^{2}/2", true), (&w.lower, BLUE, "ω_{min}^{2}/2", false)] {
+    let tangents = [(&w.upper, RED, "ω_{max}^{2}/2"), (&w.lower, BLUE, "ω_{min}^{2}/2")];
+    for (t, color, name) in tangents {
         if let Some(seg) = clip(t.slope, t.intercept, bx) {
             ch.curve(&[seg.0, seg.1], color, &format!("{name} = {} {u_s}", num(t.slope, 1, lang)), None);
         }
-        let _ = up;
-        ch.mark(t.inertia, t.energy, &format!("φ = {}°", num(t.phi.to_degrees(), 1, lang)), color);
     }
+    // the legend's notes before the touching points' labels, which keep off them
     ch.note(&wd("off_drawing"));
     ch.note(&format!("I_I = {} {u_i}", num(d.required.wittenbauer, 5, lang)));
+    for (t, color, _) in tangents {
+        ch.mark(t.inertia, t.energy, &format!("φ = {}°", num(t.phi.to_degrees(), 1, lang)), color);
+    }
     ch.finish()
 }
 

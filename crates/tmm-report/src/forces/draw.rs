@@ -183,13 +183,24 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
     }
     c.root_attr("data-mu-f", &format!("{mu_poly}"));
     c.rich_paper((w / 2.0, 8.0), title, H_TITLE, Anchor::Middle, "#000000");
+    // the angle and both scale factors in two lines under the title
     c.rich_paper(
-        (w / 2.0, 15.0),
+        (w / 2.0, 14.0),
         &format!(
-            "φ = {}°;  μ_F = {} {u} ({}),  μ_F = {} {u} ({})",
+            "φ = {}°;  μ_F = {} {u} ({}),",
             num(r.phi.to_degrees(), 1, lang),
             mu_text(mu_body, lang),
             word(lang, "forces.on_body"),
+            u = word(lang, "forces.unit_n_per_mm"),
+        ),
+        H_LABEL - 0.5,
+        Anchor::Middle,
+        "#000",
+    );
+    c.rich_paper(
+        (w / 2.0, 19.5),
+        &format!(
+            "μ_F = {} {u} ({})",
             mu_text(mu_poly, lang),
             word(lang, "forces.in_polygon"),
             u = word(lang, "forces.unit_n_per_mm"),

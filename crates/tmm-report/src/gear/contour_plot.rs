@@ -73,11 +73,16 @@ fn line_name(b: &Boundary, lang: Language) -> String {
 /// ```
 pub fn plot_canvas(c: &Contour, sheet: SheetFormat) -> Canvas {
     let (pw, ph) = slot_mm(Slot::Small, sheet);
-    let h = if pw >= 190.0 { 3.5 } else { 2.5 };
-    let hs = 2.5;
+    // the letter sizes as printed (raised to the lettering floor), so the
+    // margins and the rows are laid out for them
+    let h = crate::picture::em(if pw >= 190.0 { 3.5 } else { 2.5 });
+    let hs = crate::picture::em(2.5);
     let mut cv = Canvas::new(pw, ph);
-    let legend_w = 0.34 * pw;
-    let (left, bottom) = (10.0 + 2.0 * hs, 6.0 + 2.5 * h);
+    // the legend's column: wider on the small paper of A2, where its
+    // names wrap at the printed letter size
+    let legend_w = if pw >= 190.0 { 0.34 } else { 0.42 } * pw;
+    // the left margin holds the x2 ticks and the axis' name beside them
+    let (left, bottom) = (12.0 + 3.0 * hs, 6.0 + 2.5 * h);
     let (aw, ah) = (pw - legend_w - left - 4.0, ph - bottom - 4.0 - 2.0 * h);
     let world = (c.x1.0, c.x1.1, c.x2.0, c.x2.1);
     cv.fit(world, (left, bottom, aw, ah));
@@ -89,11 +94,15 @@ pub fn plot_canvas(c: &Contour, sheet: SheetFormat) -> Canvas {
 /// shifts are written in every language).
 pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Language, sheet: SheetFormat) -> Picture {
     let (pw, ph) = slot_mm(Slot::Small, sheet);
-    let h = if pw >= 190.0 { 3.5 } else { 2.5 };
-    let hs = 2.5;
+    // the letter sizes as printed (raised to the lettering floor), so the
+    // margins and the rows are laid out for them
+    let h = crate::picture::em(if pw >= 190.0 { 3.5 } else { 2.5 });
+    let hs = crate::picture::em(2.5);
     let mut cv = plot_canvas(c, sheet);
     let mut lab = Placer::new(pw, ph);
-    let legend_w = 0.34 * pw;
+    // the legend's column: wider on the small paper of A2, where its
+    // names wrap at the printed letter size
+    let legend_w = if pw >= 190.0 { 0.34 } else { 0.42 } * pw;
     lab.put_left(
         (2.0, 1.0 + 0.6 * h),
         &format!("{}: z_1 = {}, z_2 = {}", word(lang, "gear.contour_title"), c.base.z1, c.base.z2),
@@ -138,15 +147,25 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
         fill: None,
     };
     let tx = crate::svg::Ticks::new(c.x1.0, c.x1.1, 8);
+    // every tick's number when they are wider apart than the widest one
+    // at the printed size, else every second (or third …) one
+    let step_mm = (cv.to_paper(tx.value(tx.first + 1), c.x2.0).0 - cv.to_paper(tx.value(tx.first), c.x2.0).0).abs();
+    let widest = (tx.first..=tx.last)
+        .map(|i| CHAR_WIDTH * hs * tx.label(i).chars().count() as f64)
+        .fold(0.0, f64::max);
+    let stride = ((widest + 1.0) / step_mm.max(1e-9)).ceil().max(1.0) as i64;
     for i in tx.first..=tx.last {
         let x = tx.value(i);
         if x >= c.x1.0 - 1e-9 && x <= c.x1.1 + 1e-9 {
             cv.line((x, c.x2.0), (x, c.x2.1), grid);
-            let p = cv.to_paper(x, c.x2.0);
-            lab.put((p.0, p.1 + 0.9 * hs + 0.5), &tx.label(i).replace('.', dot(lang)), hs, "#000");
+            if (i - tx.first) % stride == 0 {
+                let p = cv.to_paper(x, c.x2.0);
+                lab.put((p.0, p.1 + 0.9 * hs + 0.5), &tx.label(i).replace('.', dot(lang)), hs, "#000");
+            }
         }
     }
     let ty = crate::svg::Ticks::new(c.x2.0, c.x2.1, 8);
+    let mut widest: f64 = 0.0;
     for i in ty.first..=ty.last {
         let y = ty.value(i);
         if y >= c.x2.0 - 1e-9 && y <= c.x2.1 + 1e-9 {
@@ -154,6 +173,7 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
             let p = cv.to_paper(c.x1.0, y);
             let t = ty.label(i).replace('.', dot(lang));
             let w = CHAR_WIDTH * hs * t.chars().count() as f64;
+            widest = widest.max(w);
             lab.put((p.0 - 1.0 - 0.5 * w, p.1), &t, hs, "#000");
         }
     }
@@ -163,8 +183,15 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
     );
     let p = cv.to_paper(c.x1.1, c.x2.0);
     lab.put((p.0 - 4.0, p.1 + 2.0 * hs + 1.0), "x_1", h, "#000");
-    let p = cv.to_paper(c.x1.0, c.x2.1);
-    lab.put((p.0 - 5.0, p.1 - 0.5 * h - 1.0), "x_2", h, "#000");
+    // x2 left of its ticks, half-way up the axis
+    let (p, q) = (cv.to_paper(c.x1.0, c.x2.1), cv.to_paper(c.x1.0, c.x2.0));
+    let wx = CHAR_WIDTH * h * 2.0;
+    lab.put(
+        ((p.0 - 2.0 - widest - 0.5 * wx).max(0.6 + 0.5 * wx), 0.5 * (p.1 + q.1)),
+        "x_2",
+        h,
+        "#000",
+    );
     // the lines, each with its own style, and the legend in the same styles
     let lx = pw - legend_w + 2.0;
     let mut ly = 4.0 + 2.5 * h;
@@ -182,10 +209,22 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
         cv.end_group();
         let name = line_name(&l.boundary, lang);
         cv.line_paper((lx, ly), (lx + 9.0, ly), st.widened(0.6));
-        lab.put_left((lx + 11.0, ly), &name, hs.max(h - 1.0), st.color);
-        ly += 1.5 * hs.max(h - 1.0) + 0.6;
+        // each name broken into lines that stay on the paper
+        let size = hs.max(h - 1.0);
+        // (the labels' boxes are CHAR_WIDTH = 0.62 of the size a letter, the
+        // wrapping's 0.6: the room taken 4 % narrower)
+        let lines = crate::labels::wrap_text(&name, size, 0.96 * (pw - lx - 11.0 - 0.6));
+        for (i, t) in lines.iter().enumerate() {
+            lab.put_left((lx + 11.0, ly + 1.25 * size * i as f64), t, size, st.color);
+        }
+        ly += 1.25 * size * (lines.len() as f64 - 1.0) + 1.3 * size + 0.4;
     }
-    lab.put_left((lx, ly + 1.0), word(lang, "gear.contour_allowed"), hs, "#000");
+    for (i, t) in crate::labels::wrap_text(word(lang, "gear.contour_allowed"), hs, 0.96 * (pw - lx - 0.6))
+        .iter()
+        .enumerate()
+    {
+        lab.put_left((lx, ly + 1.0 + 1.25 * hs * i as f64), t, hs, "#000");
+    }
     if let Some(((x1, x2), label)) = chosen {
         cv.dot((x1, x2), 1.0, "#000");
         let t = if lang == Language::En {

@@ -392,12 +392,20 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             c.label(xy(at), &m.link_names[li], H_TITLE, "#000");
         }
     }
+    // each position's number out along its crank, off the cranks that
+    // meet at the pivot and the other numbers
+    let outward = |pin: Vec2| {
+        let d = pin - m.crank.pivot;
+        d.y.atan2(d.x)
+    };
     for r in &a.rows {
-        c.label(xy(r.sol.points[m.crank.pin].p), &r.pos.label, H_SMALL, "#000");
+        let pin = r.sol.points[m.crank.pin].p;
+        c.label_toward(xy(pin), outward(pin), &r.pos.label, H_SMALL, "#000");
     }
     if bold.is_none() {
         // the plans' position is not one of the table's: its angle beside its crank pin
-        c.label(xy(sol.points[m.crank.pin].p), &bold_label(a, lang), H_SMALL, "#000");
+        let pin = sol.points[m.crank.pin].p;
+        c.label_toward(xy(pin), outward(pin), &bold_label(a, lang), H_SMALL, "#000");
     }
     c.end_group();
     c.finish()

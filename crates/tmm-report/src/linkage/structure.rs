@@ -138,7 +138,7 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
             }
         }
     }
-    let title_h = |p: &Panel| p.title.len() as f64 * 1.5 * h_title;
+    let title_h = |p: &Panel| p.title.len() as f64 * 1.5 * crate::picture::em(h_title);
     let title_w = |p: &Panel| {
         p.title
             .iter()
@@ -243,7 +243,7 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
     c.begin_group("titles");
     for &(i, _, t) in &placed {
         for (k, line) in panels[i].title.iter().enumerate() {
-            let y = t.1 + h_title * (1.1 + 1.5 * k as f64);
+            let y = t.1 + crate::picture::em(h_title) * (1.1 + 1.5 * k as f64);
             c.rich_paper((t.0, y), line, h_title, Anchor::Middle, "#000");
         }
     }

@@ -99,19 +99,22 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let sr = scale.factor * 1e3; // paper mm per metre
     let axis_y = 0.533 * H; // paper mm from the bottom
     c.set_transform(sr, (22.0 + 0.1 * big * sr, axis_y));
-    lab.put_left(
-        (10.0, 10.0),
-        &format!(
-            "{} {} — {}. {} {}",
-            word(lang, "planetary.title"),
-            word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
-            teeth_text(sc, b),
-            word(lang, "common.scale"),
-            scale.text
-        ),
-        H_LABEL,
-        "#000",
+    let title = format!(
+        "{} {} — {}. {} {}",
+        word(lang, "planetary.title"),
+        word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
+        teeth_text(sc, b),
+        word(lang, "common.scale"),
+        scale.text
     );
+    // in lines that stay on the paper (the labels' boxes are CHAR_WIDTH =
+    // 0.62 of the size a letter, the wrapping's 0.6: 4 % narrower room)
+    for (i, l) in crate::labels::wrap_text(&title, H_LABEL, 0.96 * (W - 10.0 - 0.6))
+        .iter()
+        .enumerate()
+    {
+        lab.put_left((10.0, 10.0 + 1.25 * crate::picture::em(H_LABEL) * i as f64), l, H_LABEL, "#000");
+    }
 
     // --- the scheme ---
     c.begin_group("scheme");

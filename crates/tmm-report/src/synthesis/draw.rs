@@ -197,9 +197,34 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     }
     let (w, h) = slot_mm(Slot::Small, sheet);
     let mut c = Canvas::new(w, h);
+    // the legend under the drawing: each entry broken into lines that stay
+    // on the paper at the printed letter size, its sample by the first
+    let function = y.kind == Kind::FunctionGeneration;
+    let mut leg = vec![
+        (BLUE, if function { wd("first_position") } else { wd("extreme_first") }),
+        (RED, if function { wd("last_position") } else { wd("extreme_second") }),
+    ];
+    if k.locus.is_some() {
+        leg.push((GREEN, wd("locus")));
+    }
+    if !function {
+        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot"));
+    }
+    let side = 6.0;
+    let rows: Vec<(Option<&str>, String)> = leg
+        .iter()
+        .flat_map(|(col, t)| {
+            crate::labels::wrap_text(t, H_SMALL, w - side - 10.0 - 0.5)
+                .into_iter()
+                .enumerate()
+                .map(move |(i, l)| (if i == 0 { Some(*col) } else { None }, l))
+        })
+        .collect();
+    // rows as far apart as the lettering printed (its floor, picture::em)
+    let row_step = (1.25 * crate::picture::em(H_SMALL)).max(4.5);
     // the paper box left for the drawing: under the title and the scale,
-    // over the legend (three rows)
-    let (top, bottom, side) = (16.0, 17.0, 6.0);
+    // over the legend
+    let (top, bottom) = (16.0, (5.0 + row_step * (rows.len() as f64 - 1.0) + 2.5).max(17.0));
     let (aw, ah) = (w - 2.0 * side, h - top - bottom);
     let (ww, wh) = ((world.1 - world.0) * 1000.0, (world.3 - world.2) * 1000.0);
     let scale = match (standard_scale(ww, aw), standard_scale(wh, ah)) {
@@ -219,7 +244,6 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     c.set_transform(k_mm, (ox, oy));
     c.root_attr("data-scale", scale.text);
     c.root_attr("data-mu-l", &format!("{}", 0.001 / scale.factor));
-    let function = y.kind == Kind::FunctionGeneration;
     let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
     let title = if function { wd("title_function") } else { wd("title") };
     c.rich_paper((0.5 * w, 6.0), &title, h_title, Anchor::Middle, "#000");
@@ -360,19 +384,11 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         labels.push((xy(*p), n.clone(), if chosen { RED } else { "#000" }));
     }
     // the legend under the drawing (before the labels, which keep off it)
-    let mut leg = vec![
-        (BLUE, if function { wd("first_position") } else { wd("extreme_first") }),
-        (RED, if function { wd("last_position") } else { wd("extreme_second") }),
-    ];
-    if k.locus.is_some() {
-        leg.push((GREEN, wd("locus")));
-    }
-    if !function {
-        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot"));
-    }
-    for (i, (col, t)) in leg.iter().enumerate() {
-        let yy = h - bottom + 5.0 + 4.5 * i as f64;
-        c.line_paper((side, yy - 0.9), (side + 8.0, yy - 0.9), Style::THICK.colored(col).widened(0.5));
+    for (i, (col, t)) in rows.iter().enumerate() {
+        let yy = h - bottom + 5.0 + row_step * i as f64;
+        if let Some(col) = col {
+            c.line_paper((side, yy - 0.9), (side + 8.0, yy - 0.9), Style::THICK.colored(col).widened(0.5));
+        }
         c.rich_paper((side + 10.0, yy), t, H_SMALL, Anchor::Start, "#000");
     }
     for (at, text, col) in &labels {

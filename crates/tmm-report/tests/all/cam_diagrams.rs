@@ -101,7 +101,8 @@ fn each_motion_panel_has_its_own_title_and_the_follower_its_own_symbols() {
             }
             // the time diagrams' axes carry the follower's own symbols
             let svg = run.docs.get("cam/cam-motion.svg").unwrap().as_text().unwrap();
-            let axes: Vec<String> = texts_of_size(svg, "3.00");
+            // (3 mm asked, written raised to the lettering floor)
+            let axes: Vec<String> = texts_of_size(svg, &format!("{:.2}", tmm_report::picture::em(3.0)));
             for s in syms {
                 assert!(
                     axes.iter().any(|a| a.starts_with(&format!("{s}, "))),
