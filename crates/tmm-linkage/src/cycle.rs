@@ -303,7 +303,7 @@ impl Cycle {
     /// Analyse the cycle: assembly over the whole turn, dead positions, Kv,
     /// stroke.
     pub fn new(m: &Mechanism, working: Working) -> Result<Self, LinkageError> {
-        m.require_crank("the cycle of a full turn (dead positions, Kv)")?;
+        m.require_crank("the cycle of a full turn")?;
         let mut sol = m.solution();
         check_assembly(m, &mut sol)?;
         let output = Output::of(m);

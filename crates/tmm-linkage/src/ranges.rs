@@ -195,7 +195,7 @@ impl PartialCycle {
     /// assert!((p.ranges[0].range.to - (std::f64::consts::TAU + lim)).abs() < 1e-6);
     /// ```
     pub fn new(m: &Mechanism) -> Result<Self, LinkageError> {
-        m.require_crank("the assembly ranges of the crank angle")?;
+        m.require_crank("the map of assembly ranges")?;
         let map = AssemblyMap::scan(m);
         if map.ok.is_empty() {
             return Err(LinkageError::AssemblyRanges {

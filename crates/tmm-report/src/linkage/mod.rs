@@ -230,7 +230,7 @@ pub fn require_crank(src: &TaskSource, l: &Loaded, section: &str) -> Result<(), 
             ),
         )
         .with_help(format!(
-            "[{section}] is found over a turn of a crank: drive the linkage by a crank (input = {{ link = \"…\", speed = \"… rpm\" }}), or remove [{section}]"
+            "drive the linkage by a crank (input.link and input.speed in rpm) or remove [{section}]"
         )));
     }
     Ok(())

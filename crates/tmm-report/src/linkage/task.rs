@@ -386,11 +386,11 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
     let travel = match (&inp.link, &inp.slider) {
         (Some(_), Some(sl)) => {
             return Err(Error::at(task, sl.span(), "linkage.input.slider", "the input is a crank (`link`) or a slider (`slider`), not both")
-                .with_help("input = { link = \"1\", speed = \"900 rpm\" } for a crank, or input = { slider = \"1\", speed = \"0.5 m/s\" } with travel = [\"0 mm\", \"120 mm\"] for a slider"));
+                .with_help("a crank takes input.link and input.speed in rpm; a slider takes input.slider and input.speed in m/s with travel in [linkage]"));
         }
         (None, None) => {
             return Err(Error::at(task, sec.input.span(), "linkage.input", "the input needs `link` (a crank) or `slider` (a slider on a fixed guide)")
-                .with_help("input = { link = \"1\", speed = \"900 rpm\" } for a crank, or input = { slider = \"1\", speed = \"0.5 m/s\" } with travel = [\"0 mm\", \"120 mm\"] for a slider"));
+                .with_help("a crank takes input.link and input.speed in rpm; a slider takes input.slider and input.speed in m/s with travel in [linkage]"));
         }
         (Some(link), None) => {
             if let Some(t) = &sec.travel {
@@ -400,7 +400,7 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
                     "linkage.travel",
                     "a travel is the range of a slider input; this input is a crank",
                 )
-                .with_help("remove `travel`, or drive the mechanism by a slider: input = { slider = \"…\", speed = \"0.5 m/s\" }"));
+                .with_help("remove `travel` or drive the mechanism by a slider (input.slider)"));
             }
             if let Some(a) = &inp.acceleration {
                 return Err(Error::at(
@@ -499,7 +499,7 @@ pub fn read(task: &TaskSource) -> Result<Option<LinkageTask>, Error> {
                                 t.to * 1e3
                             ),
                         )
-                        .with_help("for a slider input `at` is the slider's s inside `travel`, e.g. at = \"40 mm\""));
+                        .with_help("for a slider input `at` is the slider's s inside `travel`"));
                     }
                     Some(x)
                 }
@@ -640,9 +640,7 @@ fn read_slider_input(
                 &format!("linkage.input.{key}"),
                 format!("`{key}` belongs to a crank input; this input is the slider `{}`", sl.get_ref()),
             )
-            .with_help(
-                "a slider input takes `slider`, `speed` (signed along the guide, e.g. \"0.5 m/s\") and `acceleration` (default 0)",
-            ));
+            .with_help("a slider input takes `slider` and `speed` (signed along the guide) and `acceleration` (default 0)"));
         }
     }
     let speed = qty(task, "linkage.input.speed", &inp.speed, Dim::Velocity)?;
@@ -661,7 +659,7 @@ fn read_slider_input(
             "linkage.travel",
             "a slider input needs its travel: the s range to analyse",
         )
-        .with_help("travel = [\"0 mm\", \"120 mm\"] in [linkage] (s along the guide from its `through` point)")
+        .with_help("give travel = [from, to] in [linkage] (s along the guide from its `through` point)")
     })?;
     spans.insert("travel".into(), t.span());
     let ends = t.get_ref();
@@ -672,7 +670,7 @@ fn read_slider_input(
             "linkage.travel",
             format!("expected two values [from, to], found {}", ends.len()),
         )
-        .with_help("travel = [\"0 mm\", \"120 mm\"]"));
+        .with_help("give travel = [from, to] in [linkage] (s along the guide from its `through` point)"));
     }
     let from = qty(task, "linkage.travel[0]", &ends[0], Dim::Length)?;
     let to = qty(task, "linkage.travel[1]", &ends[1], Dim::Length)?;

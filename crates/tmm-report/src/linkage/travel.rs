@@ -81,7 +81,7 @@ fn beyond(l: &Loaded, src: &TaskSource, t: Travel, ok: f64, bad: f64, e: &Linkag
         span,
         "linkage.travel",
         format!(
-            "the mechanism does not assemble over the whole travel: it moves from s = {:.3} mm only up to s = {:.4} mm ({})",
+            "the mechanism does not assemble over the whole travel; it moves from s = {:.3} mm only up to s = {:.4} mm: {}",
             t.from * 1e3,
             lo * 1e3,
             e
