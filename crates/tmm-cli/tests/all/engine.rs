@@ -170,3 +170,35 @@ fn a_shift_outside_the_cycle_is_refused() {
         "the shift must be in [0°, 720°)",
     );
 }
+
+/// The flywheel's weight at O (the book's G_1Y = −m_M·g in R_10): the
+/// massless crank's own balance, R_10 + R_12 + R_14 + G = 0, with
+/// R_12 = −R_21, R_14 = −R_41 read from the same position, and G from the
+/// disc's mass in the dynamics.
+#[test]
+fn the_flywheel_weight_is_in_the_frame_reaction_on_the_crank() {
+    let d = tmp("engine", "flywheel_weight");
+    std::fs::write(d.join("task.toml"), p2()).unwrap();
+    let o = tmm_in(&d, &["run", "--no-pdf", "task.toml", "-o", "out"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read = |f: &str| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(d.join("out").join(f)).unwrap()).unwrap() };
+    let (f, dy) = (read("forces/forces.json"), read("dynamics/dynamics.json"));
+    let g = dy["flywheel"]["mass"].as_f64().unwrap() * 9.81;
+    assert!(
+        (f["flywheel_weight"].as_f64().unwrap() - g).abs() < 1e-9 * g,
+        "{}",
+        f["flywheel_weight"]
+    );
+    let r = f["detail"]["reactions"].as_array().unwrap();
+    let get = |from: &str, on: &str| {
+        let x = r.iter().find(|x| x["from"] == from && x["on"] == on).unwrap();
+        (x["fx"].as_f64().unwrap(), x["fy"].as_f64().unwrap())
+    };
+    let (r10, r21, r41) = (get("frame", "1"), get("1", "2"), get("1", "4"));
+    let sum = (r10.0 - r21.0 - r41.0, r10.1 - r21.1 - r41.1 - g);
+    let scale = r10.0.hypot(r10.1);
+    assert!(
+        sum.0.abs() < 1e-9 * scale && sum.1.abs() < 1e-9 * scale,
+        "ΣF on the crank = {sum:?}"
+    );
+}

@@ -114,6 +114,8 @@ pub fn document(l: &Loaded, t: &ForcesTask, a: &Analysis) -> Value {
         ),
         "structure": m.structure.formula,
         "gravity": [num(t.loads.gravity.x), num(t.loads.gravity.y)],
+        // the flywheel's weight at the crank's pivot, N (null when not applied)
+        "flywheel_weight": a.flywheel_weight.map(num),
         "omega1": num(m.crank.omega),
         "crank_motion": match t.crank_motion { super::CrankMotion::Constant => "constant", super::CrankMotion::Dynamics => "dynamics" },
         "links": links,

@@ -17,10 +17,10 @@ use std::f64::consts::TAU;
 
 use tmm_linkage::Solution;
 use tmm_linkage::cycle::{self, Cycle, Position};
-use tmm_linkage::dynamics::{DynamicsError, with_crank_motion};
+use tmm_linkage::dynamics::{DynamicsError, FlywheelPlace, with_crank_motion};
 use tmm_linkage::forces::stroke::Working;
 use tmm_linkage::forces::zhukovsky::{LeverForce, lever_forces};
-use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, SectionSizes, size_sections};
+use tmm_linkage::forces::{Beam, BeamSample, ForceError, ForceSolution, Kinetostatics, PointForce, SectionSizes, size_sections};
 
 use crate::linkage::{self, Loaded};
 use crate::output::{Documents, SectionOutput};
@@ -82,6 +82,11 @@ pub struct Analysis {
     pub reaction_cycle: Option<reaction_cycle::ReactionCycle>,
     /// Each windowed stroke force's angles, if any.
     pub windows: Vec<WindowAngles>,
+    /// The weight of the flywheel on the crank shaft, m·g, N, when the
+    /// crank moves as the dynamics finds it, a flywheel is needed there and
+    /// gravity is given: a force at the crank's pivot, in the frame's
+    /// reaction on the crank (П2: the book's G_1Y = −m_M·g at O in R_10).
+    pub flywheel_weight: Option<f64>,
 }
 
 /// Where a force on one stroke with a window (the shaper's overrun) starts
@@ -177,7 +182,6 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
     let loc = |e: ForceError| locate(src, l, t, &e);
     linkage::require_full_turn(src, l, "forces")?;
     let c = Cycle::new(m, l.task.working).map_err(|e| linkage::locate(src, &l.task, &e))?;
-    let mut k = Kinetostatics::with_working(m, t.loads.clone(), working(l.task.working)).map_err(loc)?;
     // the true motion of the crank, when asked: ω₁, ε₁ at each angle from
     // the dynamics of the machine (docs/dynamics.md, "Kinetostatics with the
     // true motion")
@@ -197,6 +201,21 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
             Some((dt, d))
         }
     };
+    // the flywheel on the crank shaft weighs on the crank's pivot: its
+    // weight m·g there goes into the frame's reaction on the crank only (a
+    // force at a fixed point does no work and has no moment about it)
+    let mut loads = t.loads.clone();
+    let flywheel_weight = match &dynamics {
+        Some((_, d)) if matches!(d.spec.flywheel.place, FlywheelPlace::Crank) && loads.gravity.hypot() > 0.0 => d.flywheel.map(|fw| {
+            loads.links[m.crank.link].forces.push(PointForce {
+                local: m.crank.pivot_local,
+                force: loads.gravity * fw.mass,
+            });
+            fw.mass * loads.gravity.hypot()
+        }),
+        _ => None,
+    };
+    let mut k = Kinetostatics::with_working(m, loads, working(l.task.working)).map_err(loc)?;
     let mut sd = dynamics.as_ref().map(|(_, d)| d.solution());
     let sg = m.crank.omega.signum();
     let psi_of = |phi: f64| (sg * (phi - c.start)).rem_euclid(TAU);
@@ -374,6 +393,7 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
         beam,
         reaction_cycle,
         windows,
+        flywheel_weight,
     })
 }
 

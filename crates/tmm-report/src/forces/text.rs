@@ -235,6 +235,12 @@ pub fn report(l: &Loaded, t: &ForcesTask, a: &Analysis) -> String {
     }
     if t.loads.gravity.hypot() > 0.0 {
         let _ = writeln!(out, "Gravity g = ({:.4}, {:.4}) m/s².", t.loads.gravity.x, t.loads.gravity.y);
+        if let Some(w) = a.flywheel_weight {
+            let _ = writeln!(
+                out,
+                "The flywheel's weight G = m·g = {w:.3} N (its mass from [dynamics]) acts at the crank's pivot: it is in the frame's reaction on the crank."
+            );
+        }
     } else {
         let _ = writeln!(out, "Weights neglected (no gravity given).");
     }
