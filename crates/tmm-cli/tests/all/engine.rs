@@ -202,3 +202,42 @@ fn the_flywheel_weight_is_in_the_frame_reaction_on_the_crank() {
         "ΣF on the crank = {sum:?}"
     );
 }
+
+/// `--at` takes any angle of the 720° cycle: 420° is the second turn's
+/// position of 60°, with the crank in the same place but the second
+/// turn's gas forces. The reference is the cycle's own table, computed
+/// position by position along the cycle (a different path from the
+/// detailed position): the detail at 420° must carry the loads of the
+/// table's row at the same cycle angle, and 60° those of the row one turn
+/// earlier.
+#[test]
+fn at_takes_an_angle_of_the_second_turn() {
+    let d = tmp("engine", "at-420");
+    std::fs::write(d.join("task.toml"), p2()).unwrap();
+    let json = |at: &str| -> serde_json::Value {
+        let o = tmm_in(&d, &["forces", "task.toml", "--at", at, "--json"]);
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice(&o.stdout).unwrap()
+    };
+    let (a, b) = (json("60 deg"), json("420 deg"));
+    let psi = |j: &serde_json::Value| j["detail"]["psi"].as_f64().unwrap();
+    let turn = 2.0 * std::f64::consts::PI;
+    assert!((psi(&b) - psi(&a) - turn).abs() < 1e-9, "{} {}", psi(&a), psi(&b));
+    let fx = |row: &serde_json::Value, link: &str| row["loads"][link]["external_force"][0].as_f64().unwrap();
+    for (j, p) in [(&a, psi(&a)), (&b, psi(&b))] {
+        let rows = j["positions"].as_array().unwrap();
+        let row = rows
+            .iter()
+            .find(|r| (r["psi"].as_f64().unwrap() - p).abs() < 1e-9)
+            .unwrap_or_else(|| panic!("no row of the cycle at ψ = {p}"));
+        for link in ["3", "5"] {
+            let (x, y) = (fx(&j["detail"], link), fx(row, link));
+            assert!(
+                (x - y).abs() <= 1e-9 * y.abs().max(1.0),
+                "link {link} at ψ = {p}: detail {x}, table {y}"
+            );
+        }
+    }
+    // the two turns' gas forces differ (the cylinders' phases swap)
+    assert!((fx(&a["detail"], "3") - fx(&b["detail"], "3")).abs() > 100.0);
+}

@@ -17,6 +17,10 @@ fn pct(a: f64, b: f64) -> f64 {
 /// A value as the user wrote it, in scientific notation when it is very
 /// large or small.
 fn sci(x: f64) -> String {
+    // 12 significant digits, then the shortest text of that value: a ratio
+    // the task gives as 0.1 and the code derives as 0.09999999999999998
+    // prints as 0.1
+    let x: f64 = format!("{x:.11e}").parse().unwrap_or(x);
     if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
         format!("{x}")
     } else {

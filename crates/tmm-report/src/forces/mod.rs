@@ -270,7 +270,14 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
         }
     }
     let phi_d = at.or(t.at).or(l.task.at).unwrap_or_else(|| rows.get(1).map_or(c.start, |r| r.phi));
-    let cd = if turns > 1 { Some(k.cycle_angle_of(phi_d)) } else { None };
+    // over a cycle of several turns the angle is the crank's angle counted
+    // on through the cycle (420° is the second turn's 60°, with that
+    // phase's loads), not folded into the first turn
+    let cd = if turns > 1 {
+        Some((sg * (phi_d - k.cycle_start)).rem_euclid(TAU * turns as f64))
+    } else {
+        None
+    };
     let detail = solve(if at.is_some() { "at".into() } else { "detail".into() }, phi_d, cd, &mut k)?;
     let mut curve = Vec::with_capacity(360 * turns + 1);
     for i in 0..=360 * turns {
