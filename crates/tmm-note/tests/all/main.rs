@@ -10,4 +10,5 @@ mod formulas;
 mod frame;
 mod notation;
 mod pdf_read;
+mod sheets_pdf;
 mod typeset;
