@@ -544,7 +544,7 @@ impl Canvas {
 
     /// [`Canvas::best_spot`]; with `toward`, the sixteen directions are
     /// tried nearest that angle first, and a clear place in a direction
-    /// within 45° of it is preferred to a nearer one farther round.
+    /// within 22.5° of it is preferred to a nearer one farther round.
     fn best_spot_from(&self, p: (f64, f64), n: usize, size_mm: f64, dists: &[f64], lead: bool, toward: Option<f64>) -> Option<Spot> {
         let w = text_width(size_mm, n);
         let e = crate::picture::em(size_mm);

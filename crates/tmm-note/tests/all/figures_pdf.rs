@@ -1,7 +1,8 @@
 //! The drawings as printed, read back from the PDFs (`pdf_read`): in the
 //! note of the default project and of seed 003 (`examples/seed-003-sixbar.toml`)
 //! every text of every figure has capitals at least 2.5 mm high (GOST
-//! 2.304's smallest size; the sheets' smallest is printed), and every figure is
+//! 2.304's smallest size; the sheets' smallest is printed and checked by
+//! `sheets_pdf`), and every figure is
 //! printed at its own size, so the scale and μ written on it are the
 //! page's: the width of the figure measured on the page equals the width
 //! of the paper it was drawn for (the length every drawing's scale is laid
@@ -105,9 +106,8 @@ fn check(name: &str) {
         small.len(),
         &small[..small.len().min(5)]
     );
-    // every sheet, every text: measured and shown; the sheets' drawings
-    // keep their own letter sizes (raising them is still to do), so only
-    // the title block and the frame are held to 2.5 mm here
+    // every sheet, every text: measured and shown (held to 2.5 mm, with
+    // the examples of every section, by `sheets_pdf`)
     let mut sheets = 0;
     for d in run
         .docs

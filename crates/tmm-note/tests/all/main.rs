@@ -11,4 +11,5 @@ mod frame;
 mod notation;
 mod pdf_read;
 mod sheets_dxf_pdf;
+mod sheets_pdf;
 mod typeset;
