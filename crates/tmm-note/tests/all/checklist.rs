@@ -259,11 +259,16 @@ fn bad_numbers(text: &str) -> Vec<String> {
             out.push(around(i));
         }
         if c == '·' && chars[i + 1..].starts_with(&['1', '0']) {
-            let exp: String = chars[i + 3..].iter().take_while(|c| **c == '⁻' || SUP.contains(c)).collect();
-            if let Some(digits) = exp.strip_prefix('⁻') {
+            // the exponent as superscript characters or as plain ones
+            // raised (as the PDF's text may give it back)
+            let exp: String = chars[i + 3..]
+                .iter()
+                .take_while(|c| matches!(**c, '⁻' | '−' | '-') || SUP.contains(c) || c.is_ascii_digit())
+                .collect();
+            if let Some(digits) = exp.strip_prefix(['⁻', '−', '-']) {
                 let value: u32 = digits
                     .chars()
-                    .filter_map(|d| SUP.iter().position(|s| *s == d))
+                    .filter_map(|d| SUP.iter().position(|s| *s == d).or_else(|| d.to_digit(10).map(|v| v as usize)))
                     .fold(0, |a, d| a * 10 + d as u32);
                 if value >= 9 {
                     out.push(around(i));
@@ -311,7 +316,10 @@ fn check(name: &str, note: &Note, continued: (&str, &str), figure_word: &str, fa
         }
         // the text flowing on the page, below the figures that float to
         // its head: the first line that is not a figure's caption
-        let flow: Vec<&(f64, String)> = p.lines.iter().filter(|(_, s)| !s.trim().starts_with(figure_word)).collect();
+        // (a caption's lines: the one naming the figure and those within
+        // 16 mm under a drawing's box, a caption of two lines)
+        let caption = |y: f64, s: &str| s.trim().starts_with(figure_word) || p.figures.iter().any(|f| y > f.1 && y < f.1 + 16.0);
+        let flow: Vec<&(f64, String)> = p.lines.iter().filter(|(y, s)| !caption(*y, s)).collect();
         let first_rule = p
             .rules
             .iter()
@@ -406,6 +414,7 @@ fn the_checklist_finders_find_what_they_must() {
     assert!(raw_tokens("K𝑣 = 1,107; 10^ _x").is_empty());
     assert_eq!(bad_numbers("2,27e-13 Н; 1e5; 3E+05").len(), 3);
     assert_eq!(bad_numbers("не более 1,959·10⁻¹⁴ — оба").len(), 1);
+    assert_eq!(bad_numbers("не более 1,959·10−14 — оба").len(), 1);
     assert!(bad_numbers("1,23·10⁵ Н, 4,5·10⁻⁴ м, type 3e").is_empty());
     assert_eq!(bad_numbers("x = NaN, y = inf").len(), 2);
     // the union closes gaps under 15 mm and clips to the text area

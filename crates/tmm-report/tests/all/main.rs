@@ -11,6 +11,7 @@ mod drawings_structure;
 mod dynamics_drawings;
 mod force_polygons;
 mod hardening_examples;
+mod lever_virtual_power;
 mod linkage_examples;
 mod seg_index;
 mod sheets;
