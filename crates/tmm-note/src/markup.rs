@@ -16,6 +16,10 @@ use crate::model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
 use crate::number::{format_number, push_unit};
 use crate::translation::Translation;
 
+/// A table of at most this many rows is kept on one page (about a quarter
+/// of the text area: moving it whole leaves no page half empty).
+const SHORT_TABLE_ROWS: usize = 8;
+
 /// The generated source and the virtual files it refers to.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Generated {
@@ -45,7 +49,8 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         out: String::new(),
         figures: Vec::new(),
     };
-    w.out.push_str("#import \"/template.typ\": note, sources, appendices, svg-figure\n");
+    w.out
+        .push_str("#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break\n");
     w.out.push_str("#let tr = (\n");
     for (k, v) in tr.iter() {
         let _ = writeln!(w.out, "  {k}: {},", string_literal(v));
@@ -155,6 +160,9 @@ struct Writer<'a> {
 
 impl Writer<'_> {
     fn section(&mut self, s: &Section, level: usize) -> Result<(), NoteError> {
+        if level == 1 {
+            self.out.push_str("#section-break()\n");
+        }
         let _ = writeln!(self.out, "#heading(level: {level}, {})\n", content_arg(&s.title));
         for b in &s.blocks {
             self.block(b)?;
@@ -168,6 +176,7 @@ impl Writer<'_> {
     /// An unnumbered level-1 section (the introduction, the conclusion),
     /// listed in the contents.
     fn unnumbered(&mut self, s: &Section) -> Result<(), NoteError> {
+        self.out.push_str("#section-break()\n");
         let _ = writeln!(self.out, "#heading(level: 1, numbering: none, {})\n", content_arg(&s.title));
         for b in &s.blocks {
             self.block(b)?;
@@ -204,7 +213,14 @@ impl Writer<'_> {
                 label,
             } => {
                 self.table(caption, header, rows, units)?;
-                self.label(label);
+                if rows.len() <= SHORT_TABLE_ROWS {
+                    if let Some(l) = label {
+                        let _ = write!(self.out, " <{l}>");
+                    }
+                    self.out.push_str("]\n\n");
+                } else {
+                    self.label(label);
+                }
             }
             Block::Figure {
                 caption,
@@ -219,15 +235,20 @@ impl Writer<'_> {
                     });
                 }
                 let path = format!("/fig-{}.svg", self.figures.len() + 1);
+                // made inside a context, which chooses the side it floats
+                // to (template.typ, `float-side`), the label on the figure
                 let _ = write!(
                     self.out,
-                    "#svg-figure({}, {}mm, {})",
+                    "#context [#svg-figure({}, {}mm, {}, float-side())",
                     string_literal(&path),
                     width_mm,
                     content_arg(caption)
                 );
                 self.figures.push((path, svg.clone()));
-                self.label(label);
+                if let Some(l) = label {
+                    let _ = write!(self.out, " <{l}>");
+                }
+                self.out.push_str("]\n\n");
             }
             Block::Calculation(c) => {
                 let m = c.typst(self.lang)?;
@@ -262,9 +283,16 @@ impl Writer<'_> {
         if let Some((i, r)) = rows.iter().enumerate().find(|(_, r)| r.len() != n) {
             return Err(shape(format!("row {}", i + 1), r.len()));
         }
+        // a short table is not split: it moves to the next page whole
+        // (a long one is carried over under "Продолжение таблицы N", its
+        // header repeated: template.typ, `table-continued`)
+        if rows.len() <= SHORT_TABLE_ROWS {
+            self.out.push_str("#block(breakable: false)[");
+        }
         let _ = write!(
             self.out,
-            "#figure(kind: table, caption: {}, table(columns: {n},\n  table.header(",
+            "#figure(kind: table, caption: {}, table(columns: {n},\n  table.header(repeat: true,\n    \
+             table.cell(colspan: {n}, stroke: none, inset: 0pt, align: left, table-continued(tr)),\n    ",
             content_arg(caption)
         );
         for (i, h) in header.iter().enumerate() {

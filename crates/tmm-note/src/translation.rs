@@ -41,6 +41,7 @@ pub const KEYS: &[&str] = &[
     "tb_letter_value",
     "tb_sheets",
     "tb_document",
+    "table_continued",
 ];
 
 /// The embedded source of a language's translation file.

@@ -55,9 +55,12 @@ pub(crate) fn conclusion(cx: &Ctx, sections: &[Section]) -> Result<Option<Sectio
                         let mut spans = p.0.clone();
                         if let Some(Span::Plain(first)) = spans.first_mut() {
                             let mut c = first.chars();
+                            // a word ("В положении") or a one-letter
+                            // Cyrillic preposition ("У положенні"), not a
+                            // symbol ("W = 1")
                             if let (Some(a), Some(b)) = (c.next(), c.next())
                                 && a.is_uppercase()
-                                && b.is_lowercase()
+                                && (b.is_lowercase() || (b.is_whitespace() && "ВСКУОИАЯЗ".contains(a)))
                             {
                                 *first = lower_first(first);
                             }

@@ -26,6 +26,7 @@ mod forces;
 mod frame_parts;
 mod gear;
 mod linkage;
+mod order;
 mod planetary;
 mod references;
 mod stroke;
@@ -127,6 +128,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         }
     }
     references::add(&cx, &mut sections)?;
+    order::figures_early(&mut sections);
     let mut sources = Vec::new();
     for i in 1.. {
         match words.get(&format!("source_{i}")) {

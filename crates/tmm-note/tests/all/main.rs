@@ -2,6 +2,7 @@
 //! the dependency graph instead of one per file). Each former test file is
 //! a module here: run one with `cargo test --release -p tmm-note --test all <module>::`.
 
+mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;

@@ -15,7 +15,9 @@
 //! text is the font's `/CapHeight` (its font descriptor, 9.8.1, in
 //! 1/1000 of the text space unit) times the font size, measured at right
 //! angles to the baseline after every matrix (so a slanted or turned text
-//! is measured as it stands); points are converted at 25.4/72 mm.
+//! is measured as it stands); points are converted at 25.4/72 mm. Stroked
+//! straight horizontal lines outside the drawings are kept as rules (`S`
+//! after one `m … l` segment), for the layout checks of `checklist.rs`.
 
 use std::collections::HashMap;
 
@@ -70,6 +72,19 @@ pub struct Placed {
     /// The paper length of one unit of the drawing's first transformation
     /// (its SVG units, mm), horizontally and vertically.
     pub unit_mm: Option<(f64, f64)>,
+    /// Its box on the page in PDF points (x0, y0, x1, y1; y up from the
+    /// page's foot).
+    pub rect_pt: (f64, f64, f64, f64),
+}
+
+/// A stroked straight horizontal line outside the drawings (a table's
+/// rule, a fraction bar, a frame or title-block line), in PDF points.
+#[derive(Debug, Clone)]
+pub struct Rule {
+    /// 1-based page number.
+    pub page: u32,
+    /// Its height above the page's foot.
+    pub y_pt: f64,
 }
 
 /// What a PDF shows: its texts and its top-level forms.
@@ -79,6 +94,8 @@ pub struct Read {
     pub texts: Vec<Shown>,
     /// Every embedded drawing.
     pub forms: Vec<Placed>,
+    /// Every horizontal stroked line outside the drawings.
+    pub rules: Vec<Rule>,
 }
 
 fn num(o: &Object) -> f64 {
@@ -172,6 +189,12 @@ impl Walker<'_> {
                 }
                 "W" | "W*" => clipping = true,
                 "n" | "f" | "F" | "f*" | "S" | "s" | "B" | "B*" | "b" | "b*" => {
+                    if op.operator == "S" && !clipping && !clip && path.len() == 2 && (path[0].1 - path[1].1).abs() < 0.01 {
+                        self.out.rules.push(Rule {
+                            page: self.page,
+                            y_pt: path[0].1,
+                        });
+                    }
                     if clipping && !clip && path.len() >= 4 {
                         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
                         for &(x, y) in &path {
@@ -181,6 +204,7 @@ impl Walker<'_> {
                             page: self.page,
                             size_mm: ((x1 - x0) * MM_PER_PT, (y1 - y0) * MM_PER_PT),
                             unit_mm: None,
+                            rect_pt: (x0, y0, x1, y1),
                         });
                         fresh = Some(self.out.forms.len() - 1);
                         clip = true;
@@ -260,8 +284,13 @@ impl Walker<'_> {
 /// Read the texts and forms of every page of `pdf`.
 pub fn read(pdf: &[u8]) -> Read {
     let doc = Document::load_mem(pdf).expect("the PDF loads");
+    read_doc(&doc)
+}
+
+/// [`read`] of a loaded document.
+pub fn read_doc(doc: &Document) -> Read {
     let mut w = Walker {
-        doc: &doc,
+        doc,
         page: 0,
         out: Read::default(),
     };
@@ -273,7 +302,7 @@ pub fn read(pdf: &[u8]) -> Read {
             .get_dictionary(id)
             .ok()
             .and_then(|p| p.get(b"Resources").ok())
-            .and_then(|r| dict(&doc, r));
+            .and_then(|r| dict(doc, r));
         w.walk(&content, res, IDENTITY, false);
     }
     w.out

@@ -374,7 +374,23 @@ pub fn analyse(src: &TaskSource, l: &Loaded, t: &ForcesTask, at: Option<f64>) ->
             });
         }
     }
-    let lever = lever_forces(m, &k.loads, &detail.sol, &detail.fs);
+    let mut lever = lever_forces(m, &k.loads, &detail.sol, &detail.fs);
+    // the slider loads (a cylinder's gas force from its indicator diagram, a
+    // stroke force) at the images of their points, `Fc<link>`: the
+    // kinetostatics and its virtual power carry them, so the lever does too
+    // and its moments sum to zero with P_b
+    for (j, a) in k.sliders.iter().enumerate() {
+        let force = detail.fs.slider_forces[j];
+        if force.hypot() == 0.0 {
+            continue;
+        }
+        let (_, at) = a.force(&detail.sol, detail.psi);
+        lever.push(LeverForce {
+            label: format!("Fc{}", m.link_names[a.load.link]),
+            image: tmm_geom::perp(detail.sol.links[a.load.link].kin_at(at).0),
+            force,
+        });
+    }
     let beam = match &t.strength {
         Some(s) => {
             let beam = Beam::new(m, &k.loads, &detail.sol, &detail.fs, s.link, s.axis.0, s.axis.1).map_err(loc)?;

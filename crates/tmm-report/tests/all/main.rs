@@ -12,6 +12,7 @@ mod dynamics_drawings;
 mod flywheel_period;
 mod force_polygons;
 mod hardening_examples;
+mod lever_virtual_power;
 mod linkage_examples;
 mod seg_index;
 mod sheets;

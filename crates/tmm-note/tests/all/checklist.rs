@@ -1,0 +1,501 @@
+//! A teacher's checklist over the typeset note (issue 22, points 8 and 10),
+//! read back from the PDF for the default project, the seed-003 six-bar,
+//! the synthesised six-bar and one example of each section kind (gear,
+//! planetary, cam, the П2 engine, the П5 cylinder), in ru, uk and en:
+//!
+//! - no raw `x_y` or `x^y` notation in the note's own text (the drawings'
+//!   lettering is theirs and is left out: every character inside a
+//!   drawing's box);
+//! - numbers with a sensible precision: no `e-13`-style exponent, no NaN or
+//!   inf, no power of ten under 10⁻⁹ (rounding noise of an exact zero);
+//! - a table carried over to the next page stands under "Продолжение
+//!   таблицы N" ("Продовження таблиці N", "Table N continued"): no page
+//!   begins with a table's rule, and the continuation line stands only at
+//!   the head of a page, right above the table's rule;
+//! - no page more than half empty except the last of a section (the page
+//!   before a page where a level-1 heading of the PDF's outline begins, and
+//!   the last page; the title page, the assignment and the contents before
+//!   the first outlined heading are their own pages).
+//!
+//! How full a page is: the union of the heights that its text lines (from
+//! the baseline up by the size of the font), its drawings (their boxes)
+//! and its rules cover inside the text area, gaps under 15 mm closed (the
+//! space between lines, around formulas, headings and captions), as a
+//! share of the text area's height. The test prints, per note, the pages,
+//! the tables continued and the half-empty pages (all and those not the
+//! last of a section).
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use pdf_extract::{MediaBox, OutputDev, OutputError, Transform};
+use tmm_note::{Block, Note, Section, compose, typeset_with_warnings};
+use tmm_report::TaskSource;
+use tmm_report::project::Language;
+use tmm_report::run::{DEFAULT_TASK, run_task_in};
+
+use super::pdf_read::{MM_PER_PT, read_doc};
+
+/// A4's height in points.
+const PAGE_PT: f64 = 297.0 / MM_PER_PT;
+/// Gaps closed when measuring how full a page is, mm.
+const GAP_MM: f64 = 15.0;
+
+/// One character shown on a page: its origin (mm from the page's top-left)
+/// and size (mm).
+#[derive(Debug, Clone)]
+struct Glyph {
+    x: f64,
+    y: f64,
+    size: f64,
+    ch: String,
+}
+
+/// Collects every character with its page and position.
+#[derive(Default)]
+struct Glyphs {
+    page: u32,
+    pages: BTreeMap<u32, Vec<Glyph>>,
+}
+
+impl OutputDev for Glyphs {
+    fn begin_page(&mut self, page_num: u32, _: &MediaBox, _: Option<(f64, f64, f64, f64)>) -> Result<(), OutputError> {
+        self.page = page_num;
+        self.pages.entry(page_num).or_default();
+        Ok(())
+    }
+    fn end_page(&mut self) -> Result<(), OutputError> {
+        Ok(())
+    }
+    fn output_character(&mut self, trm: &Transform, _: f64, _: f64, font_size: f64, ch: &str) -> Result<(), OutputError> {
+        let size = font_size * trm.m11.hypot(trm.m12).max(trm.m21.hypot(trm.m22));
+        self.pages.entry(self.page).or_default().push(Glyph {
+            x: trm.m31 * MM_PER_PT,
+            y: (PAGE_PT - trm.m32) * MM_PER_PT,
+            size: size * MM_PER_PT,
+            ch: ch.to_string(),
+        });
+        Ok(())
+    }
+    fn begin_word(&mut self) -> Result<(), OutputError> {
+        Ok(())
+    }
+    fn end_word(&mut self) -> Result<(), OutputError> {
+        Ok(())
+    }
+    fn end_line(&mut self) -> Result<(), OutputError> {
+        Ok(())
+    }
+}
+
+/// What the checklist reads of one page (mm from the page's top).
+#[derive(Debug, Default)]
+struct Page {
+    /// The text outside the drawings, in the order shown, a space where
+    /// the pen jumps.
+    text: String,
+    /// The lines of that text, top to bottom: (baseline, text).
+    lines: Vec<(f64, String)>,
+    /// The drawings' boxes (top, bottom).
+    figures: Vec<(f64, f64)>,
+    /// The horizontal rules outside the drawings.
+    rules: Vec<f64>,
+    /// How full the text area is, 0 … 1.
+    filled: f64,
+}
+
+/// The numbers of one checked note.
+#[derive(Debug, Default)]
+struct Counts {
+    pages: usize,
+    continued: usize,
+    half_empty: Vec<u32>,
+    half_empty_inside: Vec<u32>,
+}
+
+/// The level-1 entries of the PDF's outline: the pages they start on.
+fn section_starts(doc: &pdf_extract::Document) -> BTreeSet<u32> {
+    use pdf_extract::Object;
+    let numbers: BTreeMap<_, u32> = doc.get_pages().into_iter().map(|(n, id)| (id, n)).collect();
+    let mut starts = BTreeSet::new();
+    let catalog = doc.catalog().unwrap();
+    let Ok(outlines) = catalog.get(b"Outlines").and_then(|o| o.as_reference()) else {
+        return starts;
+    };
+    let root = doc.get_dictionary(outlines).unwrap();
+    let mut item = root.get(b"First").and_then(Object::as_reference).ok();
+    while let Some(id) = item {
+        let d = doc.get_dictionary(id).unwrap();
+        let dest = match d.get(b"Dest") {
+            Ok(o) => Some(o.clone()),
+            Err(_) => d
+                .get(b"A")
+                .and_then(|a| doc.dereference(a))
+                .ok()
+                .and_then(|(_, a)| a.as_dict().ok()?.get(b"D").ok().cloned()),
+        };
+        let page = dest
+            .as_ref()
+            .and_then(|o| doc.dereference(o).ok())
+            .and_then(|(_, o)| o.as_array().ok().and_then(|a| a.first()).and_then(|p| p.as_reference().ok()))
+            .and_then(|p| numbers.get(&p).copied());
+        starts.insert(page.unwrap_or_else(|| panic!("an outline entry without a page: {d:?}")));
+        item = d.get(b"Next").and_then(Object::as_reference).ok();
+    }
+    starts
+}
+
+/// The union of `spans` with gaps under `GAP_MM` closed, clipped to
+/// [top, bottom].
+fn covered(mut spans: Vec<(f64, f64)>, top: f64, bottom: f64) -> f64 {
+    spans.retain(|s| s.1 > top && s.0 < bottom);
+    spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut total = 0.0;
+    let mut cur: Option<(f64, f64)> = None;
+    for (a, b) in spans {
+        let (a, b) = (a.max(top), b.min(bottom));
+        cur = match cur {
+            Some((c0, c1)) if a <= c1 + GAP_MM => Some((c0, c1.max(b))),
+            Some((c0, c1)) => {
+                total += c1 - c0;
+                Some((a, b))
+            }
+            None => Some((a, b)),
+        };
+    }
+    if let Some((c0, c1)) = cur {
+        total += c1 - c0;
+    }
+    total / (bottom - top)
+}
+
+/// Reads the pages of `pdf` with the text area between `top` and `bottom`
+/// (mm from the page's top).
+fn pages(doc: &pdf_extract::Document, top: f64, bottom: f64) -> Vec<Page> {
+    let mut glyphs = Glyphs::default();
+    pdf_extract::output_doc(doc, &mut glyphs).unwrap();
+    let drawn = read_doc(doc);
+    let y_mm = |y_pt: f64| (PAGE_PT - y_pt) * MM_PER_PT;
+    let count = glyphs.pages.keys().max().copied().unwrap_or(0);
+    let mut out = Vec::new();
+    for n in 1..=count {
+        let boxes: Vec<(f64, f64, f64, f64)> = drawn
+            .forms
+            .iter()
+            .filter(|f| f.page == n)
+            .map(|f| {
+                (
+                    f.rect_pt.0 * MM_PER_PT,
+                    y_mm(f.rect_pt.3),
+                    f.rect_pt.2 * MM_PER_PT,
+                    y_mm(f.rect_pt.1),
+                )
+            })
+            .collect();
+        let inside = |g: &Glyph| {
+            boxes
+                .iter()
+                .any(|b| g.x >= b.0 - 0.5 && g.x <= b.2 + 0.5 && g.y >= b.1 - 0.5 && g.y <= b.3 + 0.5)
+        };
+        let mut page = Page {
+            figures: boxes.iter().map(|b| (b.1, b.3)).collect(),
+            rules: drawn.rules.iter().filter(|r| r.page == n).map(|r| y_mm(r.y_pt)).collect(),
+            ..Page::default()
+        };
+        let mut spans: Vec<(f64, f64)> = page.figures.clone();
+        spans.extend(page.rules.iter().map(|&y| (y, y)));
+        let mut last: Option<&Glyph> = None;
+        let mut lines: Vec<(f64, String)> = Vec::new();
+        for g in glyphs.pages.get(&n).into_iter().flatten() {
+            if inside(g) || g.y < top - 1.0 || g.y > bottom + 1.0 {
+                continue;
+            }
+            spans.push((g.y - 0.7 * g.size, g.y + 0.2 * g.size));
+            if let Some(l) = last
+                && ((l.y - g.y).abs() > 0.6 * g.size.max(l.size) || g.x < l.x - 0.5 || g.x > l.x + 1.2 * l.size)
+            {
+                page.text.push(' ');
+            }
+            page.text.push_str(&g.ch);
+            match lines.iter_mut().find(|(y, _)| (y - g.y).abs() < 0.4 * g.size) {
+                Some((_, s)) => s.push_str(&g.ch),
+                None => lines.push((g.y, g.ch.clone())),
+            }
+            last = Some(g);
+        }
+        lines.sort_by(|a, b| a.0.total_cmp(&b.0));
+        page.lines = lines;
+        page.filled = covered(spans, top, bottom);
+        out.push(page);
+    }
+    out
+}
+
+/// The raw notation tokens of a text: a letter, `_` or `^`, a letter or digit.
+fn raw_tokens(text: &str) -> Vec<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    for i in 1..chars.len().saturating_sub(1) {
+        if matches!(chars[i], '_' | '^') && chars[i - 1].is_alphabetic() && chars[i + 1].is_alphanumeric() {
+            out.push(chars[i.saturating_sub(8)..(i + 8).min(chars.len())].iter().collect());
+        }
+    }
+    out
+}
+
+/// Numbers printed without a sensible precision: `1e-13`, `2,3E+05`, NaN,
+/// inf, and powers of ten under 10⁻⁹ (`1,959·10⁻¹⁴`, the noise of a zero).
+fn bad_numbers(text: &str) -> Vec<String> {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let chars: Vec<char> = text.chars().collect();
+    let around = |i: usize| chars[i.saturating_sub(12)..(i + 8).min(chars.len())].iter().collect::<String>();
+    let mut out = Vec::new();
+    for i in 1..chars.len().saturating_sub(1) {
+        let c = chars[i];
+        if matches!(c, 'e' | 'E')
+            && chars[i - 1].is_ascii_digit()
+            && (chars[i + 1].is_ascii_digit()
+                || (matches!(chars[i + 1], '-' | '+' | '−') && chars.get(i + 2).is_some_and(char::is_ascii_digit)))
+        {
+            out.push(around(i));
+        }
+        if c == '·' && chars[i + 1..].starts_with(&['1', '0']) {
+            // the exponent as superscript characters or as plain ones
+            // raised (as the PDF's text may give it back)
+            let exp: String = chars[i + 3..]
+                .iter()
+                .take_while(|c| matches!(**c, '⁻' | '−' | '-') || SUP.contains(c) || c.is_ascii_digit())
+                .collect();
+            if let Some(digits) = exp.strip_prefix(['⁻', '−', '-']) {
+                let value: u32 = digits
+                    .chars()
+                    .filter_map(|d| SUP.iter().position(|s| *s == d).or_else(|| d.to_digit(10).map(|v| v as usize)))
+                    .fold(0, |a, d| a * 10 + d as u32);
+                if value >= 9 {
+                    out.push(around(i));
+                }
+            }
+        }
+    }
+    for w in text.split(|c: char| !c.is_alphanumeric()) {
+        if matches!(w, "NaN" | "inf" | "Infinity") {
+            out.push(w.to_string());
+        }
+    }
+    out
+}
+
+/// Runs the checklist on one note and returns its counts; every failure is
+/// pushed to `faults`.
+/// `continued`: how the continuation line begins and ends in the note's
+/// language; `figure_word` begins a figure's caption.
+fn check(name: &str, note: &Note, continued: (&str, &str), figure_word: &str, faults: &mut Vec<String>) -> Counts {
+    let mut note = note.clone();
+    blank_figures(&mut note);
+    let t = typeset_with_warnings(&note).unwrap();
+    if !t.warnings.is_empty() {
+        faults.push(format!("{name}: typst warnings {:?}", t.warnings));
+    }
+    let (top, bottom) = if note.frame { (15.0, 267.0) } else { (20.0, 277.0) };
+    let doc = pdf_extract::Document::load_mem(&t.pdf).unwrap();
+    let pages = pages(&doc, top, bottom);
+    let starts = section_starts(&doc);
+    let first = starts.first().copied().unwrap_or(1);
+    let mut counts = Counts {
+        pages: pages.len(),
+        ..Counts::default()
+    };
+    for (i, p) in pages.iter().enumerate() {
+        let n = i as u32 + 1;
+        let raw = raw_tokens(&p.text);
+        if !raw.is_empty() {
+            faults.push(format!("{name} p. {n}: raw notation {raw:?}"));
+        }
+        let bad = bad_numbers(&p.text);
+        if !bad.is_empty() {
+            faults.push(format!("{name} p. {n}: numbers without a sensible precision {bad:?}"));
+        }
+        // the text flowing on the page, below the figures that float to
+        // its head: the first line that is not a figure's caption
+        // (a caption's lines: the one naming the figure and those within
+        // 16 mm under a drawing's box, a caption of two lines)
+        let caption = |y: f64, s: &str| s.trim().starts_with(figure_word) || p.figures.iter().any(|f| y > f.1 && y < f.1 + 16.0);
+        let flow: Vec<&(f64, String)> = p.lines.iter().filter(|(y, s)| !caption(*y, s)).collect();
+        let first_rule = p
+            .rules
+            .iter()
+            .copied()
+            .filter(|y| *y > top - 1.0 && *y < bottom)
+            .fold(f64::INFINITY, f64::min);
+        let line_y = flow.first().map_or(f64::INFINITY, |l| l.0 - 3.0);
+        if first_rule < line_y {
+            faults.push(format!(
+                "{name} p. {n}: a table carried over without \"{} N{}\" above it",
+                continued.0, continued.1
+            ));
+        }
+        for (k, (y, s)) in flow.iter().enumerate() {
+            let s = s.trim();
+            if s.starts_with(continued.0) && s.ends_with(continued.1) && s.chars().any(|c| c.is_ascii_digit()) {
+                if k != 0 {
+                    faults.push(format!("{name} p. {n}: \"{s}\" not at the head of the page"));
+                }
+                if !p.rules.iter().any(|r| *r > *y && *r < *y + 8.0) {
+                    faults.push(format!("{name} p. {n}: \"{s}\" is not right above a table"));
+                }
+                counts.continued += 1;
+            }
+        }
+        let last_of_section = n == pages.len() as u32 || starts.contains(&(n + 1)) || n < first;
+        if p.filled < 0.5 {
+            counts.half_empty.push(n);
+            if !last_of_section {
+                counts.half_empty_inside.push(n);
+                faults.push(format!(
+                    "{name} p. {n}: {:.0} % of the text area filled, and not a section's last page",
+                    p.filled * 100.0
+                ));
+            }
+        }
+    }
+    counts
+}
+
+/// Every drawing replaced by a blank one of the same size (the same
+/// `width`, `height` and `viewBox`, a white sheet), so the pages are laid
+/// out exactly as with the drawings while the PDF stays small enough to
+/// read back quickly. The drawings' own lettering is not the note's text.
+fn blank_figures(note: &mut Note) {
+    fn attr(svg: &str, name: &str) -> String {
+        let root = &svg[svg.find("<svg").unwrap_or(0)..];
+        let root = &root[..root.find('>').unwrap_or(root.len())];
+        let key = format!(" {name}=\"");
+        root.find(&key)
+            .map(|i| {
+                let v = &root[i + key.len()..];
+                v[..v.find('"').unwrap_or(0)].to_string()
+            })
+            .unwrap_or_default()
+    }
+    fn walk(bs: &mut [Block]) {
+        for b in bs {
+            if let Block::Figure { svg, .. } = b {
+                let (w, h, vb) = (attr(svg, "width"), attr(svg, "height"), attr(svg, "viewBox"));
+                assert!(!w.is_empty() && !h.is_empty() && !vb.is_empty(), "a drawing without its size");
+                let v: Vec<&str> = vb.split_whitespace().collect();
+                *svg = format!(
+                    r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="{vb}"><rect x="{}" y="{}" width="{}" height="{}" fill="white"/></svg>"#,
+                    v[0], v[1], v[2], v[3]
+                );
+            }
+        }
+    }
+    fn sections(ss: &mut [Section]) {
+        for s in ss {
+            walk(&mut s.blocks);
+            sections(&mut s.subsections);
+        }
+    }
+    walk(&mut note.assignment);
+    sections(&mut note.sections);
+    sections(&mut note.appendices);
+    for s in note.introduction.iter_mut().chain(note.conclusion.iter_mut()) {
+        sections(std::slice::from_mut(s));
+    }
+}
+
+fn example(file: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+#[test]
+fn the_checklist_finders_find_what_they_must() {
+    assert_eq!(raw_tokens("a K_v b R^τ").len(), 2);
+    assert!(raw_tokens("K𝑣 = 1,107; 10^ _x").is_empty());
+    assert_eq!(bad_numbers("2,27e-13 Н; 1e5; 3E+05").len(), 3);
+    assert_eq!(bad_numbers("не более 1,959·10⁻¹⁴ — оба").len(), 1);
+    assert_eq!(bad_numbers("не более 1,959·10−14 — оба").len(), 1);
+    assert!(bad_numbers("1,23·10⁵ Н, 4,5·10⁻⁴ м, type 3e").is_empty());
+    assert_eq!(bad_numbers("x = NaN, y = inf").len(), 2);
+    // the union closes gaps under 15 mm and clips to the text area
+    let f = covered(vec![(20.0, 30.0), (40.0, 50.0), (100.0, 110.0)], 20.0, 277.0);
+    assert!((f - 40.0 / 257.0).abs() < 1e-9, "{f}");
+}
+
+/// One note to check: the task's name and text, the language, how a
+/// continuation line begins and ends, the word of a figure's caption.
+type Job<'a> = (&'a str, &'a String, Language, (&'a str, &'a str), &'a str);
+
+/// The checklist over every note of the issue's list, in ru, uk and en.
+#[test]
+fn teachers_checklist_over_the_notes() {
+    let tasks: Vec<(&str, String)> = vec![
+        ("default.toml", DEFAULT_TASK.to_string()),
+        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
+        ("synth-seed-003-six-bar.toml", example("synth-seed-003-six-bar.toml")),
+        ("gear-seed001.toml", example("gear-seed001.toml")),
+        ("planetary-ext-int.toml", example("planetary-ext-int.toml")),
+        ("cam-oscillating-roller.toml", example("cam-oscillating-roller.toml")),
+        ("textbook/p2-engine.toml", example("textbook/p2-engine.toml")),
+        (
+            "textbook/p5-pneumatic-cylinder.toml",
+            example("textbook/p5-pneumatic-cylinder.toml"),
+        ),
+    ];
+    let langs = [
+        (Language::Ru, ("Продолжение таблицы", ""), "Рисунок"),
+        (Language::Uk, ("Продовження таблиці", ""), "Рисунок"),
+        (Language::En, ("Table", "continued"), "Figure"),
+    ];
+    let jobs: Vec<Job> = tasks
+        .iter()
+        .flat_map(|(n, t)| langs.iter().map(move |(l, w, f)| (*n, t, *l, *w, *f)))
+        .collect();
+    // two threads: the notes are independent
+    let results: Vec<(String, Counts, Vec<String>)> = std::thread::scope(|s| {
+        let half = jobs.len().div_ceil(2);
+        let handles: Vec<_> = jobs
+            .chunks(half)
+            .map(|chunk| {
+                s.spawn(move || {
+                    chunk
+                        .iter()
+                        .map(|(name, text, lang, word, figure)| {
+                            let task = TaskSource::new(*name, text.as_str());
+                            let run = run_task_in(&task, Some(*lang)).unwrap();
+                            let note = compose(&run, &task).unwrap();
+                            let label = format!("{name} {lang:?}");
+                            let mut faults = Vec::new();
+                            let counts = check(&label, &note, *word, figure, &mut faults);
+                            (label, counts, faults)
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles.into_iter().flat_map(|h| h.join().unwrap()).collect()
+    });
+    let mut faults = Vec::new();
+    let (mut pages, mut continued, mut half, mut inside) = (0, 0, 0, 0);
+    for (label, c, f) in &results {
+        println!(
+            "{label}: {} pages, {} tables continued, {} half-empty pages {:?} ({} not a section's last {:?})",
+            c.pages,
+            c.continued,
+            c.half_empty.len(),
+            c.half_empty,
+            c.half_empty_inside.len(),
+            c.half_empty_inside
+        );
+        pages += c.pages;
+        continued += c.continued;
+        half += c.half_empty.len();
+        inside += c.half_empty_inside.len();
+        faults.extend(f.iter().cloned());
+    }
+    println!(
+        "checklist: {} notes, {pages} pages, {continued} tables continued, {half} half-empty pages ({inside} not a section's last)",
+        results.len()
+    );
+    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}
