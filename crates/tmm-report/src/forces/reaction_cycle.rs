@@ -389,8 +389,7 @@ impl ReactionCycle {
         if couple {
             return None;
         }
-        let (w, h) = (200.0, 200.0);
-        let mut c = Canvas::new(w, h);
+        let w = 200.0;
         let pts: Vec<(f64, f64)> = (0..self.len()).map(|k| self.force(k, j)).map(|f| (f.x, f.y)).collect();
         let rmax = pts.iter().map(|p| p.0.hypot(p.1)).fold(0.0, f64::max).max(1e-9);
         let reach = 1.08 * rmax;
@@ -402,6 +401,15 @@ impl ReactionCycle {
             let pad = 0.08 * (x1 - x0).max(y1 - y0).max(1e-9);
             (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
         };
+        // equal scales: the Cartesian plot is as tall as its data over the
+        // plot's 150 mm width (a flat hodograph leaves no empty square on
+        // the sheet or the note's page), between 90 and 200 mm in all
+        let h = if polar {
+            200.0
+        } else {
+            (48.0 + (w - 50.0) * (ymax - ymin) / (xmax - xmin).max(1e-12)).clamp(90.0, 200.0)
+        };
+        let mut c = Canvas::new(w, h);
         c.fit((xmin, xmax, ymin, ymax), (18.0, 14.0, w - 32.0, h - 34.0));
         let title = format!(
             "{} {name}{}",
