@@ -315,7 +315,9 @@ fn the_contour_axes_are_those_of_the_drawing() {
                 ys.push((v, near(&hy, y)));
             }
         }
-        assert!(xs.len() >= 4 && ys.len() >= 4, "{sheet}: {} and {} ticks", xs.len(), ys.len());
+        // at 2.5 mm lettering the A2 contour numbers every other x tick, so
+        // three numbers may be all there is on x1: enough for the line's fit
+        assert!(xs.len() >= 3 && ys.len() >= 4, "{sheet}: {} and {} ticks", xs.len(), ys.len());
         let (ax, bx) = line_fit(&xs);
         let (ay, by) = line_fit(&ys);
         let a = tmm_web::gear_pick::axes(&p.task).unwrap().unwrap();
