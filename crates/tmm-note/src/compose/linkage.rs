@@ -101,13 +101,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if cx.s("/linkage/input/kind") == Some("slider") {
         return slider_section(cx, lk).map(Some);
     }
-    let st = "/linkage/structure";
-    let dof = cx.v(&format!("{st}/dof"))?;
-    let n = cx.v(&format!("{st}/n"))?;
-    let p5 = cx.v(&format!("{st}/p5"))?;
-    let p4 = cx.v(&format!("{st}/p4"))?;
-    let formula_text = cx.s(&format!("{st}/formula")).unwrap_or("").to_string();
-    let class = cx.v(&format!("{st}/class"))?;
+    let structure = Structure::read(cx)?;
     let omega = cx.v("/linkage/input/omega")?;
 
     let statement = vec![
@@ -147,20 +141,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         formulas.push(formula("K_v = (180° + theta) / (180° - theta)"));
         formulas.push(cx.para("where_kv", &[])?);
     }
-    let mut results = super::structure::blocks(cx)?;
-    results.extend([
-        cx.para("calc_dof", &[])?,
-        Block::Calculation(Calculation::new(
-            Quantity::count("W", dof),
-            calc::sub(
-                calc::sub(
-                    Expr::Mul(vec![calc::int(3), calc::count("n", n)]),
-                    Expr::Mul(vec![calc::int(2), calc::count("p_5", p5)]),
-                ),
-                calc::count("p_4", p4),
-            ),
-        )),
-    ]);
+    let mut results = structure.dof_blocks(cx)?;
     if let (Some((axis, pin, l)), Some(v)) = (crank(cx), plan_speed(cx)) {
         let pin_m = math_name(&pin);
         results.push(cx.para("calc_vb", &[cx.deg("/linkage/plans/phi")?])?);
@@ -173,29 +154,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             ]),
         )));
     }
-    results.push(cx.para(
-        "lk_structure",
-        &[
-            format!("{n}"),
-            format!("{p5}"),
-            format!("{p4}"),
-            format!("{dof}"),
-            formula_text.clone(),
-            format!("{class}"),
-        ],
-    )?);
-    for (path, key) in [
-        ("linkage/positions.svg", "fig_positions"),
-        ("linkage/velocity-plan.svg", "fig_velocity_plan"),
-        ("linkage/acceleration-plan.svg", "fig_acceleration_plan"),
-        ("linkage/diagram-s.svg", "fig_diagram_s"),
-        ("linkage/diagram-v.svg", "fig_diagram_v"),
-        ("linkage/diagram-a.svg", "fig_diagram_a"),
-    ] {
-        if let Some(f) = cx.figure(path, key)? {
-            results.push(f);
-        }
-    }
+    structure.paragraph_and_figures(cx, &mut results)?;
     // the plan position: the point speeds and accelerations from the plans
     if let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) {
         let acc = lk
@@ -227,7 +186,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         }
     }
     let conclusions = vec![
-        cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
+        structure.conclusion(cx)?,
         match kv {
             Some(kv) => cx.para(
                 "lk_conclusion_kinematics",
@@ -246,6 +205,88 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
 }
 
+/// The structure's numbers from the report (the crank and the slider
+/// input alike): moving links n, lower and higher pairs p5, p4, the degree
+/// of freedom W, the structure formula and the mechanism's class.
+struct Structure {
+    dof: f64,
+    n: f64,
+    p5: f64,
+    p4: f64,
+    formula: String,
+    class: f64,
+}
+
+impl Structure {
+    fn read(cx: &Ctx) -> Result<Self, NoteError> {
+        let st = "/linkage/structure";
+        Ok(Self {
+            dof: cx.v(&format!("{st}/dof"))?,
+            n: cx.v(&format!("{st}/n"))?,
+            p5: cx.v(&format!("{st}/p5"))?,
+            p4: cx.v(&format!("{st}/p4"))?,
+            formula: cx.s(&format!("{st}/formula")).unwrap_or("").to_string(),
+            class: cx.v(&format!("{st}/class"))?,
+        })
+    }
+
+    /// The structural analysis' blocks and W worked by Chebyshev's formula.
+    fn dof_blocks(&self, cx: &Ctx) -> Result<Vec<Block>, NoteError> {
+        let mut results = super::structure::blocks(cx)?;
+        results.extend([
+            cx.para("calc_dof", &[])?,
+            Block::Calculation(Calculation::new(
+                Quantity::count("W", self.dof),
+                calc::sub(
+                    calc::sub(
+                        Expr::Mul(vec![calc::int(3), calc::count("n", self.n)]),
+                        Expr::Mul(vec![calc::int(2), calc::count("p_5", self.p5)]),
+                    ),
+                    calc::count("p_4", self.p4),
+                ),
+            )),
+        ]);
+        Ok(results)
+    }
+
+    /// The conclusion's sentence on the structure.
+    fn conclusion(&self, cx: &Ctx) -> Result<Block, NoteError> {
+        cx.para(
+            "lk_conclusion_structure",
+            &[self.formula.clone(), format!("{}", self.class), format!("{}", self.dof)],
+        )
+    }
+
+    /// The structure's paragraph, then the section's figures (positions,
+    /// plans, diagrams) that the run made.
+    fn paragraph_and_figures(&self, cx: &Ctx, results: &mut Vec<Block>) -> Result<(), NoteError> {
+        results.push(cx.para(
+            "lk_structure",
+            &[
+                format!("{}", self.n),
+                format!("{}", self.p5),
+                format!("{}", self.p4),
+                format!("{}", self.dof),
+                self.formula.clone(),
+                format!("{}", self.class),
+            ],
+        )?);
+        for (path, key) in [
+            ("linkage/positions.svg", "fig_positions"),
+            ("linkage/velocity-plan.svg", "fig_velocity_plan"),
+            ("linkage/acceleration-plan.svg", "fig_acceleration_plan"),
+            ("linkage/diagram-s.svg", "fig_diagram_s"),
+            ("linkage/diagram-v.svg", "fig_diagram_v"),
+            ("linkage/diagram-a.svg", "fig_diagram_a"),
+        ] {
+            if let Some(f) = cx.figure(path, key)? {
+                results.push(f);
+            }
+        }
+        Ok(())
+    }
+}
+
 /// A length of the report (m) printed in mm.
 fn mm(cx: &Ctx, ptr: &str) -> Result<String, NoteError> {
     cx.q(cx.v(ptr)? * 1e3, "u_mm")
@@ -255,13 +296,7 @@ fn mm(cx: &Ctx, ptr: &str) -> Result<String, NoteError> {
 /// input, the structure, the analogues taken by s, the figures and the
 /// points' speeds and accelerations at the plans' s.
 fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
-    let st = "/linkage/structure";
-    let dof = cx.v(&format!("{st}/dof"))?;
-    let n = cx.v(&format!("{st}/n"))?;
-    let p5 = cx.v(&format!("{st}/p5"))?;
-    let p4 = cx.v(&format!("{st}/p4"))?;
-    let formula_text = cx.s(&format!("{st}/formula")).unwrap_or("").to_string();
-    let class = cx.v(&format!("{st}/class"))?;
+    let structure = Structure::read(cx)?;
     let statement = vec![
         cx.para(
             "lk_slider_given",
@@ -281,43 +316,8 @@ fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
         cx.para("where_dof", &[])?,
         formula("x' = dot(x) / v, quad x'' = (dot.double(x) - x' a) / v^2"),
     ];
-    let mut results = super::structure::blocks(cx)?;
-    results.extend([
-        cx.para("calc_dof", &[])?,
-        Block::Calculation(Calculation::new(
-            Quantity::count("W", dof),
-            calc::sub(
-                calc::sub(
-                    Expr::Mul(vec![calc::int(3), calc::count("n", n)]),
-                    Expr::Mul(vec![calc::int(2), calc::count("p_5", p5)]),
-                ),
-                calc::count("p_4", p4),
-            ),
-        )),
-    ]);
-    results.push(cx.para(
-        "lk_structure",
-        &[
-            format!("{n}"),
-            format!("{p5}"),
-            format!("{p4}"),
-            format!("{dof}"),
-            formula_text.clone(),
-            format!("{class}"),
-        ],
-    )?);
-    for (path, key) in [
-        ("linkage/positions.svg", "fig_positions"),
-        ("linkage/velocity-plan.svg", "fig_velocity_plan"),
-        ("linkage/acceleration-plan.svg", "fig_acceleration_plan"),
-        ("linkage/diagram-s.svg", "fig_diagram_s"),
-        ("linkage/diagram-v.svg", "fig_diagram_v"),
-        ("linkage/diagram-a.svg", "fig_diagram_a"),
-    ] {
-        if let Some(f) = cx.figure(path, key)? {
-            results.push(f);
-        }
-    }
+    let mut results = structure.dof_blocks(cx)?;
+    structure.paragraph_and_figures(cx, &mut results)?;
     let rows = plan_rows(lk);
     if !rows.is_empty() {
         results.push(cx.para("lk_slider_plans", &[mm(cx, "/linkage/plans/s")?])?);
@@ -327,10 +327,7 @@ fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
             rows,
         )?);
     }
-    let conclusions = vec![
-        cx.para("lk_conclusion_structure", &[formula_text, format!("{class}"), format!("{dof}")])?,
-        cx.para("lk_slider_conclusion", &[pressure_max(cx)?])?,
-    ];
+    let conclusions = vec![structure.conclusion(cx)?, cx.para("lk_slider_conclusion", &[pressure_max(cx)?])?];
     four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)
 }
 
