@@ -201,9 +201,16 @@ pub struct Analysis {
 
 /// Solve one position into a row.
 pub fn row(m: &Mechanism, r: &Reading, pos: Position) -> Result<Row, LinkageError> {
+    row_with(m, pos, |sol| r.analogs(m, sol))
+}
+
+/// A row of the table at `pos` with the output's analogues given by
+/// `analogs` of the solved position (the crank's over ψ, a slider input's
+/// over s).
+pub(crate) fn row_with(m: &Mechanism, pos: Position, analogs: impl FnOnce(&Solution) -> (f64, f64, f64)) -> Result<Row, LinkageError> {
     let mut sol = m.solution();
     m.solve(pos.phi, &mut sol)?;
-    let analogs = r.analogs(m, &sol);
+    let analogs = analogs(&sol);
     let mut pressure = Vec::new();
     cycle::pressure_angles(m, &sol, &mut pressure);
     Ok(Row {

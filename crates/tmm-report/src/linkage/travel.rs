@@ -46,17 +46,7 @@ fn row_analogs(m: &Mechanism, out: &Output, x0: f64, sol: &Solution) -> (f64, f6
 
 /// Solve one s into a row.
 fn row(m: &Mechanism, out: &Output, x0: f64, pos: Position) -> Result<Row, LinkageError> {
-    let mut sol = m.solution();
-    m.solve(pos.phi, &mut sol)?;
-    let analogs = row_analogs(m, out, x0, &sol);
-    let mut pressure = Vec::new();
-    cycle::pressure_angles(m, &sol, &mut pressure);
-    Ok(Row {
-        pos,
-        sol,
-        analogs,
-        pressure,
-    })
+    super::row_with(m, pos, |sol| row_analogs(m, out, x0, sol))
 }
 
 /// The error of a travel that goes past where the mechanism assembles: the
