@@ -11,6 +11,7 @@ mod formulas;
 mod frame;
 mod notation;
 mod pdf_read;
+mod scales_pdf;
 mod sheets_dxf_pdf;
 mod sheets_pdf;
 mod typeset;

@@ -18,6 +18,10 @@
 //! is measured as it stands); points are converted at 25.4/72 mm. Stroked
 //! straight horizontal lines outside the drawings are kept as rules (`S`
 //! after one `m … l` segment), for the layout checks of `checklist.rs`.
+//! For the scale checks (`scales_pdf.rs`) every clip (with the clip it
+//! lies in), every painted path (its pieces, straight or curved, through
+//! the matrices) and every text run decoded through its font's
+//! `/ToUnicode` CMap (9.10.3) are kept too.
 
 use std::collections::HashMap;
 
@@ -75,6 +79,8 @@ pub struct Placed {
     /// Its box on the page in PDF points (x0, y0, x1, y1; y up from the
     /// page's foot).
     pub rect_pt: (f64, f64, f64, f64),
+    /// Its clip in [`Read::clips`].
+    pub clip: usize,
 }
 
 /// A stroked straight horizontal line outside the drawings (a table's
@@ -87,6 +93,49 @@ pub struct Rule {
     pub y_pt: f64,
 }
 
+/// A clipping rectangle (an SVG viewport: a note's figure, a sheet, a
+/// drawing on a sheet), inside the clip `parent`, in the page its walk
+/// was on.
+#[derive(Debug, Clone)]
+pub struct Clip {
+    /// Its box in PDF points (x0, y0, x1, y1; y up from the page's foot).
+    pub rect_pt: (f64, f64, f64, f64),
+    /// The clip it is drawn inside.
+    pub parent: Option<usize>,
+}
+
+/// One subpath of a painted path, on the page in PDF points: the points
+/// its pieces end at (a straight piece from each to the next; a curved
+/// piece is kept as its end points, so the points of a circle drawn as
+/// four Bézier quarters are its four extreme points).
+#[derive(Debug, Clone, Default)]
+pub struct Subpath {
+    pub pts: Vec<(f64, f64)>,
+    /// Which pieces are straight: `straight[i]` for the piece from
+    /// `pts[i]` to `pts[i + 1]`.
+    pub straight: Vec<bool>,
+    /// Closed by `h` (or a rectangle).
+    pub closed: bool,
+}
+
+/// A painted path (`S`, `f`, `B` …) with every matrix applied.
+#[derive(Debug, Clone)]
+pub struct Painted {
+    /// The innermost clip it is drawn in.
+    pub clip: Option<usize>,
+    /// Stroked (its outline is a line), not only filled.
+    pub stroked: bool,
+    pub subpaths: Vec<Subpath>,
+}
+
+/// A text run decoded to Unicode (through its font's `/ToUnicode`).
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// The innermost clip it is drawn in.
+    pub clip: Option<usize>,
+    pub text: String,
+}
+
 /// What a PDF shows: its texts and its top-level forms.
 #[derive(Debug, Default)]
 pub struct Read {
@@ -96,6 +145,26 @@ pub struct Read {
     pub forms: Vec<Placed>,
     /// Every horizontal stroked line outside the drawings.
     pub rules: Vec<Rule>,
+    /// Every clipping rectangle, in the order set.
+    pub clips: Vec<Clip>,
+    /// Every painted path.
+    pub paths: Vec<Painted>,
+    /// Every text run, decoded, in the order shown.
+    pub runs: Vec<Run>,
+}
+
+impl Read {
+    /// Whether the clip `inner` is `outer` or lies inside it.
+    pub fn within(&self, inner: Option<usize>, outer: usize) -> bool {
+        let mut c = inner;
+        while let Some(i) = c {
+            if i == outer {
+                return true;
+            }
+            c = self.clips[i].parent;
+        }
+        false
+    }
 }
 
 fn num(o: &Object) -> f64 {
@@ -140,6 +209,66 @@ fn cap_of(doc: &Document, resources: Option<&Dictionary>, name: &[u8], cache: &m
     v
 }
 
+/// The Unicode map of a font's `/ToUnicode` CMap (`bfchar` and `bfrange`
+/// entries, ISO 32000-1 9.10.3) and the width of its codes in bytes (2 for
+/// a composite font, 1 otherwise).
+fn unicode_of(doc: &Document, resources: Option<&Dictionary>, name: &[u8]) -> (HashMap<u32, String>, usize) {
+    let mut map = HashMap::new();
+    let look = || -> Option<(Vec<u8>, usize)> {
+        let fonts = dict(doc, resources?.get(b"Font").ok()?)?;
+        let font = dict(doc, fonts.get(name).ok()?)?;
+        let wide = font.get(b"Subtype").ok().and_then(|o| o.as_name().ok()) == Some(b"Type0".as_slice());
+        let Object::Stream(s) = deref(doc, font.get(b"ToUnicode").ok()?) else {
+            return None;
+        };
+        Some((
+            s.decompressed_content().unwrap_or_else(|_| s.content.clone()),
+            if wide { 2 } else { 1 },
+        ))
+    };
+    let Some((cmap, width)) = look() else { return (map, 1) };
+    let text = String::from_utf8_lossy(&cmap);
+    let hex = |t: &str| u32::from_str_radix(t.trim_matches(|c| c == '<' || c == '>'), 16).ok();
+    let utf16 = |t: &str| -> String {
+        let t = t.trim_matches(|c| c == '<' || c == '>');
+        let units: Vec<u16> = (0..t.len() / 4)
+            .filter_map(|i| u16::from_str_radix(&t[4 * i..4 * i + 4], 16).ok())
+            .collect();
+        String::from_utf16_lossy(&units)
+    };
+    let mut mode = "";
+    for line in text.lines() {
+        let line = line.trim();
+        if line.ends_with("beginbfchar") {
+            mode = "char";
+        } else if line.ends_with("beginbfrange") {
+            mode = "range";
+        } else if line.starts_with("end") {
+            mode = "";
+        } else {
+            let parts: Vec<&str> = line.split_whitespace().collect();
+            match (mode, parts.as_slice()) {
+                ("char", [code, uni]) => {
+                    if let Some(c) = hex(code) {
+                        map.insert(c, utf16(uni));
+                    }
+                }
+                ("range", [lo, hi, uni]) if uni.starts_with('<') => {
+                    if let (Some(lo), Some(hi), Some(u0)) = (hex(lo), hex(hi), hex(uni)) {
+                        for (k, c) in (lo..=hi).enumerate() {
+                            if let Some(ch) = char::from_u32(u0 + k as u32) {
+                                map.insert(c, ch.to_string());
+                            }
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    (map, width)
+}
+
 struct Walker<'a> {
     doc: &'a Document,
     page: u32,
@@ -147,16 +276,20 @@ struct Walker<'a> {
 }
 
 impl Walker<'_> {
-    fn walk(&mut self, content: &[u8], resources: Option<&Dictionary>, ctm0: M, clip0: bool) {
+    fn walk(&mut self, content: &[u8], resources: Option<&Dictionary>, ctm0: M, clip0: bool, clip_id0: Option<usize>) {
         let Ok(ops) = Content::decode(content) else {
             return;
         };
         let mut caps: HashMap<Vec<u8>, f64> = HashMap::new();
-        // (matrix, inside a drawing's clip)
-        let mut stack: Vec<(M, bool)> = Vec::new();
+        let mut unicode: HashMap<Vec<u8>, (HashMap<u32, String>, usize)> = HashMap::new();
+        // (matrix, inside a drawing's clip, the innermost clip)
+        let mut stack: Vec<(M, bool, Option<usize>)> = Vec::new();
         let mut ctm = ctm0;
         let mut clip = clip0;
+        let mut clip_id = clip_id0;
         let mut path: Vec<(f64, f64)> = Vec::new();
+        let mut subs: Vec<Subpath> = Vec::new();
+        let at = |m: &M, x: f64, y: f64| (x * m[0] + y * m[2] + m[4], x * m[1] + y * m[3] + m[5]);
         let mut clipping = false;
         // the drawing just placed waits for its first matrix
         let mut fresh: Option<usize> = None;
@@ -165,8 +298,8 @@ impl Walker<'_> {
         for op in &ops.operations {
             let a = &op.operands;
             match op.operator.as_str() {
-                "q" => stack.push((ctm, clip)),
-                "Q" => (ctm, clip) = stack.pop().unwrap_or((ctm0, clip0)),
+                "q" => stack.push((ctm, clip, clip_id)),
+                "Q" => (ctm, clip, clip_id) = stack.pop().unwrap_or((ctm0, clip0, clip_id0)),
                 "cm" if a.len() == 6 => {
                     let m = [num(&a[0]), num(&a[1]), num(&a[2]), num(&a[3]), num(&a[4]), num(&a[5])];
                     ctm = mul(&m, &ctm);
@@ -180,12 +313,44 @@ impl Walker<'_> {
                     }
                     let (x, y) = (num(&a[0]), num(&a[1]));
                     path.push((x * ctm[0] + y * ctm[2] + ctm[4], x * ctm[1] + y * ctm[3] + ctm[5]));
+                    if op.operator == "m" || subs.is_empty() {
+                        subs.push(Subpath::default());
+                    } else if let Some(s) = subs.last_mut() {
+                        s.straight.push(true);
+                    }
+                    if let Some(s) = subs.last_mut() {
+                        s.pts.push(at(&ctm, x, y));
+                    }
+                }
+                "c" | "v" | "y" if a.len() >= 4 => {
+                    let n = a.len();
+                    let p = at(&ctm, num(&a[n - 2]), num(&a[n - 1]));
+                    if subs.is_empty() {
+                        subs.push(Subpath::default());
+                    }
+                    if let Some(s) = subs.last_mut() {
+                        s.straight.push(false);
+                        s.pts.push(p);
+                    }
+                }
+                "h" => {
+                    if let Some(s) = subs.last_mut() {
+                        s.closed = true;
+                    }
                 }
                 "re" if a.len() == 4 => {
                     let (x, y, w, h) = (num(&a[0]), num(&a[1]), num(&a[2]), num(&a[3]));
                     for (px, py) in [(x, y), (x + w, y), (x + w, y + h), (x, y + h)] {
                         path.push((px * ctm[0] + py * ctm[2] + ctm[4], px * ctm[1] + py * ctm[3] + ctm[5]));
                     }
+                    subs.push(Subpath {
+                        pts: [(x, y), (x + w, y), (x + w, y + h), (x, y + h), (x, y)]
+                            .iter()
+                            .map(|&(px, py)| at(&ctm, px, py))
+                            .collect(),
+                        straight: vec![true; 4],
+                        closed: true,
+                    });
                 }
                 "W" | "W*" => clipping = true,
                 "n" | "f" | "F" | "f*" | "S" | "s" | "B" | "B*" | "b" | "b*" => {
@@ -194,6 +359,25 @@ impl Walker<'_> {
                             page: self.page,
                             y_pt: path[0].1,
                         });
+                    }
+                    if op.operator != "n" && !subs.is_empty() {
+                        self.out.paths.push(Painted {
+                            clip: clip_id,
+                            stroked: matches!(op.operator.as_str(), "S" | "s" | "B" | "B*" | "b" | "b*"),
+                            subpaths: std::mem::take(&mut subs),
+                        });
+                    }
+                    subs.clear();
+                    if clipping && path.len() >= 4 {
+                        let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+                        for &(x, y) in &path {
+                            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+                        }
+                        self.out.clips.push(Clip {
+                            rect_pt: (x0, y0, x1, y1),
+                            parent: clip_id,
+                        });
+                        clip_id = Some(self.out.clips.len() - 1);
                     }
                     if clipping && !clip && path.len() >= 4 {
                         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
@@ -205,6 +389,7 @@ impl Walker<'_> {
                             size_mm: ((x1 - x0) * MM_PER_PT, (y1 - y0) * MM_PER_PT),
                             unit_mm: None,
                             rect_pt: (x0, y0, x1, y1),
+                            clip: self.out.clips.len() - 1,
                         });
                         fresh = Some(self.out.forms.len() - 1);
                         clip = true;
@@ -243,6 +428,30 @@ impl Walker<'_> {
                         _ => false,
                     });
                     if has_glyphs {
+                        let (map, width) = unicode
+                            .entry(font.clone())
+                            .or_insert_with(|| unicode_of(self.doc, resources, &font));
+                        let mut text = String::new();
+                        let mut push = |bytes: &[u8]| {
+                            for code in bytes.chunks(*width) {
+                                let c = code.iter().fold(0u32, |v, b| v * 256 + *b as u32);
+                                text.push_str(map.get(&c).map(String::as_str).unwrap_or("\u{fffd}"));
+                            }
+                        };
+                        for o in a {
+                            match o {
+                                Object::String(s, _) => push(s),
+                                Object::Array(v) => {
+                                    for x in v {
+                                        if let Object::String(s, _) = x {
+                                            push(s);
+                                        }
+                                    }
+                                }
+                                _ => {}
+                            }
+                        }
+                        self.out.runs.push(Run { clip: clip_id, text });
                         let cap = match caps.get(&font) {
                             Some(c) => *c,
                             None => cap_of(self.doc, resources, &font, &mut caps),
@@ -273,7 +482,7 @@ impl Walker<'_> {
                     let m = mul(&matrix, &ctm);
                     let inner_res = s.dict.get(b"Resources").ok().and_then(|r| dict(self.doc, r));
                     let body = s.decompressed_content().unwrap_or_else(|_| s.content.clone());
-                    self.walk(&body, inner_res.or(resources), m, clip);
+                    self.walk(&body, inner_res.or(resources), m, clip, clip_id);
                 }
                 _ => {}
             }
@@ -303,7 +512,7 @@ pub fn read_doc(doc: &Document) -> Read {
             .ok()
             .and_then(|p| p.get(b"Resources").ok())
             .and_then(|r| dict(doc, r));
-        w.walk(&content, res, IDENTITY, false);
+        w.walk(&content, res, IDENTITY, false, None);
     }
     w.out
 }
