@@ -10,7 +10,9 @@
 //! exact `skewX(-15)` about its anchor rather than `font-style="italic"`,
 //! whose synthetic oblique differs between viewers (and would slant an
 //! already slanted face twice). Slanted faces such as KOMPAS's "GOST type
-//! B" are therefore not listed.
+//! B" are therefore not listed. The letters osifont draws as boxes (Э э Ё
+//! ё) and the signs it lacks are set in tmm's own supplement font
+//! ([`SUPPLEMENT_FAMILY`], [`lettering`]).
 
 use std::fmt::Write;
 
@@ -48,15 +50,114 @@ pub fn num(v: f64) -> String {
     if s == "-0" { "0".to_string() } else { s }
 }
 
-/// XML-escaped text for the SVG. "ё" and "Ё" are written as "е" and "Е":
-/// osifont (Debian's 0.1.20220224) draws both as filled boxes, and Russian
-/// printing allows "е" for "ё" (the DXF keeps "ё").
+/// The family of tmm's supplement to osifont (`tmm GOST supplement`, drawn
+/// for tmm by `scripts/gost-supplement.py` from GOST 2.304 type B's
+/// construction at osifont's metrics; MIT OR Apache-2.0): the letters
+/// osifont 0.1.20220224 draws as filled boxes (Э э Ё ё) and signs it lacks.
+pub const SUPPLEMENT_FAMILY: &str = "tmm GOST supplement";
+
+/// The characters set in [`SUPPLEMENT_FAMILY`]: every one the supplement
+/// font draws.
+pub const SUPPLEMENT_CHARS: &str = "ЭэЁё−′″…→₀";
+
+/// The font-family list of a run of [`SUPPLEMENT_CHARS`]: the supplement,
+/// then the fallbacks without osifont, so a viewer that lacks the
+/// supplement prints those letters in an upright common face rather than
+/// osifont's boxes.
+pub const SUPPLEMENT_FONT_FAMILY: &str = "'tmm GOST supplement', 'DejaVu Sans', Arial, sans-serif";
+
+/// An empty mark of no width, in the supplement and in no other face,
+/// that [`mark_supplement_runs`] puts at the end of every run set in the
+/// supplement before the SVG is typeset. usvg (the SVG reader of the
+/// note's typesetter) shapes a whole line in the font of each run and,
+/// when a substitute face has every character of the line, takes all of
+/// them from it — osifont's boxed Э would come back. With the mark no
+/// other face has the whole line, so each face gives only the characters
+/// of its own run. The loose SVG files do not carry it (a browser could
+/// show it as a missing glyph).
+pub const RUN_MARK: char = '\u{10FFFD}';
+
+/// `svg` with [`RUN_MARK`] at the end of every run [`lettering`] and the
+/// drawings' text set in the supplement: for the typesetter only.
+///
+/// ```
+/// use tmm_draw::svg::{RUN_MARK, lettering, mark_supplement_runs};
+/// let svg = format!("<text>{}</text>", lettering("Эпюра"));
+/// assert!(mark_supplement_runs(&svg).contains(&format!("Э{RUN_MARK}</tspan>пюра")));
+/// assert_eq!(mark_supplement_runs("<text>Epure</text>"), "<text>Epure</text>");
+/// ```
+pub fn mark_supplement_runs(svg: &str) -> String {
+    let open = format!("font-family=\"{SUPPLEMENT_FONT_FAMILY}\"");
+    let mut out = String::with_capacity(svg.len());
+    let mut rest = svg;
+    while let Some(i) = rest.find(&open) {
+        // the run's tspan holds text only: its end is the next `</tspan>`
+        let Some(j) = rest[i..].find("</tspan>") else { break };
+        out.push_str(&rest[..i + j]);
+        out.push(RUN_MARK);
+        out.push_str("</tspan>");
+        rest = &rest[i + j + "</tspan>".len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Whether `c` is set in the supplement font.
+pub fn in_supplement(c: char) -> bool {
+    SUPPLEMENT_CHARS.contains(c)
+}
+
+/// `s` cut into runs of characters set in osifont (`false`) and in the
+/// supplement (`true`), in order; empty for an empty `s`.
+///
+/// ```
+/// let r = tmm_draw::svg::font_runs("Эпюра ёмкости");
+/// assert_eq!(r, [(true, "Э"), (false, "пюра "), (true, "ё"), (false, "мкости")]);
+/// ```
+pub fn font_runs(s: &str) -> Vec<(bool, &str)> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut cur = None;
+    for (i, c) in s.char_indices() {
+        let sup = in_supplement(c);
+        if cur.is_some_and(|k| k != sup) {
+            out.push((!sup, &s[start..i]));
+            start = i;
+        }
+        cur = Some(sup);
+    }
+    if let Some(k) = cur {
+        out.push((k, &s[start..]));
+    }
+    out
+}
+
+/// XML-escaped text for SVG, each run of the supplement's characters in a
+/// `<tspan>` naming [`SUPPLEMENT_FONT_FAMILY`] (no other attribute, so it
+/// may sit inside any text or tspan).
+///
+/// ```
+/// let t = tmm_draw::svg::lettering("Эпюра <M>");
+/// assert!(t.starts_with("<tspan font-family=\"'tmm GOST supplement'"));
+/// assert!(t.ends_with(">Э</tspan>пюра &lt;M&gt;"));
+/// ```
+pub fn lettering(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for (sup, run) in font_runs(s) {
+        if sup {
+            let _ = write!(o, "<tspan font-family=\"{SUPPLEMENT_FONT_FAMILY}\">{}</tspan>", esc(run));
+        } else {
+            o.push_str(&esc(run));
+        }
+    }
+    o
+}
+
+/// XML-escaped text for the SVG.
 fn esc(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
-            'ё' => o.push('е'),
-            'Ё' => o.push('Е'),
             '&' => o.push_str("&amp;"),
             '<' => o.push_str("&lt;"),
             '>' => o.push_str("&gt;"),
@@ -216,34 +317,43 @@ pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
             num(s.chars().map(|c| h.advance(c)).sum::<f64>())
         )
     };
+    // each run of one font is its own tspan with its own length: a
+    // textLength applies to the characters of its own element only
+    let runs = |o: &mut String, s: &str, h: crate::TextHeight, pre: &str, first: &str, post: &str| {
+        for (i, (sup, run)) in font_runs(s).into_iter().enumerate() {
+            let font = if sup {
+                format!(" font-family=\"{SUPPLEMENT_FONT_FAMILY}\"")
+            } else {
+                String::new()
+            };
+            let _ = write!(
+                o,
+                "<tspan{pre}{}{}{post}{font}>{}</tspan>",
+                if i == 0 { first } else { "" },
+                len(run, h),
+                esc(run)
+            );
+        }
+    };
     let mut o = String::new();
     for sp in &r.spans {
         if sp.base.is_empty() {
             o.push_str("<tspan></tspan>");
         } else {
-            let _ = write!(o, "<tspan{}>{}</tspan>", len(&sp.base, h), esc(&sp.base));
+            runs(&mut o, &sp.base, h, "", "", "");
         }
+        let pre = format!(" font-size=\"{isize}\"");
         if let Some(sup) = &sp.sup {
-            let _ = write!(
-                o,
-                "<tspan font-size=\"{isize}\"{} baseline-shift=\"{}\">{}</tspan>",
-                len(sup, ih),
-                num(0.5 * h.mm()),
-                esc(sup)
-            );
+            let post = format!(" baseline-shift=\"{}\"", num(0.5 * h.mm()));
+            runs(&mut o, sup, ih, &pre, "", &post);
         }
         if let Some(sub) = &sp.sub {
             let back = match &sp.sup {
                 Some(sup) => format!(" dx=\"{}\"", num(-sup.chars().map(|c| ih.advance(c)).sum::<f64>())),
                 None => String::new(),
             };
-            let _ = write!(
-                o,
-                "<tspan font-size=\"{isize}\"{back}{} baseline-shift=\"{}\">{}</tspan>",
-                len(sub, ih),
-                num(-h.mm() / 3.0),
-                esc(sub)
-            );
+            let post = format!(" baseline-shift=\"{}\"", num(-h.mm() / 3.0));
+            runs(&mut o, sub, ih, &pre, &back, &post);
         }
     }
     o

@@ -28,6 +28,7 @@ pub mod compose;
 pub mod documents;
 pub mod error;
 pub mod escape;
+pub mod fonts;
 pub mod markup;
 pub mod model;
 pub mod notation;

@@ -1,12 +1,15 @@
 //! The typst `World` of a note: the generated `/main.typ`, the template
-//! `/template.typ`, the figures' SVG documents as virtual files, and the fonts
-//! embedded in the binary. Nothing is read from the disk or the network.
+//! `/template.typ`, the figures' SVG documents as virtual files, and the
+//! fonts of [`crate::fonts`] (those linked into the binary, and the GOST
+//! lettering face osifont when the machine has it — the one thing read from
+//! the disk; nothing from the network).
 //!
 //! Fonts: `typst-assets` (feature `fonts`) — New Computer Modern (text, full
 //! Cyrillic with the Ukrainian і ї є ґ in all four styles), New Computer
 //! Modern Math (formulas; Cyrillic inside formulas falls back to the text
 //! face), DejaVu Sans Mono (code), Libertinus Serif (not used by the
-//! template). The fonts and the standard library are parsed once per process.
+//! template); tmm's GOST supplement and osifont (the drawings' lettering).
+//! The fonts and the standard library are parsed once per process.
 
 use std::collections::HashMap;
 use std::sync::LazyLock;
@@ -27,7 +30,7 @@ struct Fonts {
 }
 
 static FONTS: LazyLock<Fonts> = LazyLock::new(|| {
-    let fonts: Vec<Font> = typst_assets::fonts().flat_map(|data| Font::iter(Bytes::new(data))).collect();
+    let fonts = crate::fonts::all();
     Fonts {
         book: LazyHash::new(FontBook::from_fonts(&fonts)),
         fonts,
@@ -64,6 +67,8 @@ impl NoteWorld {
         let template = Source::new(file_id("/template.typ")?, TEMPLATE.to_owned());
         let mut files = HashMap::with_capacity(figures.len());
         for (path, svg) in figures {
+            // the supplement's runs marked for usvg's font fallback
+            let svg = tmm_draw::svg::mark_supplement_runs(&svg);
             files.insert(file_id(&path)?, Bytes::from_string(svg));
         }
         Ok(NoteWorld { main, template, files })

@@ -21,7 +21,7 @@ use std::fmt::Write as _;
 use kurbo::{Point, Vec2};
 use tmm_draw::{Geom, Hatch, LineType, Rich, Scene, Shape, Span, Text, TextHeight, Thickness};
 
-use crate::svg::{Anchor, FONT, Style, escape, rich};
+use crate::svg::{Anchor, FONT, Style, escape, rich, slant};
 
 /// A point on the paper, mm from the top-left corner (y down).
 pub type P = (f64, f64);
@@ -464,18 +464,20 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             if *r {
                 let _ = writeln!(
                     s,
-                    "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\" xml:space=\"preserve\">{}</text>",
+                    "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size:.2}\" font-family=\"{FONT}\" transform=\"{}\" text-anchor=\"{a}\" fill=\"{color}\" xml:space=\"preserve\">{}</text>",
                     at.0,
                     at.1,
+                    slant(at.0, at.1),
                     rich(text, *size)
                 );
             } else {
                 let _ = writeln!(
                     s,
-                    "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size:.2}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
+                    "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{size:.2}\" font-family=\"{FONT}\" transform=\"{}\" text-anchor=\"{a}\" fill=\"{color}\">{}</text>",
                     at.0,
                     at.1,
-                    escape(text)
+                    slant(at.0, at.1),
+                    tmm_draw::svg::lettering(text)
                 );
             }
         }
@@ -483,12 +485,13 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             let size = em(*size);
             let _ = writeln!(
                 s,
-                "<text x=\"{}\" y=\"{:.2}\" font-size=\"{size}\" font-family=\"{FONT}\" font-style=\"italic\" text-anchor=\"middle\" transform=\"rotate(-90 {} {:.2})\">{}</text>",
+                "<text x=\"{}\" y=\"{:.2}\" font-size=\"{size}\" font-family=\"{FONT}\" text-anchor=\"middle\" transform=\"rotate(-90 {} {:.2}) {}\">{}</text>",
                 at.0,
                 at.1,
                 at.0,
                 at.1,
-                escape(text)
+                slant(at.0, at.1),
+                tmm_draw::svg::lettering(text)
             );
         }
         Element::Label {
@@ -502,18 +505,24 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             let h = &em(*h);
             let _ = write!(
                 s,
-                "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"DejaVu Sans, Arial, sans-serif\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
+                "<text class=\"label\" xml:space=\"preserve\" x=\"{:.3}\" y=\"{:.3}\" font-size=\"{h:.2}\" font-family=\"{FONT}\" transform=\"{}\" text-anchor=\"{}\" fill=\"{color}\" data-chars=\"{n}\">",
                 c.0,
                 c.1 + 0.35 * h,
+                slant(c.0, c.1 + 0.35 * h),
                 if *start { "start" } else { "middle" }
             );
             let mut level = 0i8;
             for (t, sh) in crate::labels::parts(text) {
                 let dy = f64::from(level - sh) * 0.35 * h;
                 if sh == 0 {
-                    let _ = write!(s, "<tspan dy=\"{dy:.3}\">{}</tspan>", escape(&t));
+                    let _ = write!(s, "<tspan dy=\"{dy:.3}\">{}</tspan>", tmm_draw::svg::lettering(&t));
                 } else {
-                    let _ = write!(s, "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>", index_em(*h), escape(&t));
+                    let _ = write!(
+                        s,
+                        "<tspan dy=\"{dy:.3}\" font-size=\"{:.2}\">{}</tspan>",
+                        index_em(*h),
+                        tmm_draw::svg::lettering(&t)
+                    );
                 }
                 level = sh;
             }

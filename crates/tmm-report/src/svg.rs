@@ -630,11 +630,30 @@ struct Spot {
     dir: (f64, f64),
 }
 
-/// The lettering's font (GOST 2.304 type A, ISO 3098): the faces that
-/// draw it, in order, then fallbacks; written slanted (`font-style:
-/// italic`). The open `osifont` is not listed: Debian's 0.1.20220224 draws
-/// Э э Ё ё as filled boxes ("Энергия", "Эпюра" would lose a letter).
-pub const FONT: &str = "GOST type A, ISOCPEUR, DejaVu Sans, Arial, sans-serif";
+/// The lettering's font (GOST 2.304 type B, ISO 3098): osifont first (an
+/// open face with the standard's letter shapes, upright; the note's
+/// typesetter embeds it when it is installed), then upright fallbacks.
+/// Every text is slanted to 75° by [`slant`] about its anchor, not by
+/// `font-style="italic"` (osifont has no italic, and a synthetic oblique
+/// differs between viewers); the letters osifont draws as boxes (Э э Ё ё)
+/// are set in tmm's supplement ([`tmm_draw::svg::lettering`]).
+pub const FONT: &str = "osifont, DejaVu Sans, Arial, sans-serif";
+
+/// The SVG transform that slants a text anchored at (x, y) to GOST
+/// 2.304's 75°: a shear of 15° about the anchor, so the baseline and the
+/// anchor stay where they are.
+///
+/// ```
+/// assert_eq!(tmm_report::svg::slant(1.0, 2.0), "translate(1.000 2.000) skewX(-15) translate(-1.000 -2.000)");
+/// ```
+pub fn slant(x: f64, y: f64) -> String {
+    format!(
+        "translate({x:.3} {y:.3}) skewX(-{}) translate({:.3} {:.3})",
+        tmm_draw::svg::SLANT_DEG,
+        -x,
+        -y
+    )
+}
 
 /// The part of the lettering height above the baseline a box counts.
 pub const TEXT_ASCENT: f64 = 0.85;
@@ -745,7 +764,7 @@ pub fn rich(s: &str, size: f64) -> String {
             return;
         }
         if level == Level::Base && *at == 0.0 {
-            out.push_str(&escape(run));
+            out.push_str(&tmm_draw::svg::lettering(run));
         } else {
             let dy = shift(level) - *at;
             let fs = if level == Level::Base {
@@ -753,7 +772,11 @@ pub fn rich(s: &str, size: f64) -> String {
             } else {
                 crate::picture::index_em(size)
             };
-            let _ = write!(out, "<tspan dy=\"{dy:.2}\" font-size=\"{fs:.2}\">{}</tspan>", escape(run));
+            let _ = write!(
+                out,
+                "<tspan dy=\"{dy:.2}\" font-size=\"{fs:.2}\">{}</tspan>",
+                tmm_draw::svg::lettering(run)
+            );
             *at = shift(level);
         }
         run.clear();

@@ -49,8 +49,17 @@ fn typeset_error(e: &tmm_note::documents::DocumentError) -> Error {
     Error::Io(e.to_string())
 }
 
+/// One line on standard error when the PDFs are made without the GOST
+/// lettering font, saying how to install it ([`tmm_note::fonts`]).
+fn gost_font_notice() {
+    if tmm_note::fonts::gost_font().is_none() {
+        progress(tmm_note::fonts::INSTALL_HINT);
+    }
+}
+
 /// The note of `run` as PDF bytes.
 pub fn note_pdf(run: &Run, task: &TaskSource) -> Result<Vec<u8>, Error> {
+    gost_font_notice();
     tmm_note::documents::note_pdf(run, task).map_err(|e| typeset_error(&e))
 }
 
@@ -58,6 +67,7 @@ pub fn note_pdf(run: &Run, task: &TaskSource) -> Result<Vec<u8>, Error> {
 /// [`tmm_note::documents::pdf_documents`]), with a progress line per stage.
 pub fn pdf_documents(run: &Run, task: &TaskSource) -> Result<Documents, Error> {
     use tmm_note::documents::Stage;
+    gost_font_notice();
     tmm_note::documents::pdf_documents(run, task, |stage| match stage {
         Stage::Note => progress("typesetting the note"),
         Stage::Sheets(n) => progress(&format!("typesetting {n} sheet(s)")),

@@ -48,14 +48,35 @@ fn dump_the_sample_when_asked() {
     std::fs::write(format!("{dir}/sample.dxf"), tmm_draw::dxf::render(&scene)).unwrap();
 }
 
+/// osifont 0.1.20220224 draws Э э Ё ё as boxes: the SVG keeps the letters
+/// and sets each run of them in tmm's supplement, the rest in osifont.
 #[test]
-fn yo_is_written_as_ye_for_osifont() {
+fn boxed_letters_are_set_in_the_supplement() {
     use kurbo::Point;
     use tmm_draw::{Scale, Scene, Text, TextHeight};
-    let mut s = Scene::new(50.0, 20.0, Scale::NATURAL, Thickness::A4).unwrap();
-    s.text("TEXT", Text::new(Point::new(1.0, 5.0), TextHeight::H3_5, "Расчёт Ёмкость").unwrap())
+    let mut s = Scene::new(60.0, 20.0, Scale::NATURAL, Thickness::A4).unwrap();
+    s.text("TEXT", Text::new(Point::new(1.0, 5.0), TextHeight::H3_5, "Расчёт Эпюра").unwrap())
         .unwrap();
     let a = svg::render(&s);
-    assert!(a.contains("Расчет Емкость") && !a.contains('ё') && !a.contains('Ё'), "{a}");
-    assert!(tmm_draw::dxf::render(&s).contains("Расчёт Ёмкость"));
+    let sup = format!("font-family=\"{}\">", svg::SUPPLEMENT_FONT_FAMILY);
+    assert!(
+        a.contains(&format!("{sup}ё</tspan>")) && a.contains(&format!("{sup}Э</tspan>")),
+        "{a}"
+    );
+    assert!(
+        a.contains(">Расч</tspan>") && a.contains(">т </tspan>") && a.contains(">пюра</tspan>"),
+        "{a}"
+    );
+    // each run is set to type B's widths on its own: the lengths add up
+    // to the whole text's
+    let total: f64 = "Расчёт Эпюра".chars().map(|c| TextHeight::H3_5.advance(c)).sum();
+    let sum: f64 = a
+        .split("textLength=\"")
+        .skip(1)
+        .map(|t| t[..t.find('"').unwrap()].parse::<f64>().unwrap())
+        .sum();
+    assert!((sum - total).abs() < 5e-3, "{sum} vs {total}");
+    // the supplement's family is the one the font file names
+    assert_eq!(svg::SUPPLEMENT_FAMILY, "tmm GOST supplement");
+    assert!(tmm_draw::dxf::render(&s).contains("Расчёт Эпюра"));
 }

@@ -7,6 +7,7 @@ mod checklist;
 mod common;
 mod compose;
 mod figures_pdf;
+mod fonts_pdf;
 mod formulas;
 mod frame;
 mod notation;

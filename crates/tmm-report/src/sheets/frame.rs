@@ -10,10 +10,10 @@ use crate::sheets::layout::Rect;
 pub const LEFT_MM: f64 = 20.0;
 /// The margin on the top, right and bottom, mm.
 pub const EDGE_MM: f64 = 5.0;
-/// The fonts of the drawings' captions on a sheet, the GOST 2.304 faces
-/// first, then fallbacks every viewer has; the open osifont is left out as
-/// in [`crate::svg::FONT`] (its Э э Ё ё are boxes, and "Эпюра" is a caption).
-pub const FONTS: &str = "'GOST type A', ISOCPEUR, 'DejaVu Sans', Arial, sans-serif";
+/// The fonts of the drawings' captions on a sheet: the lettering's list
+/// ([`tmm_draw::svg::FONT_FAMILY`], osifont first; Э э Ё ё from tmm's
+/// supplement, [`tmm_draw::svg::lettering`]).
+pub const FONTS: &str = tmm_draw::svg::FONT_FAMILY;
 
 /// The inner frame of a sheet of `format`, landscape.
 ///

@@ -16,9 +16,20 @@ fn constant_acceleration_jumps_are_marked_as_jerk_impulses() {
     let labels: Vec<f64> = svg
         .lines()
         .filter_map(|l| {
-            // a label's words sit in its last tspan: `Δa = −1317,175 м/с²`
+            // a label's words end its line: `Δa = −1317,175 м/с²` (the
+            // minus sign in a tspan of its own font)
             let t = &l[..l.find("</tspan></text>")?];
-            let t = &t[t.rfind('>')? + 1..];
+            let mut plain = String::new();
+            let mut in_tag = false;
+            for c in t.chars() {
+                match c {
+                    '<' => in_tag = true,
+                    '>' => in_tag = false,
+                    c if !in_tag => plain.push(c),
+                    _ => {}
+                }
+            }
+            let t = &plain[plain.rfind("Δa = ")?..];
             t.strip_prefix("Δa = ")?
                 .strip_suffix(" м/с²")?
                 .replace('−', "-")
