@@ -31,6 +31,7 @@ mod arrow;
 mod dimension;
 mod error;
 pub mod eskd;
+pub mod face;
 pub mod fixed;
 mod hatch;
 mod line;

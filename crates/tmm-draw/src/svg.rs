@@ -67,36 +67,46 @@ pub const SUPPLEMENT_CHARS: &str = "ЭэЁё−′″…→₀";
 pub const SUPPLEMENT_FONT_FAMILY: &str = "'tmm GOST supplement', 'DejaVu Sans', Arial, sans-serif";
 
 /// An empty mark of no width, in the supplement and in no other face,
-/// that [`mark_supplement_runs`] puts at the end of every run set in the
-/// supplement before the SVG is typeset. usvg (the SVG reader of the
-/// note's typesetter) shapes a whole line in the font of each run and,
-/// when a substitute face has every character of the line, takes all of
-/// them from it — osifont's boxed Э would come back. With the mark no
-/// other face has the whole line, so each face gives only the characters
-/// of its own run. The loose SVG files do not carry it (a browser could
-/// show it as a missing glyph).
+/// that [`mark_supplement_runs`] puts at the end of every text that has a
+/// run set in the supplement, before the SVG is typeset. usvg (the SVG
+/// reader of the note's typesetter) shapes the whole line (a text's chunk)
+/// in the font of each run and, when a substitute face has every character
+/// of the line, takes all of them from it — osifont's boxed Э would come
+/// back. With the mark somewhere in the line no other face has the whole
+/// line, so each face gives only the characters of its own run. One mark
+/// per line, at its end, so a word copied or searched in the PDF reads as
+/// written (only the line's last character is followed by the mark). The
+/// loose SVG files do not carry it (a browser could show it as a missing
+/// glyph).
 pub const RUN_MARK: char = '\u{10FFFD}';
 
-/// `svg` with [`RUN_MARK`] at the end of every run [`lettering`] and the
-/// drawings' text set in the supplement: for the typesetter only.
+/// `svg` with [`RUN_MARK`], in a run of its own set in the supplement, at
+/// the end of every `<text>` that has a run [`lettering`] set in the
+/// supplement: for the typesetter only. A text's only chunk ends there:
+/// the drawings position indices by `dy`, which starts no new chunk.
 ///
 /// ```
-/// use tmm_draw::svg::{RUN_MARK, lettering, mark_supplement_runs};
-/// let svg = format!("<text>{}</text>", lettering("Эпюра"));
-/// assert!(mark_supplement_runs(&svg).contains(&format!("Э{RUN_MARK}</tspan>пюра")));
+/// use tmm_draw::svg::{RUN_MARK, SUPPLEMENT_FONT_FAMILY, lettering, mark_supplement_runs};
+/// let svg = format!("<g><text x=\"1\">{}</text><text>Epure</text></g>", lettering("Эпюра"));
+/// let marked = mark_supplement_runs(&svg);
+/// let mark = format!("<tspan font-family=\"{SUPPLEMENT_FONT_FAMILY}\">{RUN_MARK}</tspan></text>");
+/// assert!(marked.contains(&format!("Э</tspan>пюра{mark}")));
+/// assert_eq!(marked.matches(RUN_MARK).count(), 1);
 /// assert_eq!(mark_supplement_runs("<text>Epure</text>"), "<text>Epure</text>");
 /// ```
 pub fn mark_supplement_runs(svg: &str) -> String {
     let open = format!("font-family=\"{SUPPLEMENT_FONT_FAMILY}\"");
+    let mark = format!("<tspan {open}>{RUN_MARK}</tspan>");
     let mut out = String::with_capacity(svg.len());
     let mut rest = svg;
     while let Some(i) = rest.find(&open) {
-        // the run's tspan holds text only: its end is the next `</tspan>`
-        let Some(j) = rest[i..].find("</tspan>") else { break };
+        // the text the run stands in ends at the next `</text>` (texts do
+        // not nest)
+        let Some(j) = rest[i..].find("</text>") else { break };
         out.push_str(&rest[..i + j]);
-        out.push(RUN_MARK);
-        out.push_str("</tspan>");
-        rest = &rest[i + j + "</tspan>".len()..];
+        out.push_str(&mark);
+        out.push_str("</text>");
+        rest = &rest[i + j + "</text>".len()..];
     }
     out.push_str(rest);
     out
@@ -308,15 +318,30 @@ impl Svg {
 pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
     let ih = h.index();
     let isize = num(ih.mm() / CAP_EM);
-    // each run set to type B's width at its height (GOST 2.304, table 2):
-    // a face wider than type B prints the standard's letter widths, so a
-    // text wrapped to fit a cell by them fits it printed
-    let len = |s: &str, h: crate::TextHeight| {
-        format!(
-            " textLength=\"{}\" lengthAdjust=\"spacingAndGlyphs\"",
-            num(s.chars().map(|c| h.advance(c)).sum::<f64>())
-        )
+    // The text is set to type B's width (GOST 2.304, table 2): a face wider
+    // than type B prints the standard's letter widths, so a text wrapped to
+    // fit a cell by them fits it printed. Every run (of one font, or an
+    // index) is narrowed by the same factor, its share of that width in
+    // proportion to its width in the face that prints it
+    // ([`crate::face`]); usvg scales each run about the text's anchor, so
+    // runs narrowed by different factors would open gaps between them.
+    let face = |s: &str, h: crate::TextHeight| -> f64 {
+        s.chars()
+            .map(|c| crate::face::advance_em(c).map_or(h.advance(c), |em| em * h.mm() / CAP_EM))
+            .sum()
     };
+    let type_b = |s: &str, h: crate::TextHeight| -> f64 { s.chars().map(|c| h.advance(c)).sum() };
+    let (mut wb, mut wf) = (0.0, 0.0);
+    for sp in &r.spans {
+        for (s, h) in [(Some(sp.base.as_str()), h), (sp.sup.as_deref(), ih), (sp.sub.as_deref(), ih)] {
+            if let Some(s) = s {
+                wb += type_b(s, h);
+                wf += face(s, h);
+            }
+        }
+    }
+    let k = if wf > 0.0 { wb / wf } else { 1.0 };
+    let len = |s: &str, h: crate::TextHeight| format!(" textLength=\"{}\" lengthAdjust=\"spacingAndGlyphs\"", num(k * face(s, h)));
     // each run of one font is its own tspan with its own length: a
     // textLength applies to the characters of its own element only
     let runs = |o: &mut String, s: &str, h: crate::TextHeight, pre: &str, first: &str, post: &str| {
@@ -349,7 +374,7 @@ pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
         }
         if let Some(sub) = &sp.sub {
             let back = match &sp.sup {
-                Some(sup) => format!(" dx=\"{}\"", num(-sup.chars().map(|c| ih.advance(c)).sum::<f64>())),
+                Some(sup) => format!(" dx=\"{}\"", num(-k * face(sup, ih))),
                 None => String::new(),
             };
             let post = format!(" baseline-shift=\"{}\"", num(-h.mm() / 3.0));
