@@ -518,19 +518,63 @@ impl Canvas {
         text_box(at, size_mm, Anchor::Middle, n)
     }
 
-    /// [`Canvas::label`], the places tried first in the direction
-    /// `toward` (radians from the x axis, y up): a position number out
-    /// along its crank, away from the lines that meet at the pivot. The
-    /// nearest place clear of every line and text in the directions
-    /// nearest `toward` is taken, then the least crowded.
+    /// [`Canvas::label`] for a position number at its crank pin, out
+    /// along the crank (`toward`, radians from the x axis, y up), away from
+    /// the lines that meet at the pivot:
+    /// 1. the nearest place clear of every line and text within 67.5° of
+    ///    `toward`, up to 5 mm from the pin;
+    /// 2. else (a number among the rods that leave the crank circle) a
+    ///    clear place farther out (8 … 30 mm) within 45° of `toward`, on a
+    ///    thin leader line to the pin that crosses no other text;
+    /// 3. else the nearest clear place round the pin, up to 8 mm;
+    /// 4. else a clear place farther out in any direction, on a leader;
+    /// 5. else the least crowded of the near places.
     pub fn label_toward(&mut self, at: (f64, f64), toward: f64, text: &str, size_mm: f64, color: &str) -> Rect {
+        const NEAR: [f64; 7] = [0.5, 1.0, 1.6, 2.3, 3.0, 4.0, 5.0];
         let p = self.to_paper(at.0, at.1);
         let n = shown_len(text);
-        let at = self
-            .best_spot_from(p, n, size_mm, &[0.8, 2.0, 3.5, 5.5, 8.0], false, Some(toward))
-            .map_or(p, |b| b.at);
-        self.rich_paper(at, text, size_mm, Anchor::Middle, color);
-        text_box(at, size_mm, Anchor::Middle, n)
+        // the number and, kept free of the labels placed later, a margin
+        // of NUMBER_GAP round it (so that two numbers stand apart)
+        let put = |c: &mut Self, at: (f64, f64)| {
+            c.rich_paper(at, text, size_mm, Anchor::Middle, color);
+            let r = text_box(at, size_mm, Anchor::Middle, n);
+            c.reserve(Rect {
+                x0: r.x0 - NUMBER_GAP,
+                y0: r.y0 - NUMBER_GAP,
+                x1: r.x1 + NUMBER_GAP,
+                y1: r.y1 + NUMBER_GAP,
+            });
+            r
+        };
+        let out = self.best_spot_from(p, n, size_mm, &NEAR, false, Some((toward, 7)));
+        if let Some(o) = out.filter(|o| o.hits == 0) {
+            return put(self, o.at);
+        }
+        let far = self.best_spot_from(p, n, size_mm, &[8.0, 11.0, 14.0, 18.0, 23.0, 30.0], true, Some((toward, 5)));
+        if let Some(f) = far.filter(|f| f.hits == 0) {
+            let (from, to) = leader(p, &text_box(f.at, size_mm, Anchor::Middle, n));
+            self.line_paper(from, to, Style::THIN);
+            return put(self, f.at);
+        }
+        let round = self.best_spot_from(
+            p,
+            n,
+            size_mm,
+            &[0.5, 1.0, 1.6, 2.3, 3.0, 4.0, 5.0, 6.5, 8.0],
+            false,
+            Some((toward, 16)),
+        );
+        if let Some(r) = round.filter(|r| r.hits == 0) {
+            return put(self, r.at);
+        }
+        let far = self.best_spot_from(p, n, size_mm, &[11.0, 14.0, 18.0, 23.0, 30.0], true, Some((toward, 16)));
+        if let Some(f) = far.filter(|f| f.hits == 0) {
+            let (from, to) = leader(p, &text_box(f.at, size_mm, Anchor::Middle, n));
+            self.line_paper(from, to, Style::THIN);
+            return put(self, f.at);
+        }
+        let at = [round, out].into_iter().flatten().min_by_key(|b| b.hits).map_or(p, |b| b.at);
+        put(self, at)
     }
 
     /// The best place for a label of `n` characters around the paper point
@@ -542,23 +586,29 @@ impl Canvas {
         self.best_spot_from(p, n, size_mm, dists, lead, None)
     }
 
-    /// [`Canvas::best_spot`]; with `toward`, the sixteen directions are
-    /// tried nearest that angle first, and a clear place in a direction
-    /// within 22.5° of it is preferred to a nearer one farther round.
-    fn best_spot_from(&self, p: (f64, f64), n: usize, size_mm: f64, dists: &[f64], lead: bool, toward: Option<f64>) -> Option<Spot> {
+    /// [`Canvas::best_spot`]; with `toward` (an angle and a count k of
+    /// directions), only the k of the sixteen directions nearest that
+    /// angle are tried (0, +22.5°, −22.5°, +45° …), nearest first.
+    fn best_spot_from(
+        &self,
+        p: (f64, f64),
+        n: usize,
+        size_mm: f64,
+        dists: &[f64],
+        lead: bool,
+        toward: Option<(f64, usize)>,
+    ) -> Option<Spot> {
         let w = text_width(size_mm, n);
         let e = crate::picture::em(size_mm);
         let (up, down) = (TEXT_ASCENT * e, TEXT_DESCENT * e);
         let h = up + down;
         let mut best: Option<Spot> = None;
         let step = std::f64::consts::TAU / 16.0;
-        // with a preferred direction: the three directions nearest it at
-        // every distance first, then all sixteen
-        let rounds: &[(usize, usize)] = if toward.is_some() { &[(0, 3), (3, 16)] } else { &[(0, 16)] };
-        for &(k_from, k_to) in rounds {
+        let k_to = toward.map_or(16, |t| t.1.min(16));
+        {
             for &d in dists {
-                for k in k_from..k_to {
-                    let th = match toward {
+                for k in 0..k_to {
+                    let th = match toward.map(|t| t.0) {
                         // 0, +1, −1, +2, −2 … steps from `toward`
                         Some(a) => a + step * (if k % 2 == 1 { k.div_ceil(2) as f64 } else { -((k / 2) as f64) }),
                         None => std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4,
@@ -586,9 +636,9 @@ impl Canvas {
                         + self.segs.count((rl.x0, rl.y0, rl.x1, rl.y1), |s| rl.cuts(s.0, s.1))
                         + if inside { 0 } else { 1000 };
                     if lead {
-                        let from = (p.0 + c * (d - 0.3), p.1 - s * (d - 0.3));
+                        let (from, to) = leader(p, &r);
                         let at_p = |b: &&Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
-                        hits += self.boxes.iter().filter(|b| !at_p(b) && b.cuts(from, p)).count();
+                        hits += self.boxes.iter().filter(|b| !at_p(b) && b.cuts(from, to)).count();
                     }
                     let cost = d + 0.01 * k as f64;
                     if best.is_none_or(|b| (hits, cost) < (b.hits, b.cost)) {
@@ -613,6 +663,32 @@ impl Canvas {
     pub fn finish(&self) -> Picture {
         Picture::new(self.width, self.height, self.root.clone(), self.els.clone())
     }
+}
+
+/// The least gap between a position number and a label placed after it,
+/// mm (GOST 2.304's smallest letter height less half: numbers at 2.5 mm
+/// stand at least a letter's width apart).
+pub const NUMBER_GAP: f64 = 1.0;
+
+/// The leader line from a label's box `r` to the paper point `p`: along
+/// the line from the point to the box's centre, from 0.3 mm off the box
+/// (where that line enters the box grown by 0.3 mm) to 0.8 mm off the
+/// point (outside a joint's circle).
+fn leader(p: (f64, f64), r: &Rect) -> ((f64, f64), (f64, f64)) {
+    let centre = (0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1));
+    let (dx, dy) = (centre.0 - p.0, centre.1 - p.1);
+    let enter = |lo: f64, hi: f64, from: f64, d: f64| {
+        if d.abs() < 1e-12 {
+            f64::MIN
+        } else {
+            ((if d > 0.0 { lo } else { hi }) - from) / d
+        }
+    };
+    let t = enter(r.x0 - 0.3, r.x1 + 0.3, p.0, dx)
+        .max(enter(r.y0 - 0.3, r.y1 + 0.3, p.1, dy))
+        .clamp(0.0, 1.0);
+    let len = dx.hypot(dy).max(1e-9);
+    ((p.0 + t * dx, p.1 + t * dy), (p.0 + 0.8 * dx / len, p.1 + 0.8 * dy / len))
 }
 
 /// A place for a label found by `Canvas::best_spot`.

@@ -379,21 +379,10 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             );
         }
     }
-    let mut numbered: Vec<usize> = Vec::new();
-    for (li, p, q) in &segs {
-        if !numbered.contains(li) {
-            numbered.push(*li);
-            c.label(xy((*p + *q) * 0.5), &m.link_names[*li], H_TITLE, "#000");
-        }
-    }
-    for (li, at) in sliders {
-        if !numbered.contains(&li) {
-            numbered.push(li);
-            c.label(xy(at), &m.link_names[li], H_TITLE, "#000");
-        }
-    }
     // each position's number out along its crank, off the cranks that
-    // meet at the pivot and the other numbers
+    // meet at the pivot and the other numbers, placed before the links'
+    // numbers so that it keeps the place next to its pin (a number that
+    // finds none within 8 mm goes out on a leader line)
     let outward = |pin: Vec2| {
         let d = pin - m.crank.pivot;
         d.y.atan2(d.x)
@@ -406,6 +395,19 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         // the plans' position is not one of the table's: its angle beside its crank pin
         let pin = sol.points[m.crank.pin].p;
         c.label_toward(xy(pin), outward(pin), &bold_label(a, lang), H_SMALL, "#000");
+    }
+    let mut numbered: Vec<usize> = Vec::new();
+    for (li, p, q) in &segs {
+        if !numbered.contains(li) {
+            numbered.push(*li);
+            c.label(xy((*p + *q) * 0.5), &m.link_names[*li], H_TITLE, "#000");
+        }
+    }
+    for (li, at) in sliders {
+        if !numbered.contains(&li) {
+            numbered.push(li);
+            c.label(xy(at), &m.link_names[li], H_TITLE, "#000");
+        }
     }
     c.end_group();
     c.finish()

@@ -443,3 +443,79 @@ fn synthesis_constructions_keep_their_labels_off_the_lines() {
         }
     }
 }
+
+/// The position numbers of the scheme (the crank's 0 … 11 and the marked
+/// ones, 6′): the texts of digits (and a prime) at the size most of them
+/// share (the links' numbers are larger), with their boxes.
+fn position_numbers(svg: &str) -> Vec<(String, [f64; 4])> {
+    let is_number = |t: &str| {
+        let t = t.trim_end_matches(['\'', '′']);
+        !t.is_empty() && t.chars().all(|c| c.is_ascii_digit())
+    };
+    let sized: Vec<(String, [f64; 4], f64)> = texts(svg, false)
+        .into_iter()
+        .filter(|(t, _)| is_number(t))
+        .map(|(t, b)| {
+            let h = b[3] - b[1];
+            (t, b, h)
+        })
+        .collect();
+    let mut sizes: Vec<f64> = sized.iter().map(|s| (s.2 * 1000.0).round()).collect();
+    sizes.sort_by(f64::total_cmp);
+    let common = sizes
+        .iter()
+        .max_by_key(|s| sizes.iter().filter(|t| t == s).count())
+        .copied()
+        .unwrap_or(0.0);
+    sized
+        .into_iter()
+        .filter(|s| (s.2 * 1000.0).round() == common)
+        .map(|(t, b, _)| (t, b))
+        .collect()
+}
+
+/// On the scheme of the positions, as the note prints it (A4) and as the
+/// sheet does (A1): every position has its number, no two numbers' boxes
+/// come within 1 mm (`svg::NUMBER_GAP`) and no line of the scheme (a crank, a rod, a rocker, a frame
+/// mark) passes through a number.
+#[test]
+fn position_numbers_keep_apart_and_off_the_links() {
+    for (name, text) in tasks() {
+        for sheet in [SheetFormat::A4, SheetFormat::A1] {
+            let task = TaskSource::new(&name, &text).with_lang(Language::Ru).with_sheet(sheet);
+            let l = load(&task).unwrap().unwrap();
+            let a = analyse(&l, &task, None, l.task.positions).unwrap();
+            let docs = drawings(&l, &a, &task, true).unwrap();
+            let svg = docs.get("positions.svg").and_then(|d| d.as_text()).unwrap();
+            let nums = position_numbers(svg);
+            assert!(
+                nums.len() >= a.rows.len(),
+                "{name} {sheet:?}: {} numbers for {} positions",
+                nums.len(),
+                a.rows.len()
+            );
+            let segs = segments(svg);
+            let mut worst = f64::MAX;
+            for (i, (t, b)) in nums.iter().enumerate() {
+                for (t2, b2) in &nums[i + 1..] {
+                    assert!(!overlap(b, b2), "{name} {sheet:?}: the numbers {t} {b:?} and {t2} {b2:?} overlap");
+                }
+                for s in &segs {
+                    assert!(!crosses(s, b), "{name} {sheet:?}: the number {t} {b:?} lies on the line {s:?}");
+                }
+                for (_, b2) in nums.iter().filter(|(t2, _)| t2 != t) {
+                    let gap = (b2[0] - b[2]).max(b[0] - b2[2]).max((b2[1] - b[3]).max(b[1] - b2[3]));
+                    worst = worst.min(gap);
+                }
+            }
+            eprintln!(
+                "{name} {sheet:?}: {} position numbers, the nearest two {worst:.2} mm apart",
+                nums.len()
+            );
+            assert!(
+                worst >= tmm_report::svg::NUMBER_GAP - 1e-6,
+                "{name} {sheet:?}: two position numbers {worst:.2} mm apart"
+            );
+        }
+    }
+}
