@@ -143,7 +143,7 @@ fn shown(texts: &[String]) -> Vec<Shown> {
     // every value written after a symbol, plain or not (`s_a1 = 0,3m`)
     let mut written: Vec<(String, String)> = Vec::new();
     for t in texts {
-        let t = t.replace('\u{202f}', " ").replace('\u{a0}', " ");
+        let t = t.replace(['\u{202f}', '\u{a0}'], " ");
         for seg in t.split([';', '\n']).flat_map(|s| s.split(": ")).flat_map(|s| s.split(", ")) {
             let seg = seg.trim();
             let found = if seg.contains(" = ") {
