@@ -397,10 +397,21 @@ fn content_markup(s: &str) -> String {
         if math && check_math(&run).is_ok() {
             let _ = write!(out, "${run}$");
         } else {
-            let _ = write!(out, "#{}", string_literal(&run));
+            let _ = write!(out, "#{}", string_literal(&keep_equals(&run)));
         }
     }
     out
+}
+
+/// A text whose `=`, `≈` and `≤`, `≥` stay on the line of the symbol before
+/// them: the space before each made a no-break space, so a line never ends
+/// with a lone symbol (`K_v` | `= 1,106`); the line may still break after
+/// the sign (GOST 2.105, 4.2.15: a formula is broken after a sign).
+fn keep_equals(s: &str) -> String {
+    s.replace(" =", "\u{a0}=")
+        .replace(" ≈", "\u{a0}≈")
+        .replace(" ≤", "\u{a0}≤")
+        .replace(" ≥", "\u{a0}≥")
 }
 
 /// A text as a typst argument: a string literal, or a content block when
@@ -409,6 +420,16 @@ fn content_arg(s: &str) -> String {
     if crate::notation::has_math(s) {
         format!("[{}]", content_markup(s))
     } else {
-        string_literal(s)
+        string_literal(&keep_equals(s))
+    }
+}
+
+#[cfg(test)]
+mod keep_equals_tests {
+    #[test]
+    fn the_sign_stays_with_the_symbol_before_it() {
+        assert_eq!(super::keep_equals("W = 1, θ ≈ 9°"), "W\u{a0}= 1, θ\u{a0}≈ 9°");
+        assert_eq!(super::keep_equals(" = 1,106"), "\u{a0}= 1,106");
+        assert_eq!(super::keep_equals("a=b"), "a=b");
     }
 }

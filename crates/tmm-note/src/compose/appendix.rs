@@ -24,7 +24,14 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
             let mut header = vec![cx.w("col_position")?, if slider { "s".to_string() } else { cx.w("col_phi")? }];
             let mut units = vec![String::new(), cx.w(if slider { "u_mm" } else { "u_deg" })?];
             for n in &names {
-                header.push(format!("{}{n}", if key == "omega" { "ω" } else { "ε" }));
+                // ω₁, ε₁ as the course writes them; a link's name other than
+                // letters and digits stays literal after the letter
+                let g = if key == "omega" { "ω" } else { "ε" };
+                header.push(if !n.is_empty() && n.chars().all(|c| c.is_ascii_alphanumeric()) {
+                    crate::notation::notation(&format!("{g}_{n}"))
+                } else {
+                    format!("{g}{n}")
+                });
                 units.push(cx.w(unit)?);
             }
             let mut rows = Vec::new();

@@ -65,7 +65,7 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         b.push(cx.quantities(
             "assign_dynamics",
             vec![
-                (cx.w("q_delta")?, cx.qv("/dynamics/delta_requested", 1.0, "")?),
+                (cx.w("q_delta")?, cx.given("/dynamics/delta_requested", 1.0, "")?),
                 (cx.w("q_omega_m")?, cx.qv("/dynamics/omega_nominal", 1.0, "u_rad_s")?),
             ],
         )?);

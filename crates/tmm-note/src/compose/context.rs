@@ -74,6 +74,20 @@ impl Ctx<'_> {
         format_quantity(value, DIGITS, &u, self.lang)
     }
 
+    /// A given value at `ptr`, scaled by `scale`, as the task gives it: its
+    /// printed digits without the trailing zeros (δ = 0,02, not 0,02000), a
+    /// unit after it.
+    pub fn given(&self, ptr: &str, scale: f64, unit: &str) -> Result<String, NoteError> {
+        let f = crate::number::format_number(self.v(ptr)? * scale, DIGITS, self.lang)?;
+        if f.exponent.is_some() || !f.mantissa.contains([',', '.']) {
+            return self.qv(ptr, scale, unit);
+        }
+        let mut s = f.mantissa.trim_end_matches('0').trim_end_matches([',', '.']).to_string();
+        let u = if unit.is_empty() { String::new() } else { self.w(unit)? };
+        crate::number::push_unit(&mut s, &u);
+        Ok(s)
+    }
+
     /// The number at `ptr` with a unit, scaled by `scale` (1000 for mm).
     pub fn qv(&self, ptr: &str, scale: f64, unit: &str) -> Result<String, NoteError> {
         self.q(self.v(ptr)? * scale, unit)

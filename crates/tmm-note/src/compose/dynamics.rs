@@ -22,7 +22,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para(
             "dy_given",
             &[
-                cx.qv("/dynamics/delta_requested", 1.0, "")?,
+                cx.given("/dynamics/delta_requested", 1.0, "")?,
                 cx.qv("/dynamics/omega_nominal", 1.0, "u_rad_s")?,
             ],
         )?,
@@ -51,7 +51,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     let formulas = vec![
         cx.para("dy_f_inertia", &[])?,
-        formula("I_(I I)(phi) = sum_(i != 1) [m_i (v_(S i) / omega_1)^2 + J_(S i) (omega_i / omega_1)^2]"),
+        formula("I_\"II\"(phi) = sum_(i != 1) [m_i (v_(S i) / omega_1)^2 + J_(S i) (omega_i / omega_1)^2]"),
         cx.para("where_reduced_inertia", &[])?,
         cx.para("dy_f_moment", &[])?,
         formula("M_c (phi) = sum_i (arrow(F)_i dot arrow(v)_i + M_i omega_i) / omega_1, quad A_c (phi) = integral_0^phi M_c dif phi"),
@@ -134,7 +134,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?,
             cx.qv("/dynamics/flywheel_inertia", 1.0, "u_kgm2")?,
             cx.qv("/dynamics/delta", 1.0, "")?,
-            cx.qv("/dynamics/delta_requested", 1.0, "")?,
+            cx.given("/dynamics/delta_requested", 1.0, "")?,
         ],
     )?];
     if cx.opt("/dynamics/flywheel/diameter").is_some() {

@@ -8,7 +8,7 @@ use super::context::{Ctx, formula, four_parts, num, text};
 use super::linkage::{crank, math_name};
 use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
-use crate::model::{Block, Section};
+use crate::model::{Block, Cell, Section};
 
 /// The section, if the report has `forces`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
@@ -26,7 +26,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     ];
     let formulas = vec![
         cx.para("fo_f_inertia", &[])?,
-        formula("arrow(F)_u = -m arrow(a)_S, quad M_u = -J_S epsilon"),
+        formula(&format!(
+            "arrow(F)_{0} = -m arrow(a)_S, quad M_{0} = -J_S epsilon",
+            cx.sym("sym_inertia_sub")?
+        )),
         cx.para("where_inertia", &[])?,
         cx.para("fo_f_group", &[])?,
         formula("sum arrow(F) = 0, quad sum M_C = 0"),
@@ -64,6 +67,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         rows,
     )?);
     let mut rows = Vec::new();
+    let (mut force_case, mut force_row) = (None, None);
     if let Some(rs) = fo.pointer("/detail/reactions").and_then(Value::as_array) {
         for r in rs {
             let g = |k: &str| r.get(k).and_then(Value::as_f64).unwrap_or(0.0);
@@ -79,8 +83,28 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 num(g("normal")),
                 num(g("tangential")),
             ]);
+            // the frame's reaction on the crank when the balancing force
+            // holds it (the input link's force plan draws that case): a row
+            // of its own under the torque case's
+            if r.get("from").and_then(Value::as_str) == Some("frame")
+                && crank(cx).is_some_and(|(axis, _, _)| axis == pair)
+                && let Some(v) = fo.pointer("/detail/frame_reaction_with_balancing_force").and_then(Value::as_array)
+            {
+                let c = |i: usize| v.get(i).and_then(Value::as_f64).unwrap_or(0.0);
+                if c(0).hypot(c(1)) > 0.0 {
+                    force_case = Some(pair.to_string());
+                    force_row = Some(vec![
+                        text(format!("{pair} ({})", cx.w("with_pb")?)),
+                        text(format!("{}→{}", name("from")?, name("on")?)),
+                        num(c(0).hypot(c(1))),
+                        Cell::Empty,
+                        Cell::Empty,
+                    ]);
+                }
+            }
         }
     }
+    rows.extend(force_row);
     results.push(cx.table(
         "tab_reactions",
         &[
@@ -92,6 +116,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         ],
         rows,
     )?);
+    if let Some(pair) = force_case {
+        results.push(cx.para("fo_reaction_cases", &[pair])?);
+    }
     let mb = cx.v("/forces/detail/balancing_moment")?;
     let mzh = cx.v("/forces/detail/zhukovsky_moment")?;
     results.push(cx.quantities(

@@ -14,12 +14,12 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let rows = vec![
         (cx.w("q_z1")?, format!("{}", cx.v("/gear/z1")?)),
         (cx.w("q_z2")?, format!("{}", cx.v("/gear/z2")?)),
-        (cx.w("q_module")?, cx.qv("/gear/m", 1000.0, "u_mm")?),
-        (cx.w("q_x1")?, cx.qv("/gear/x1", 1.0, "")?),
-        (cx.w("q_x2")?, cx.qv("/gear/x2", 1.0, "")?),
+        (cx.w("q_module")?, cx.given("/gear/m", 1000.0, "u_mm")?),
+        (cx.w("q_x1")?, cx.given("/gear/x1", 1.0, "")?),
+        (cx.w("q_x2")?, cx.given("/gear/x2", 1.0, "")?),
         (cx.w("q_alpha")?, cx.deg("/gear/rack/alpha")?),
-        (cx.w("q_ha")?, cx.qv("/gear/rack/ha", 1.0, "")?),
-        (cx.w("q_c")?, cx.qv("/gear/rack/c", 1.0, "")?),
+        (cx.w("q_ha")?, cx.given("/gear/rack/ha", 1.0, "")?),
+        (cx.w("q_c")?, cx.given("/gear/rack/c", 1.0, "")?),
     ];
     Ok(rows)
 }
@@ -33,9 +33,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             &[
                 format!("{}", cx.v("/gear/z1")?),
                 format!("{}", cx.v("/gear/z2")?),
-                cx.qv("/gear/m", 1000.0, "u_mm")?,
-                cx.qv("/gear/x1", 1.0, "")?,
-                cx.qv("/gear/x2", 1.0, "")?,
+                cx.given("/gear/m", 1000.0, "u_mm")?,
+                cx.given("/gear/x1", 1.0, "")?,
+                cx.given("/gear/x2", 1.0, "")?,
             ],
         )?,
         cx.para("ge_method", &[])?,

@@ -50,7 +50,18 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         .and_then(Value::as_array)
         .map(|a| a.iter().filter_map(Value::as_str).map(str::to_string).collect())
         .unwrap_or_default();
-    let mut q: Vec<(String, String)> = order.iter().zip(&z).map(|(n, v)| (n.clone(), v.clone())).collect();
+    // the teeth's names as the course writes them, z₁, z₂′ (the report's
+    // `z1`, `z2'`: a letter, the wheel's digits, primes)
+    let z_name = |n: &str| -> String {
+        let mut ch = n.chars();
+        match (ch.next(), ch.next()) {
+            (Some(l), Some(d)) if l.is_ascii_alphabetic() && d.is_ascii_digit() && n.is_ascii() => {
+                crate::notation::notation(&format!("{l}_{}", &n[1..]))
+            }
+            _ => n.to_string(),
+        }
+    };
+    let mut q: Vec<(String, String)> = order.iter().zip(&z).map(|(n, v)| (z_name(n), v.clone())).collect();
     q.push((cx.w("q_ratio_reached")?, cx.qv("/planetary/best/ratio", 1.0, "")?));
     if let Some(c) = cx.opt("/planetary/best/centre_distance") {
         q.push((cx.w("q_aw")?, cx.q(c * 1000.0, "u_mm")?));

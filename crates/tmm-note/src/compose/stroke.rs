@@ -52,7 +52,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         ),
         cx.para("st_f_motion", &[])?,
         formula(
-            "(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = (M_\"прДВ\"(omega) + M_c (phi) - 1/2 I'_(I I)(phi) omega^2) / (I_I + I_(I I)(phi))",
+            "(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = (M_\"прДВ\"(omega) + M_c (phi) - 1/2 I'_\"II\"(phi) omega^2) / (I_I + I_\"II\"(phi))",
         ),
     ];
     if tau > 0.0 {

@@ -6,6 +6,8 @@ mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;
+mod figure_fit;
+mod figure_numbers;
 mod figures_pdf;
 mod fonts_pdf;
 mod formulas;

@@ -2,8 +2,12 @@
 //! project's note (and of the engine and six-bar examples), in ru, uk and
 //! en, no raw `K_v`, `M_ур`, `R^τ`, `h_a*`-style token is left — every
 //! subscript and superscript of the note's words, tables, headers and
-//! captions went through math. The drawings are blanked first: their
-//! lettering is the drawings' own (tmm-report), not the note's text.
+//! captions went through math; nor a Greek letter written flat with its
+//! index (`εα`, `ωmax`, `φ20`, `ΔTmax`: typst's math sets the letter in
+//! math italic, U+1D6FC …, so a plain Greek letter followed at once by a
+//! plain letter or digit was never typeset as a symbol). The drawings are
+//! blanked first: their lettering is the drawings' own (tmm-report), not
+//! the note's text.
 
 use tmm_note::{Block, Note, Section, compose, typeset_with_warnings};
 use tmm_report::TaskSource;
@@ -41,6 +45,38 @@ fn raw_tokens(text: &str) -> Vec<String> {
     out
 }
 
+/// A character of typst's math alphabets (math italic 𝑇, 𝜔 …): the PDF's
+/// text gives a letter set as a math symbol in this block.
+fn math_letter(c: char) -> bool {
+    ('\u{1D400}'..='\u{1D7FF}').contains(&c)
+}
+
+/// A plain letter or digit (not one of math's alphabets, not a
+/// superscript such as the ² of dφ²).
+fn plain_alnum(c: char) -> bool {
+    (c.is_alphabetic() || c.is_ascii_digit()) && !math_letter(c)
+}
+
+/// Greek letters written flat with an index: a plain lower-case Greek
+/// letter right after a non-letter and right before a plain letter or digit
+/// (`εα`, `ωmax`, `φ20`), or `Δ` before two plain letters or digits
+/// (`ΔTmax`, `ΔTI`).
+fn flat_greek(text: &str) -> Vec<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    for i in 0..chars.len().saturating_sub(1) {
+        let c = chars[i];
+        let after_gap = i == 0 || !chars[i - 1].is_alphanumeric();
+        let flat = after_gap
+            && (('α'..='ω').contains(&c) && plain_alnum(chars[i + 1])
+                || c == 'Δ' && plain_alnum(chars[i + 1]) && chars.get(i + 2).is_some_and(|d| plain_alnum(*d)));
+        if flat {
+            out.push(chars[i.saturating_sub(6)..(i + 7).min(chars.len())].iter().collect());
+        }
+    }
+    out
+}
+
 fn pdf_text_of(name: &str, text: &str, lang: Language) -> String {
     let task = TaskSource::new(name, text);
     let run = run_task_in(&task, Some(lang)).unwrap();
@@ -56,6 +92,8 @@ fn the_raw_token_finder_finds_what_it_must() {
     assert_eq!(raw_tokens("a K_v b").len(), 1);
     assert_eq!(raw_tokens("R^τ, Н").len(), 1);
     assert!(raw_tokens("K𝑣 = 1,107; 10^ _x").is_empty());
+    assert_eq!(flat_greek("εα = 1,205; ωmax, φ20 и ΔTmax").len(), 4);
+    assert!(flat_greek("𝜀𝛼 = 1,205; 𝜔max, Δ𝑇max, угол φ, ψ = 38°, (φ, ψ), Δy, d²s/dφ²").is_empty());
 }
 
 #[test]
@@ -64,6 +102,8 @@ fn no_raw_notation_in_the_default_note() {
         let text = pdf_text_of("default.toml", DEFAULT_TASK, lang);
         let raw = raw_tokens(&text);
         assert!(raw.is_empty(), "{lang:?}: {} raw tokens: {raw:#?}", raw.len());
+        let flat = flat_greek(&text);
+        assert!(flat.is_empty(), "{lang:?}: {} flat Greek symbols: {flat:#?}", flat.len());
     }
 }
 
@@ -75,5 +115,7 @@ fn no_raw_notation_in_the_engine_and_six_bar_notes() {
         let text = pdf_text_of(file, &task, Language::Ru);
         let raw = raw_tokens(&text);
         assert!(raw.is_empty(), "{file}: {} raw tokens: {raw:#?}", raw.len());
+        let flat = flat_greek(&text);
+        assert!(flat.is_empty(), "{file}: {} flat Greek symbols: {flat:#?}", flat.len());
     }
 }

@@ -22,7 +22,7 @@ const H_TITLE: f64 = 5.0;
 const H_LABEL: f64 = 3.5;
 
 /// A force's label in the course's notation: `R12` → `R_{12}`, the frame
-/// as link 0 (`Rframe1` → `R_{01}`), `Pb` → `P_b`, the inertia force `Fu2`
+/// as link 0 (`Rframe1` → `R_{01}`), `Pb` → `P_{ур}` (ru), the inertia force `Fu2`
 /// → `F_{и2}` (ru), `M2'` → `M_{2'}`; sums of forces part by part.
 ///
 /// ```ignore
@@ -36,7 +36,12 @@ fn force_label(label: &str, lang: Language) -> String {
             let Some(head) = ch.next() else { return String::new() };
             let rest: String = ch.collect();
             let (low, tail) = rest.split_at(rest.find(|c: char| !c.is_ascii_lowercase()).unwrap_or(rest.len()));
-            let low = if low == "u" { word(lang, "forces.inertia") } else { low };
+            let low = match low {
+                "u" => word(lang, "forces.inertia"),
+                // the balancing force: P_ур, P_зр, P_b (the note's notation)
+                "b" => word(lang, "forces.balancing_sub"),
+                _ => low,
+            };
             let sub = format!("{low}{tail}");
             if sub.is_empty() {
                 head.to_string()
@@ -288,6 +293,8 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
 /// the lines and of each other.
 fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let lang = task.lang;
+    // the note's symbols: M_ур, P_ур, M_Ж (ru)
+    let (b, zh) = (word(lang, "forces.balancing_sub"), word(lang, "forces.lever_sub"));
     let m = &l.mech;
     let r = &a.detail;
     let imgs: Vec<Vec2> = r.sol.points.iter().map(|p| tmm_geom::perp(p.v)).collect();
@@ -329,7 +336,7 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     c.rich_paper(
         (w / 2.0, 15.0),
         &format!(
-            "μ_v = {} {};  M_b = P_b·l_1 = {} {}",
+            "μ_v = {} {};  M_{{{zh}}} = P_{{{b}}}·l_1 = {} {}",
             mu_text(mu_v, lang),
             word(lang, "forces.mu_v_unit"),
             num(r.fs.zhukovsky_moment, 3, lang),
@@ -342,7 +349,7 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     c.rich_paper(
         (w / 2.0, 21.0),
         &format!(
-            "P_b = {} {};  {}: M_b = {} {}",
+            "P_{{{b}}} = {} {};  {}: M_{{{b}}} = {} {}",
             num(r.fs.zhukovsky_moment / m.crank.radius, 3, lang),
             word(lang, "forces.unit_n"),
             word(lang, "forces.kinetostatics"),
@@ -440,9 +447,10 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
         )?;
     }
     let title = format!(
-        "{} {}, P_b = {} {}",
+        "{} {}, P_{{{}}} = {} {}",
         word(lang, "forces.input_link"),
         m.link_names[m.crank.link],
+        word(lang, "forces.balancing_sub"),
         num(a.detail.fs.balancing_force, 1, lang),
         word(lang, "forces.unit_n")
     );

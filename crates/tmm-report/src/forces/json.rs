@@ -4,7 +4,9 @@
 //! exerted by link `from` on link `on`), `balancing_moment` (the torque the
 //! drive applies to the input link, counter-clockwise positive),
 //! `balancing_force` (at the crank pin, perpendicular to the crank, positive
-//! along k × crank), `zhukovsky_moment`.
+//! along k × crank), `frame_reaction_with_balancing_force` (the frame's
+//! reaction on the crank when that force holds it instead of the torque),
+//! `zhukovsky_moment`.
 
 use serde_json::{Map, Value, json};
 
@@ -65,6 +67,9 @@ fn position(l: &Loaded, r: &Row) -> Value {
         "balancing_moment": num(f.balancing_moment),
         "balancing_force": num(f.balancing_force),
         "balancing_force_vector": [num(f.balancing_force_vec.x), num(f.balancing_force_vec.y)],
+        // the frame's reaction on the crank when the balancing force, not
+        // the torque, holds the crank (the input link's force plan)
+        "frame_reaction_with_balancing_force": [num(f.pivot_reaction_with_force.x), num(f.pivot_reaction_with_force.y)],
         "zhukovsky_moment": num(f.zhukovsky_moment),
         "relative_difference": num(f.relative_difference()),
     });

@@ -307,12 +307,17 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let (wy0, wy1) = ((2.0 - lay.origin.1) / s, (ph - TITLE_H - lay.origin.1) / s);
     let in_win = |q: &Pt| q.0 >= wx0 && q.0 <= wx1 && q.1 >= wy0 && q.1 <= wy1;
     let paper = |q: Pt| c_to_paper(&lay, q, ph);
-    lab.put(
-        (0.5 * (lay.table_x - 2.0), 7.0),
-        &format!("{} {}", word(lang, "gear.mesh_title"), lay.scale.text),
-        H_HEAD,
-        "#000",
-    );
+    // the title over the drawing; one wider than the drawing's part (the
+    // note's A4 page) over the whole paper, the table moved under it
+    let title = format!("{} {}", word(lang, "gear.mesh_title"), lay.scale.text);
+    let title_w = CHAR_WIDTH * H_HEAD * plain(&title).chars().count() as f64;
+    let title_wide = title_w > lay.table_x - 6.0;
+    let title_x = if title_wide {
+        (0.5 * pw).min(pw - 1.0 - 0.5 * title_w).max(1.0 + 0.5 * title_w)
+    } else {
+        0.5 * (lay.table_x - 2.0)
+    };
+    lab.put((title_x, 7.0), &title, H_HEAD, "#000");
     let k_line = Style::THICK.widened(0.6);
     c.begin_group("teeth");
     for (t, rot, cen) in [(t1, sc.rot1, sc.o1), (t2, sc.rot2, sc.o2)] {
@@ -502,7 +507,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     }
     let mut side = Placer::new(pw, ph);
     let left = |p: &mut Placer, y: f64, text: &str, h: f64| p.put_left((tx, y), text, h, "#000");
-    let mut y = 8.0;
+    let mut y = if title_wide { 15.0 } else { 8.0 };
     left(&mut side, y, word(lang, "gear.parameters"), H_LABEL);
     y += 2.0;
     for row in table_rows(pair, lang) {

@@ -204,13 +204,17 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let k = sv_paper / sr;
     c.set_transform(sr, (px0, axis_y));
     c.begin_group("velocity-picture");
-    lab.put_left((scheme_right + 15.0, 22.0), word(lang, "planetary.picture"), H_LABEL, "#000");
+    // the picture's heading and μ_v, moved left where they would leave the paper
+    let fits_at =
+        |x: f64, text: &str| x.min(W - 1.0 - crate::labels::CHAR_WIDTH * crate::picture::em(H_LABEL) * text.chars().count() as f64);
+    let mu_line = format!("μ_v = {} {}", mu_text(lang, mu_v), word(lang, "planetary.mu_v_unit"));
     lab.put_left(
-        (scheme_right + 15.0, 28.0),
-        &format!("μ_v = {} {}", mu_text(lang, mu_v), word(lang, "planetary.mu_v_unit")),
+        (fits_at(scheme_right + 15.0, word(lang, "planetary.picture")), 22.0),
+        word(lang, "planetary.picture"),
         H_LABEL,
         "#000",
     );
+    lab.put_left((fits_at(scheme_right + 15.0, &mu_line), 28.0), &mu_line, H_LABEL, "#000");
     c.line((0.0, 0.0), (0.0, 1.08 * rmax), Style::THIN);
     c.line((vlo * k, 0.0), (vhi * k, 0.0), Style::THIN);
     c.text((vhi * k, -0.04 * big), "v", 3.0, Anchor::End);
@@ -266,16 +270,31 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let ratio_picture = tan1 / tanh;
 
     // --- the angular-velocity diagram: rays from a pole parallel to the picture's lines ---
-    let dx0 = px0 + vhi * sv_paper + 42.0; // paper x of the diagram's vertical through the pole
+    // paper x of the diagram's vertical through the pole: right of the
+    // picture; on a paper too narrow for that (the note's A4 page) under the
+    // picture's radius axis, right of the scheme, where the picture (r ≥ 0)
+    // leaves the paper free
+    let beside = px0 + vhi * sv_paper + 42.0;
+    let under = beside + 40.0 > W - 1.0;
+    let dx0 = if under { (px0 + 40.0).min(W - 41.0) } else { beside };
     let maxtan = [tan1, tanh, tan2].iter().fold(1e-300_f64, |m, v| m.max(v.abs()));
-    let hh = (33.0 / maxtan).min(60.0); // pole distance, mm
-    let pl_y = 130.0; // paper y (from the top) of the pole
-    let ax_y = pl_y - hh; // … and of the ω-axis
+    let hh = (33.0 / maxtan).min(if under { 45.0 } else { 60.0 }); // pole distance, mm
+    // paper y (from the top) of the ω-axis and of the pole
+    let (ax_y, pl_y) = if under {
+        let ax = H - axis_y + 16.0;
+        (ax, ax + hh)
+    } else {
+        (130.0 - hh, 130.0)
+    };
     c.begin_group("angular-diagram");
     let head = word(lang, "planetary.diagram");
     let hw = crate::labels::CHAR_WIDTH * H_LABEL * head.chars().count() as f64;
     let hx = (dx0 - 34.0 + 0.5 * hw).min(W - 1.0 - 0.5 * hw);
-    let heads: Vec<(f64, f64)> = (0..8).map(|i| (hx, 22.0 + 6.0 * f64::from(i))).collect();
+    let heads: Vec<(f64, f64)> = if under {
+        (0..3).map(|i| (hx, pl_y + 9.0 + 6.0 * f64::from(i))).collect()
+    } else {
+        (0..8).map(|i| (hx, 22.0 + 6.0 * f64::from(i))).collect()
+    };
     lab.place(&heads, head, H_LABEL, "#000");
     c.line_paper((dx0 - 36.0, ax_y), (dx0 + 36.0, ax_y), Style::THIN);
     c.line_paper((dx0, ax_y), (dx0, pl_y), Style::DASHED);
@@ -320,8 +339,14 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
             }
         ),
     ];
-    for (i, l) in lines.iter().enumerate() {
-        lab.put_left((10.0, H - 30.0 + 6.0 * i as f64), l, H_LABEL, "#000");
+    // each line wrapped to the paper's width, the last 6 mm above its foot
+    let wrapped: Vec<String> = lines
+        .iter()
+        .flat_map(|l| crate::labels::wrap_text(l, H_LABEL, 0.96 * (W - 10.0 - 0.6)))
+        .collect();
+    let n = wrapped.len().max(4);
+    for (i, l) in wrapped.iter().enumerate() {
+        lab.put_left((10.0, H - 6.0 * (n - i) as f64), l, H_LABEL, "#000");
     }
     Sheet {
         svg: finish(c.finish(), &lab, Some(scale.text)),
