@@ -55,3 +55,39 @@ fn without_pdfs(bencher: divan::Bencher, name: &str) {
     let t = task(name);
     bencher.bench(|| divan::black_box(run_task_in(divan::black_box(&t), None).map(|r| r.docs.iter().count()).ok()));
 }
+
+/// The stages of the default project's run with the note, each alone: the
+/// sections computed (`run`), the note's A4 drawings
+/// (`note_figures`), the note composed (with its drawings), the note
+/// laid out (typst's compilation without the PDF export), the note
+/// typeset, the sheets typeset.
+#[divan::bench(args = ["run", "note_figures", "compose", "layout_note", "typeset_note", "sheets"], sample_count = 5, sample_size = 1)]
+fn stages_of_default(bencher: divan::Bencher, stage: &str) {
+    let t = task("default");
+    let run = run_task_in(&t, None).expect("the task runs");
+    let note = tmm_note::compose(&run, &t).expect("the note composes");
+    bencher.bench(|| {
+        typst::comemo::evict(0);
+        match stage {
+            "run" => run_task_in(&t, None).map(|r| r.docs.iter().count()).unwrap_or(0),
+            "note_figures" => tmm_report::run::note_figures(&t, None).map(|d| d.iter().count()).unwrap_or(0),
+            "compose" => tmm_note::compose(&run, &t).map(|n| n.sections.len()).unwrap_or(0),
+            "layout_note" => {
+                let tr = tmm_note::Translation::load(note.lang).expect("the words load");
+                let g = tmm_note::markup::generate(&note, &tr).expect("the note generates");
+                let world = tmm_note::world::NoteWorld::new(g.main, g.figures).expect("the world");
+                typst::compile::<typst_layout::PagedDocument>(&world)
+                    .output
+                    .map(|d| d.pages().len())
+                    .unwrap_or(0)
+            }
+            "typeset_note" => tmm_note::typeset(&note).map(|p| p.len()).unwrap_or(0),
+            _ => run
+                .docs
+                .iter()
+                .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
+                .map(|d| tmm_note::sheet_pdf(d.as_text().unwrap_or("")).map(|p| p.len()).unwrap_or(0))
+                .sum(),
+        }
+    });
+}

@@ -53,36 +53,85 @@ pub fn profiles(pair: &Pair, o: &Origin<'_>) -> Result<(ToothProfile, ToothProfi
     Ok((t1, t2))
 }
 
+/// What the `[gear]` section computes from its job before it draws: the
+/// solved pair, both wheels' generated profiles and the blocking contour.
+struct Computed {
+    solved: solve::Solved,
+    t1: ToothProfile,
+    t2: ToothProfile,
+    contour: tmm_gears::contour::Contour,
+}
+
+/// The last job computed and its result. A run with the note asks for the
+/// section twice with the same job — for the sheets (A1/A2) and for the
+/// note's page (A4, [`crate::run::note_figures`]) — and only the drawings
+/// differ; the second call draws from the first one's numbers instead of
+/// computing the pair, its profiles and its blocking contour again. The key
+/// is the whole job (a `NaN` in it never matches, so it is computed anew).
+static LAST: std::sync::Mutex<Option<(input::Job, std::sync::Arc<Computed>)>> = std::sync::Mutex::new(None);
+
+/// The section's numbers for `job`: from [`LAST`] when it holds the same
+/// job, else computed (and kept there).
+fn computed(job: &input::Job, origin: &Origin<'_>) -> Result<std::sync::Arc<Computed>, Error> {
+    if let Ok(last) = LAST.lock()
+        && let Some((j, c)) = last.as_ref()
+        && j == job
+    {
+        return Ok(c.clone());
+    }
+    let solved = solve::solve(job, origin)?;
+    let (t1, t2) = profiles(&solved.pair, origin)?;
+    let contour = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| gear_error(origin, &e))?;
+    let c = std::sync::Arc::new(Computed { solved, t1, t2, contour });
+    if let Ok(mut last) = LAST.lock() {
+        *last = Some((*job, c.clone()));
+    }
+    Ok(c)
+}
+
 /// Run the `[gear]` section of a task: documents under `gear/`.
-/// Returns `None` when the task has no such section.
+/// Returns `None` when the task has no such section. For the note's page
+/// ([`SheetFormat::A4`](crate::project::SheetFormat::A4)) only the
+/// drawings (SVG) are made: the DXF and CSV files belong to the sheets' run.
 pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
     let Some((raw, origin)) = Raw::from_task(task)? else {
         return Ok(None);
     };
     let job = raw.job(&origin, true)?;
-    let solved = solve::solve(&job, &origin)?;
+    let computed = computed(&job, &origin)?;
+    let Computed {
+        solved,
+        t1,
+        t2,
+        contour: c,
+    } = &*computed;
     let pair = &solved.pair;
-    let (t1, t2) = profiles(pair, &origin)?;
+    let files = task.sheet != crate::project::SheetFormat::A4;
     let mut docs = Documents::for_task(task);
-    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, &t1, &t2, task.lang, task.sheet))?;
-    docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, &t1, &t2).to_bytes()?)?;
+    docs.add_text("gear/mesh.svg", mesh::mesh_svg(pair, t1, t2, task.lang, task.sheet))?;
+    if files {
+        docs.add_bytes("gear/mesh.dxf", mesh::mesh_dxf(pair, t1, t2).to_bytes()?)?;
+    }
     // wheel 1 is cut by the rack-type tool in either kind of pair
     docs.add_text(
         "gear/machine-mesh.svg",
-        machine_mesh::machine_mesh_svg(pair, &t1, task.lang, task.sheet),
+        machine_mesh::machine_mesh_svg(pair, t1, task.lang, task.sheet),
     )?;
     docs.add_text("gear/sliding.svg", sliding_svg(pair, task.lang, task.sheet))?;
-    docs.add_text("gear/profiles.csv", profile::profiles_csv(&t1, &t2))?;
-    docs.add_text("gear/profiles.svg", profile::profiles_svg(&t1, &t2, task.lang))?;
-    docs.add_bytes("gear/profiles.dxf", profile::profiles_dxf(&t1, &t2).to_bytes()?)?;
-    let c = blocking_contour(&job.spec, &ContourOptions::default()).map_err(|e| gear_error(&origin, &e))?;
+    if files {
+        docs.add_text("gear/profiles.csv", profile::profiles_csv(t1, t2))?;
+    }
+    docs.add_text("gear/profiles.svg", profile::profiles_svg(t1, t2, task.lang))?;
+    if files {
+        docs.add_bytes("gear/profiles.dxf", profile::profiles_dxf(t1, t2).to_bytes()?)?;
+    }
     let label = solved.criterion.map_or("given".to_string(), |c| c.name().to_string());
     docs.add_text(
         "gear/contour.svg",
-        contour_plot::contour_svg(&c, Some(((pair.w1.x, pair.w2.x), label)), task.lang, task.sheet),
+        contour_plot::contour_svg(c, Some(((pair.w1.x, pair.w2.x), label)), task.lang, task.sheet),
     )?;
-    let text = text::pair_text(&solved, &job.limits);
-    let json = json::pair_json(&solved, &job.limits, None);
+    let text = text::pair_text(solved, &job.limits);
+    let json = json::pair_json(solved, &job.limits, None);
     docs.add_json("gear/gear.json", &json)?;
     docs.add_text("gear/gear.txt", text.clone())?;
     let _ = Field::Section;
@@ -92,4 +141,54 @@ pub fn run_section(task: &TaskSource) -> Result<Option<SectionOutput>, Error> {
         json,
         docs,
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::TaskSource;
+    use crate::project::SheetFormat;
+
+    /// The gear section's files of `text` drawn for `sheet`.
+    fn files(text: &str, sheet: SheetFormat) -> Vec<(String, Vec<u8>)> {
+        let task = TaskSource::new("t.toml", text).with_sheet(sheet);
+        let out = super::run_section(&task).unwrap().unwrap();
+        out.docs.iter().map(|d| (d.path.clone(), d.bytes.clone())).collect()
+    }
+
+    /// The numbers kept from the last job change nothing: each sheet's files
+    /// are the same whether the section ran before with the same job, with
+    /// another job, or not at all — the reference is the section computed
+    /// right after another job has replaced the kept one.
+    #[test]
+    fn kept_numbers_draw_the_same_files() {
+        let a = "[gear]\nz1 = 15\nz2 = 20\nmodule = \"5 mm\"\nx1 = 0.2\nx2 = 0.85\n";
+        let b = "[gear]\nz1 = 13\nz2 = 31\nmodule = \"4 mm\"\nx1 = 0.3\nx2 = 0.1\n";
+        for sheet in [SheetFormat::A1, SheetFormat::A4] {
+            let _ = files(b, sheet);
+            let fresh = files(a, sheet);
+            // the same job again, drawn from the kept numbers (or, if another
+            // test replaced them meanwhile, computed again)
+            assert_eq!(files(a, sheet), fresh);
+            let _ = files(a, SheetFormat::A1);
+            assert_eq!(files(a, sheet), fresh);
+            assert_ne!(files(b, sheet), fresh);
+        }
+    }
+
+    /// The note's page gets the drawings only: no DXF or CSV.
+    #[test]
+    fn the_a4_run_makes_drawings_only() {
+        let a = "[gear]\nz1 = 15\nz2 = 20\nmodule = \"5 mm\"\nx1 = 0.2\nx2 = 0.85\n";
+        let a4 = files(a, SheetFormat::A4);
+        assert!(a4.iter().all(|(p, _)| !p.ends_with(".dxf") && !p.ends_with(".csv")));
+        let a1 = files(a, SheetFormat::A1);
+        assert!(a1.iter().any(|(p, _)| p == "gear/mesh.dxf") && a1.iter().any(|(p, _)| p == "gear/profiles.csv"));
+        let svgs = |v: &[(String, Vec<u8>)]| {
+            v.iter()
+                .filter(|(p, _)| p.ends_with(".svg"))
+                .map(|(p, _)| p.clone())
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(svgs(&a4), svgs(&a1));
+    }
 }
