@@ -86,21 +86,35 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if synthesised {
         formulas.push(cx.para("cy_f_synthesis", &[])?);
     }
+    // the symbols in the note's language (m_пр, m_зв, m_red …)
+    let (m, mds, fc, fs, rod) = (
+        cx.sym("sym_cy_mass")?,
+        cx.sym("sym_cy_mass_ds")?,
+        cx.sym("sym_cy_fc")?,
+        cx.sym("sym_cy_fsum")?,
+        cx.sym("sym_cy_rod")?,
+    );
     formulas.extend([
         cx.para("cy_f_positions", &[])?,
-        formula("X_D + (h_min + s + l_\"шт\") cos phi_3 = l_(A B) cos phi_1,"),
-        formula("Y_D + (h_min + s + l_\"шт\") sin phi_3 = l_(A B) sin phi_1"),
+        formula(&format!("X_D + (h_min + s + {rod}) cos phi_3 = l_(A B) cos phi_1,")),
+        formula(&format!("Y_D + (h_min + s + {rod}) sin phi_3 = l_(A B) sin phi_1")),
         cx.para("cy_f_analogues", &[])?,
         formula("omega_(q 1) = 1 / (l_(A B) cos theta), quad theta = phi_1 + pi/2 - phi_3,"),
-        formula("omega_(q 3) = (l_(A B) omega_(q 1) cos(phi_1 - phi_3)) / (h_min + s + l_\"шт\")"),
+        formula(&format!(
+            "omega_(q 3) = (l_(A B) omega_(q 1) cos(phi_1 - phi_3)) / (h_min + s + {rod})"
+        )),
         cx.para("cy_f_reduced", &[])?,
-        formula("m_\"пр\" = I_(1 S) omega_(q 1)^2 + (I_(2 S) + I_(3 S)) omega_(q 3)^2 + m_2 |V_(q S 2)|^2 + M |V_(q K)|^2,"),
-        formula("F_\"прC\" = G_2 V_(q S 2 y) + G V_(q K y)"),
+        formula(&format!(
+            "{m} = I_(1 S) omega_(q 1)^2 + (I_(2 S) + I_(3 S)) omega_(q 3)^2 + m_2 |V_(q S 2)|^2 + M |V_(q K)|^2,"
+        )),
+        formula(&format!("{fc} = G_2 V_(q S 2 y) + G V_(q K y)")),
         cx.para("cy_f_control", &[])?,
         formula("F_H s_c + (F_H + F_K)(s_max - s_c) / 2 = -A_C,"),
-        formula("A_C = integral_0^(s_max) F_\"прC\" dif s, quad F_K = |F_\"прC\"(s_max)|"),
+        formula(&format!("A_C = integral_0^(s_max) {fc} dif s, quad F_K = |{fc}(s_max)|")),
         cx.para("cy_f_motion", &[])?,
-        formula("V(s) = sqrt((2 A_Sigma (s)) / (m_\"пр\"(s))), quad a(s) = (F_\"прΣ\" - 1/2 m'_\"пр\" V^2) / m_\"пр\","),
+        formula(&format!(
+            "V(s) = sqrt((2 A_Sigma (s)) / ({m}(s))), quad a(s) = ({fs} - 1/2 {mds} V^2) / {m},"
+        )),
         formula("t(s) = integral_0^s (dif s) / V"),
         cx.para("cy_f_kinetostatics", &[])?,
         formula("epsilon_k = epsilon_(q k) V^2 + omega_(q k) a, quad a_P = a_(q P) V^2 + V_(q P) a,"),

@@ -45,24 +45,30 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         )?,
         cx.para("st_sought", &[])?,
     ];
+    // the constant driving moment's symbol in the note's language (M_прДВ,
+    // M_звДВ, M_d)
+    let md2 = cx.sym("sym_st_md2")?;
     let mut formulas = vec![
         cx.para("st_f_kloss", &[])?,
-        formula(
-            "M(S) = (2 M_K S S_K) / (S^2 + S_K^2), quad S = 1 - n / n_0, quad S_K = 1 - n_K / n_0, quad M_\"прДВ\" = u M(u omega / (2 pi))",
-        ),
+        formula(&format!(
+            "M(S) = (2 M_K S S_K) / (S^2 + S_K^2), quad S = 1 - n / n_0, quad S_K = 1 - n_K / n_0, quad {md2} = u M(u omega / (2 pi))"
+        )),
         cx.para("st_f_motion", &[])?,
-        formula(
-            "(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = (M_\"прДВ\"(omega) + M_c (phi) - 1/2 I'_\"II\"(phi) omega^2) / (I_I + I_\"II\"(phi))",
-        ),
+        formula(&format!(
+            "(dif phi) / (dif t) = omega, quad (dif omega) / (dif t) = ({md2}(omega) + M_c (phi) - 1/2 I'_\"II\"(phi) omega^2) / (I_I + I_\"II\"(phi))"
+        )),
     ];
     if tau > 0.0 {
         formulas.push(cx.para("st_f_dynamic", &[cx.q(tau, "st_u_s")?])?);
-        formulas.push(formula("tau (dif M) / (dif t) + M = M_\"ст\" (omega)"));
+        formulas.push(formula(&format!(
+            "tau (dif M) / (dif t) + M = {} (omega)",
+            cx.sym("sym_st_static")?
+        )));
     }
     formulas.push(cx.para("st_f_energy", &[])?);
-    formulas.push(formula(
-        "A_Sigma (phi) = M_\"прДВ\" phi + integral_0^phi M_c dif phi, quad omega(phi) = sqrt((2 A_Sigma (phi) + omega_0^2 I_Sigma (0)) / (I_Sigma (phi))), quad t(phi) = integral_0^phi (dif phi) / omega",
-    ));
+    formulas.push(formula(&format!(
+        "A_Sigma (phi) = {md2} phi + integral_0^phi M_c dif phi, quad omega(phi) = sqrt((2 A_Sigma (phi) + omega_0^2 I_Sigma (0)) / (I_Sigma (phi))), quad t(phi) = integral_0^phi (dif phi) / omega"
+    )));
     let mut given = vec![
         (cx.w("st_q_cycle_time")?, cx.qv("/dynamics/motor_driven/cycle_time", 1.0, "st_u_s")?),
         (cx.w("st_q_omega_end")?, cx.qv("/dynamics/motor_driven/omega_end", 1.0, "u_rad_s")?),

@@ -2,7 +2,8 @@
 //! mass m_пр(s), the speed V(s), the acceleration a(s), the time t(s)
 //! (left open at s_max when the end is reached only asymptotically) and
 //! the reduced forces — the resistance F_прC, the control force F_прДВ and
-//! their sum.
+//! their sum — with the symbols of the drawing's language (`cylinder.sym_*`:
+//! m_зв, F_звC … in Ukrainian, m_red, F_c, F_d, F_Σ in English).
 
 use tmm_linkage::linear::{EndReached, MotionRow};
 
@@ -38,8 +39,8 @@ pub fn draw_all(a: &Analysis, prefix: &str, lang: Language, sheet: SheetFormat, 
     let xy = |f: &dyn Fn(&MotionRow) -> f64| -> Vec<(f64, f64)> { rows.iter().map(|r| (r.reduced.s, f(r))).collect() };
 
     let yr = range(rows.iter().map(|r| r.reduced.mass));
-    let mut ch = chart(&wc("title_mass"), ("m_{пр}", &wc("unit_kg")), yr);
-    ch.curve(&xy(&|r| r.reduced.mass), BLUE, "m_{пр}", None);
+    let mut ch = chart(&wc("title_mass"), (&wc("sym_mass"), &wc("unit_kg")), yr);
+    ch.curve(&xy(&|r| r.reduced.mass), BLUE, &wc("sym_mass"), None);
     docs.add_text(format!("{prefix}mass.svg"), ch.finish())?;
 
     let yr = range(rows.iter().map(|r| r.speed));
@@ -75,9 +76,9 @@ pub fn draw_all(a: &Analysis, prefix: &str, lang: Language, sheet: SheetFormat, 
 
     let yr = range(rows.iter().flat_map(|r| [r.reduced.force, r.control, r.total]));
     let mut ch = chart(&wc("title_forces"), ("F", &wc("unit_n")), yr);
-    ch.curve(&xy(&|r| r.reduced.force), RED, "F_{прC}", None);
-    ch.curve(&xy(&|r| r.control), GREEN, "F_{прДВ}", None);
-    ch.curve(&xy(&|r| r.total), BLUE, "F_{прΣ}", Some((2.0, 1.0)));
+    ch.curve(&xy(&|r| r.reduced.force), RED, &wc("sym_fc"), None);
+    ch.curve(&xy(&|r| r.control), GREEN, &wc("sym_fd"), None);
+    ch.curve(&xy(&|r| r.total), BLUE, &wc("sym_fsum"), Some((2.0, 1.0)));
     ch.note(&format!("F_H = {} {}", num(mo.control.start, 1, lang), wc("unit_n")));
     ch.note(&format!("F_K = {} {}", num(mo.control.end, 1, lang), wc("unit_n")));
     docs.add_text(format!("{prefix}forces.svg"), ch.finish())?;
