@@ -634,7 +634,13 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   const pdfNames = await js("[...document.querySelectorAll('#file-list li')].map((li) => li.textContent.replace(/ \\(.*$/, '')).filter((n) => n.endsWith('.pdf'))");
   const cliPdf = join(editedDir, "out-pdf");
   writeFileSync(join(editedDir, "pdf-task.toml"), taskText);
-  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], { stdio: "pipe" });
+  // the page reads no font from the machine, so the drawings' lettering falls
+  // back from osifont to the linked faces there; the command line is run the
+  // same way for the comparison (TMM_FONT_PATH naming a file that is no font)
+  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], {
+    stdio: "pipe",
+    env: { ...process.env, TMM_FONT_PATH: join(editedDir, "pdf-task.toml") },
+  });
   const cliPdfs = walk(cliPdf).filter((f) => f.endsWith(".pdf")).sort();
   check("the page offers the same PDFs as tmm run", JSON.stringify([...pdfNames].sort()) === JSON.stringify(cliPdfs), `page ${pdfNames.join(" ")}; cli ${cliPdfs.join(" ")}`);
   // the note's text and pages against the command line's (pdftotext, pdfinfo)
