@@ -405,13 +405,33 @@ fn content_markup(s: &str) -> String {
 
 /// A text whose `=`, `≈` and `≤`, `≥` stay on the line of the symbol before
 /// them: the space before each made a no-break space, so a line never ends
-/// with a lone symbol (`K_v` | `= 1,106`); the line may still break after
-/// the sign (GOST 2.105, 4.2.15: a formula is broken after a sign).
+/// with a lone symbol (`K_v` | `= 1,106`). The line may still break after
+/// the sign (GOST 2.105, 4.2.15: a formula is broken after a sign), except
+/// before a short value (at most 8 characters to the next space, `0;`,
+/// `1,106`), which never stands alone at the head of a line
+/// (`p_4 =` | `0;`).
 fn keep_equals(s: &str) -> String {
-    s.replace(" =", "\u{a0}=")
+    let s = s
+        .replace(" =", "\u{a0}=")
         .replace(" ≈", "\u{a0}≈")
         .replace(" ≤", "\u{a0}≤")
-        .replace(" ≥", "\u{a0}≥")
+        .replace(" ≥", "\u{a0}≥");
+    let mut out = String::with_capacity(s.len());
+    let mut rest = s.as_str();
+    while let Some(i) = rest.find(['=', '≈', '≤', '≥']) {
+        let sign = rest[i..].chars().next().map_or(1, char::len_utf8);
+        out.push_str(&rest[..i + sign]);
+        rest = &rest[i + sign..];
+        if let Some(after) = rest.strip_prefix(' ') {
+            let word = after.split(' ').next().unwrap_or("");
+            if !word.is_empty() && word.chars().count() <= 8 {
+                out.push('\u{a0}');
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
 }
 
 /// A text as a typst argument: a string literal, or a content block when
@@ -428,8 +448,10 @@ fn content_arg(s: &str) -> String {
 mod keep_equals_tests {
     #[test]
     fn the_sign_stays_with_the_symbol_before_it() {
-        assert_eq!(super::keep_equals("W = 1, θ ≈ 9°"), "W\u{a0}= 1, θ\u{a0}≈ 9°");
-        assert_eq!(super::keep_equals(" = 1,106"), "\u{a0}= 1,106");
+        assert_eq!(super::keep_equals("W = 1, θ ≈ 9°"), "W\u{a0}=\u{a0}1, θ\u{a0}≈\u{a0}9°");
+        assert_eq!(super::keep_equals(" = 1,106"), "\u{a0}=\u{a0}1,106");
         assert_eq!(super::keep_equals("a=b"), "a=b");
+        // a long value may still go to the next line after the sign
+        assert_eq!(super::keep_equals("M = 12345,678901 Н"), "M\u{a0}= 12345,678901 Н");
     }
 }
