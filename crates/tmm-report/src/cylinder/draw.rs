@@ -44,12 +44,11 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     }
     let size = (b.1 - b.0).max(b.3 - b.2).max(1e-9);
     let world = (b.0 - 0.08 * size, b.1 + 0.08 * size, b.2 - 0.08 * size, b.3 + 0.08 * size);
-    let (w, h) = slot_mm(Slot::Scheme, sheet);
-    let mut c = Canvas::new(w, h);
+    let (w, h_slot) = slot_mm(Slot::Scheme, sheet);
     let (top, bottom, side) = (18.0, 14.0, 8.0);
-    let (aw, ah) = (w - 2.0 * side, h - top - bottom);
+    let (aw, ah_slot) = (w - 2.0 * side, h_slot - top - bottom);
     let (ww, wh) = ((world.1 - world.0) * 1000.0, (world.3 - world.2) * 1000.0);
-    let scale = match (standard_scale(ww, aw), standard_scale(wh, ah)) {
+    let scale = match (standard_scale(ww, aw), standard_scale(wh, ah_slot)) {
         (Some(x), Some(y)) => {
             if x.factor <= y.factor {
                 x
@@ -60,6 +59,15 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
         (Some(x), None) | (None, Some(x)) => x,
         (None, None) => Scale { factor: 1.0, text: "1:1" },
     };
+    // on the note's page the drawing is as high as its content at the chosen
+    // scale (GOST 2.105: no figure mostly empty); on a sheet it fills its slot
+    let h = if sheet == SheetFormat::A4 {
+        (wh * scale.factor + top + bottom).min(h_slot)
+    } else {
+        h_slot
+    };
+    let ah = h - top - bottom;
+    let mut c = Canvas::new(w, h);
     let k_mm = scale.factor * 1000.0;
     let ox = side + 0.5 * (aw - ww * scale.factor) - k_mm * world.0;
     let oy = bottom + 0.5 * (ah - wh * scale.factor) - k_mm * world.2;
