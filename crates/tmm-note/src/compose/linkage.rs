@@ -156,34 +156,14 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     structure.paragraph_and_figures(cx, &mut results)?;
     // the plan position: the point speeds and accelerations from the plans
-    if let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) {
-        let acc = lk
-            .pointer("/plans/acceleration")
-            .and_then(Value::as_array)
-            .cloned()
-            .unwrap_or_default();
-        let mut rows = Vec::new();
-        for v in plan.iter().filter(|v| v.get("kind").and_then(Value::as_str) == Some("absolute")) {
-            let label = v.get("label").and_then(Value::as_str).unwrap_or("");
-            let point = label.trim_start_matches("V_").trim_start_matches("v_");
-            let mag = vec_len(v);
-            let a = acc
-                .iter()
-                .find(|a| {
-                    a.get("kind").and_then(Value::as_str) == Some("absolute")
-                        && a.get("label").and_then(Value::as_str).map(|l| l.trim_start_matches("a_")) == Some(point)
-                })
-                .map(vec_len);
-            rows.push(vec![text(point), num(mag), a.map_or(crate::model::Cell::Empty, num)]);
-        }
-        if !rows.is_empty() {
-            results.push(cx.para("lk_plans", &[cx.deg("/linkage/plans/phi")?])?);
-            results.push(cx.table(
-                "tab_point_kinematics",
-                &[("col_point", ""), ("col_speed", "u_m_s"), ("col_acceleration", "u_m_s2")],
-                rows,
-            )?);
-        }
+    let rows = plan_rows(lk);
+    if !rows.is_empty() {
+        results.push(cx.para("lk_plans", &[cx.deg("/linkage/plans/phi")?])?);
+        results.push(cx.table(
+            "tab_point_kinematics",
+            &[("col_point", ""), ("col_speed", "u_m_s"), ("col_acceleration", "u_m_s2")],
+            rows,
+        )?);
     }
     let conclusions = vec![
         structure.conclusion(cx)?,
