@@ -9,53 +9,25 @@
 //! out on; the report's tests check each drawing's known lengths against
 //! its scale on that paper).
 
-use tmm_note::{Block, Note, Section};
-use tmm_report::TaskSource;
-use tmm_report::run::{DEFAULT_TASK, run_task};
+use tmm_note::{Block, Note};
+use tmm_report::run::run_task;
 
+use super::fixtures::task;
 use super::pdf_read::{Read, read};
 
 /// GOST 2.304's smallest letter height, mm, less the rounding of the
 /// PDF's numbers (a few thousandths of a millimetre).
 const MIN_CAP_MM: f64 = 2.5 - 0.005;
 
-fn figures<'a>(blocks: &'a [Block], out: &mut Vec<(&'a str, f64)>) {
-    for b in blocks {
-        if let Block::Figure { caption, width_mm, .. } = b {
-            out.push((caption.as_str(), *width_mm));
-        }
-    }
-}
-
-fn section_figures<'a>(s: &'a Section, out: &mut Vec<(&'a str, f64)>) {
-    figures(&s.blocks, out);
-    for sub in &s.subsections {
-        section_figures(sub, out);
-    }
-}
-
+/// Each figure of the note: its caption and the width it is set at.
 fn note_figures(note: &Note) -> Vec<(&str, f64)> {
-    let mut out = Vec::new();
-    figures(&note.assignment, &mut out);
-    for s in note
-        .introduction
-        .iter()
-        .chain(&note.sections)
-        .chain(&note.conclusion)
-        .chain(&note.appendices)
-    {
-        section_figures(s, &mut out);
-    }
-    out
-}
-
-fn task(name: &str) -> TaskSource {
-    if name == "default" {
-        return TaskSource::new("default.toml", DEFAULT_TASK);
-    }
-    let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("the example reads");
-    TaskSource::new(path, text)
+    super::fixtures::note_figures(note)
+        .into_iter()
+        .filter_map(|b| match b {
+            Block::Figure { caption, width_mm, .. } => Some((caption.as_str(), *width_mm)),
+            _ => None,
+        })
+        .collect()
 }
 
 fn smallest(r: &Read, figure_texts_only: bool) -> Option<&super::pdf_read::Shown> {

@@ -9,6 +9,7 @@ mod compose;
 mod figure_fit;
 mod figure_numbers;
 mod figures_pdf;
+mod fixtures;
 mod fonts_pdf;
 mod formulas;
 mod frame;

@@ -8,50 +8,21 @@
 //! the printed scale within 0.5 %. The worst error of each drawing is
 //! printed.
 
-use tmm_note::{Block, Note, Section};
-use tmm_report::TaskSource;
-use tmm_report::run::{DEFAULT_TASK, run_task};
+use tmm_note::{Block, Note};
+use tmm_report::run::run_task;
 
+use super::fixtures::task;
 use super::pdf_read::{MM_PER_PT, Read, read};
-
-fn task(name: &str) -> TaskSource {
-    if name == "default" {
-        return TaskSource::new("default.toml", DEFAULT_TASK);
-    }
-    let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("the example reads");
-    TaskSource::new(path, text)
-}
-
-fn figures<'a>(blocks: &'a [Block], out: &mut Vec<&'a str>) {
-    for b in blocks {
-        if let Block::Figure { svg, .. } = b {
-            out.push(svg.as_str());
-        }
-    }
-}
-
-fn section_figures<'a>(s: &'a Section, out: &mut Vec<&'a str>) {
-    figures(&s.blocks, out);
-    for sub in &s.subsections {
-        section_figures(sub, out);
-    }
-}
 
 /// The SVG of every figure of the note, in order.
 fn note_svgs(note: &Note) -> Vec<&str> {
-    let mut out = Vec::new();
-    figures(&note.assignment, &mut out);
-    for s in note
-        .introduction
-        .iter()
-        .chain(&note.sections)
-        .chain(&note.conclusion)
-        .chain(&note.appendices)
-    {
-        section_figures(s, &mut out);
-    }
-    out
+    super::fixtures::note_figures(note)
+        .into_iter()
+        .filter_map(|b| match b {
+            Block::Figure { svg, .. } => Some(svg.as_str()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// One drawing as printed: its clip in the PDF and what is drawn in it.

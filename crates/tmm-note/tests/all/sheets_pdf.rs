@@ -8,23 +8,14 @@
 //! every matrix, so it is measured on the paper, independently of the
 //! sizes the drawing code asks for.
 
-use tmm_report::TaskSource;
-use tmm_report::run::{DEFAULT_TASK, run_task};
+use tmm_report::run::run_task;
 
+use super::fixtures::task;
 use super::pdf_read::read;
 
 /// GOST 2.304's smallest letter height, mm, less the rounding of the
 /// PDF's numbers (a few thousandths of a millimetre; 0.2 %).
 const MIN_CAP_MM: f64 = 2.5 - 0.005;
-
-fn task(name: &str) -> TaskSource {
-    if name == "default" {
-        return TaskSource::new("default.toml", DEFAULT_TASK);
-    }
-    let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("the example reads");
-    TaskSource::new(path, text)
-}
 
 /// Every sheet of `name` typeset to PDF and read back, its smallest
 /// capital printed; the sheets with a text under [`MIN_CAP_MM`].
