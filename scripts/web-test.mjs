@@ -5,7 +5,7 @@
 // Writes <out dir>/results.json and one screenshot per view; exits 1 on the
 // first failed check.
 import { spawn, execFileSync } from "node:child_process";
-import { writeFileSync, readFileSync, mkdtempSync, readdirSync } from "node:fs";
+import { writeFileSync, readFileSync, mkdtempSync, readdirSync, existsSync, renameSync, rmSync } from "node:fs";
 import { gzipSync } from "node:zlib";
 import { join } from "node:path";
 import { tmpdir } from "node:os";
@@ -621,9 +621,10 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
 
 // ---------- the note and the sheets as PDF, typeset in the page ----------
 {
-  // the typesetter is a second module, loaded only when asked for
-  const early = await js("performance.getEntriesByType('resource').map((e) => e.name).filter((n) => /tmm_web_pdf/.test(n)).length");
-  check("the first load does not fetch the PDF module", early === 0, `${early} requests`);
+  // the typesetter is a second module, loaded only when asked for, and so
+  // is the drawings' GOST font served beside it
+  const early = await js("performance.getEntriesByType('resource').map((e) => e.name).filter((n) => /tmm_web_pdf|osifont/.test(n)).length");
+  check("the first load does not fetch the PDF module nor the GOST font", early === 0, `${early} requests`);
   const taskText = await js("document.getElementById('editor').value");
   const t0 = Date.now();
   await js("(document.getElementById('pdf').click(), true)");
@@ -631,16 +632,16 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   results.figures.pdf_first_ms = Date.now() - t0;
   const status = await js("document.getElementById('pdf-status').textContent");
   check("the note and the sheets are typeset in the page", made && !(await js("document.getElementById('pdf-status').classList.contains('bad')")), `${status} (${results.figures.pdf_first_ms} ms with the module's load)`);
+  // the GOST font: served when the build found osifont (scripts/build-web.sh)
+  const served = existsSync(join(distDir, "osifont.ttf"));
+  const fontState = await js("document.getElementById('pdf-status').dataset.font");
+  check("the page's PDFs take the GOST font osifont when the page serves it", fontState === (served ? "osifont" : "absent"), `${fontState}; osifont.ttf ${served ? "served" : "not served"}`);
   const pdfNames = await js("[...document.querySelectorAll('#file-list li')].map((li) => li.textContent.replace(/ \\(.*$/, '')).filter((n) => n.endsWith('.pdf'))");
   const cliPdf = join(editedDir, "out-pdf");
   writeFileSync(join(editedDir, "pdf-task.toml"), taskText);
-  // the page reads no font from the machine, so the drawings' lettering falls
-  // back from osifont to the linked faces there; the command line is run the
-  // same way for the comparison (TMM_FONT_PATH naming a file that is no font)
-  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], {
-    stdio: "pipe",
-    env: { ...process.env, TMM_FONT_PATH: join(editedDir, "pdf-task.toml") },
-  });
+  // the command line reads osifont from the machine, the page was given the
+  // same file by the build: both typeset with it
+  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], { stdio: "pipe" });
   const cliPdfs = walk(cliPdf).filter((f) => f.endsWith(".pdf")).sort();
   check("the page offers the same PDFs as tmm run", JSON.stringify([...pdfNames].sort()) === JSON.stringify(cliPdfs), `page ${pdfNames.join(" ")}; cli ${cliPdfs.join(" ")}`);
   // the note's text and pages against the command line's (pdftotext, pdfinfo)
@@ -657,6 +658,11 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   for (let i = 0; i < Math.min(wp.length, wc.length); i++) if (wp[i] !== wc[i]) differ++;
   // WebAssembly's libm may round a last printed digit differently: allow 1 word in 1000
   check("the page's note.pdf reads as the CLI's (pages, words)", pages(pagePdf) === pages(join(cliPdf, "note.pdf")) && differ <= wc.length / 1000, `${pages(pagePdf)} pages, ${wp.length} words, ${differ} differ`);
+  // the fonts embedded (pdffonts; the subset prefix ABCDEF+ dropped)
+  const fonts = (f) => [...new Set(execFileSync("pdffonts", [f]).toString().split("\n").slice(2).map((l) => l.split(/\s+/)[0]).filter(Boolean).map((n) => n.replace(/^[A-Z]{6}\+/, "")))].sort();
+  const [fp, fc] = [fonts(pagePdf), fonts(join(cliPdf, "note.pdf"))];
+  if (served) check("the page's note.pdf embeds osifont (pdffonts)", fp.includes("osifont"), fp.join(" "));
+  check("the page's note.pdf embeds the CLI's fonts", JSON.stringify(fp) === JSON.stringify(fc), `page ${fp.join(" ")}; cli ${fc.join(" ")}`);
   // a second request reuses the loaded module
   await setText(taskText + "\n# again\n");
   await sleep(400);
@@ -671,6 +677,39 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   const zn = await js(`fetch(window.__downloads[${z0}][1]).then((r) => r.arrayBuffer()).then((b) => { const d = new DataView(b); return d.getUint16(b.byteLength - 22 + 10, true); })`);
   check("the ZIP then holds the PDFs too", zn === nZip, `${zn} files, list ${nZip}; typeset again in ${results.figures.pdf_again_ms} ms`);
   await shot("files", "files-pdf");
+}
+
+// ---------- the PDFs without the GOST font: said, and made all the same ----------
+{
+  // osifont.ttf is moved away, then replaced by bytes that are no font; the
+  // file is put back before any check can end the test
+  const font = join(distDir, "osifont.ttf"), kept = join(distDir, "osifont.ttf.kept");
+  const had = existsSync(font);
+  if (had) renameSync(font, kept);
+  await send("Network.enable");
+  const attempt = async (why) => {
+    await send("Network.clearBrowserCache"); // the worker's fetch too
+    await send("Page.navigate", { url: "about:blank" }); await sleep(100);
+    await send("Page.navigate", { url });
+    await until("document.body && document.body.dataset.ready === '1'");
+    await js("(document.getElementById('pdf').click(), true)");
+    const made = await until("/\\d/.test(document.getElementById('pdf-status').textContent) && !document.getElementById('pdf').disabled", 600000);
+    const st = await js("[document.getElementById('pdf-status').dataset.font, document.getElementById('pdf-status').textContent, document.getElementById('pdf-status').classList.contains('bad'), document.documentElement.lang]");
+    const said = JSON.parse(await js(`window.tmmWords(${JSON.stringify(st[3])})`)).words[`pdf_font_${why}`];
+    await js(`document.querySelector('#tabs [data-view="files"]').click(), true`);
+    const files = await js("[...document.querySelectorAll('#file-list li')].filter((li) => /\\.pdf /.test(li.textContent)).length");
+    return [`the GOST font ${why === "absent" ? "not served" : "served as bytes that are no font"}: the PDFs are made with the fallback face and the page says so`, made && !st[2] && st[0] === why && !!said && st[1].includes(said) && files >= 1, `${st[0]}, ${files} PDFs listed, ${made ? "made" : "not made"}${st[2] ? ", marked as failed" : ""}${said && st[1].includes(said) ? "" : ", the words not said"}: ${st[1]}`];
+  };
+  const seen = [];
+  try {
+    seen.push(await attempt("absent"));
+    writeFileSync(font, "not a font\n");
+    seen.push(await attempt("refused"));
+  } finally {
+    if (had) renameSync(kept, font); else rmSync(font, { force: true });
+  }
+  await send("Network.clearBrowserCache");
+  for (const [name, ok, detail] of seen) check(name, ok, detail);
 }
 
 // ---------- edits are never lost ----------
@@ -728,5 +767,11 @@ check("bundle under 3 MB compressed", results.figures.bundle_gzip_bytes < 3e6, `
 const pdfWasm = readFileSync(join(distDir, "tmm_web_pdf_bg.wasm"));
 results.figures.pdf_module_bytes = pdfWasm.length;
 results.figures.pdf_module_gzip_bytes = gzipSync(pdfWasm, { level: 9 }).length + gzipSync(readFileSync(join(distDir, "tmm_web_pdf.js")), { level: 9 }).length;
+// the GOST font beside it, fetched with it
+if (existsSync(join(distDir, "osifont.ttf"))) {
+  const gost = readFileSync(join(distDir, "osifont.ttf"));
+  results.figures.gost_font_bytes = gost.length;
+  results.figures.gost_font_gzip_bytes = gzipSync(gost, { level: 9 }).length;
+}
 console.log(JSON.stringify(results.figures, null, 2));
 finish(0);

@@ -382,7 +382,8 @@ function showFiles() {
   for (const f of allSections().flatMap(sectionFiles)) add(`${f.path} (${(f.size / 1024).toFixed(1)} KB)`, () => download(f.path.replace(/\//g, "-"), tmm.file_bytes(f.path), "application/octet-stream"));
 }
 // The note and the sheets as PDF, typeset in a worker by the page's second
-// module (tmm_web_pdf: typst and its fonts), loaded on the first click only.
+// module (tmm_web_pdf: typst and its fonts) with the drawings' GOST font
+// osifont served beside it, both loaded on the first click only.
 // The PDFs belong to the task text and language they were made from.
 const pdfKey = (text) => $("lang").value + "\n" + text;
 const pdfFiles = () => (state.pdfs && state.pdfs.key === pdfKey($("editor").value) ? state.pdfs.files : []);
@@ -398,7 +399,11 @@ $("pdf").onclick = () => {
     $("pdf").disabled = false;
     if (e.data.ok) {
       state.pdfs = { key, files: e.data.files, ms: performance.now() - t0 };
-      $("pdf-status").textContent = W("pdf_done", e.data.files.length, ((performance.now() - t0) / 1000).toFixed(1));
+      // the drawings' lettering: osifont when the page serves it, else a
+      // fallback face, said next to the count
+      const font = e.data.font === "osifont" ? "" : " " + (e.data.font === "refused" ? W("pdf_font_refused") : W("pdf_font_absent"));
+      $("pdf-status").dataset.font = e.data.font;
+      $("pdf-status").textContent = W("pdf_done", e.data.files.length, ((performance.now() - t0) / 1000).toFixed(1)) + font;
     } else {
       $("pdf-status").textContent = W("pdf_failed") + " " + said(e.data.message);
       $("pdf-status").classList.add("bad");

@@ -1,5 +1,5 @@
 //! The fonts of the typesetter (шрифты): the faces linked into the binary
-//! and the GOST lettering face read from the machine.
+//! and the GOST lettering face, read from the machine or given as bytes.
 //!
 //! - `typst-assets` (feature `fonts`): New Computer Modern (the note's
 //!   text, full Cyrillic with the Ukrainian і ї є ґ in all four styles),
@@ -9,18 +9,24 @@
 //!   by `scripts/gost-supplement.py` from GOST 2.304 type B's construction
 //!   at osifont's metrics; MIT OR Apache-2.0 like tmm, so it is linked in.
 //! - **osifont** (GOST 2.304 / ISO 3098 letter shapes; Debian's
-//!   `fonts-osifont`), the drawings' lettering, read from the disk when
-//!   found ([`gost_font_path`]) and never linked in: its licence (GPL with
-//!   the font exception) frees the documents that embed it, not a program
-//!   that carries it. Without it the drawings fall back to the faces above.
+//!   `fonts-osifont`), the drawings' lettering, never linked in: its
+//!   licence (GPL with the font exception) frees the documents that embed
+//!   it, not a program that carries it. The command line reads it from the
+//!   disk when found ([`gost_font_path`]); the browser page, which has no
+//!   disk, serves the unaltered file beside its PDF module and gives its
+//!   bytes to [`with_gost_font`]. Without it the drawings fall back to the
+//!   faces above.
 //!
-//! The fonts are looked up and parsed once per process.
+//! The linked faces and the disk's osifont are looked up and parsed once per
+//! process; the set the typesetter chooses from ([`current`]) changes only
+//! through [`with_gost_font`].
 
 use std::path::{Path, PathBuf};
-use std::sync::LazyLock;
+use std::sync::{Arc, LazyLock, PoisonError, RwLock};
 
 use typst::foundations::Bytes;
-use typst::text::Font;
+use typst::text::{Font, FontBook};
+use typst::utils::LazyHash;
 
 /// tmm's GOST type B supplement to osifont (a TrueType font of 9 glyphs).
 pub const SUPPLEMENT: &[u8] = include_bytes!("../fonts/tmm-gost-supplement.ttf");
@@ -120,18 +126,140 @@ static GOST: LazyLock<Option<(PathBuf, Vec<Font>)>> = LazyLock::new(|| {
     (!faces.is_empty()).then_some((path, faces))
 });
 
-/// The GOST font file the PDFs embed, if one was found and parses.
+/// The GOST font file found on the disk, if one was found and parses: the
+/// one the PDFs embed unless [`with_gost_font`] gave another.
 pub fn gost_font() -> Option<&'static Path> {
     GOST.as_ref().map(|(p, _)| p.as_path())
 }
 
-/// Every face the typesetter may use: the linked ones, the supplement and
-/// the GOST font when found.
-pub fn all() -> Vec<Font> {
+/// The family name of the GOST font, as the drawings' SVG names it first
+/// ([`tmm_draw::svg::FONT_FAMILY`]).
+///
+/// ```
+/// assert!(tmm_draw::svg::FONT_FAMILY.starts_with(tmm_note::fonts::GOST_FAMILY));
+/// ```
+pub const GOST_FAMILY: &str = "osifont";
+
+/// The faces linked into the binary: `typst-assets`' and the supplement,
+/// parsed once.
+static LINKED: LazyLock<Vec<Font>> = LazyLock::new(|| {
     let mut fonts: Vec<Font> = typst_assets::fonts().flat_map(|data| Font::iter(Bytes::new(data))).collect();
     fonts.extend(Font::iter(Bytes::new(SUPPLEMENT)));
-    if let Some((_, faces)) = GOST.as_ref() {
-        fonts.extend(faces.iter().cloned());
-    }
     fonts
+});
+
+/// The faces the typesetter chooses from (набор шрифтов) and their book:
+/// the linked ones, then the GOST font's when there is one.
+pub struct FontSet {
+    book: LazyHash<FontBook>,
+    fonts: Vec<Font>,
+    gost: bool,
+}
+
+impl FontSet {
+    /// The linked faces and `gost` (the GOST font's faces; none: the
+    /// drawings fall back to the linked faces).
+    fn new(gost: &[Font]) -> Self {
+        let mut fonts = LINKED.clone();
+        fonts.extend(gost.iter().cloned());
+        FontSet {
+            book: LazyHash::new(FontBook::from_fonts(&fonts)),
+            fonts,
+            gost: !gost.is_empty(),
+        }
+    }
+
+    /// The book of the faces, in the typesetter's form.
+    pub fn book(&self) -> &LazyHash<FontBook> {
+        &self.book
+    }
+
+    /// The `index`-th face of the book.
+    pub fn font(&self, index: usize) -> Option<Font> {
+        self.fonts.get(index).cloned()
+    }
+
+    /// Every face, in the book's order.
+    pub fn fonts(&self) -> &[Font] {
+        &self.fonts
+    }
+
+    /// Whether the GOST font osifont is among the faces (else the drawings
+    /// use the fallback faces).
+    pub fn has_gost_font(&self) -> bool {
+        self.gost
+    }
+}
+
+/// The set the typesetter uses now: the disk's osifont until
+/// [`with_gost_font`] gives another.
+static CURRENT: LazyLock<RwLock<Arc<FontSet>>> = LazyLock::new(|| {
+    let gost = GOST.as_ref().map_or(&[][..], |(_, faces)| faces.as_slice());
+    RwLock::new(Arc::new(FontSet::new(gost)))
+});
+
+/// The set of faces a document typeset now is made with (each note and
+/// sheet takes it once, when its world is made).
+pub fn current() -> Arc<FontSet> {
+    CURRENT.read().unwrap_or_else(PoisonError::into_inner).clone()
+}
+
+/// Why the bytes given to [`with_gost_font`] were refused; the set in use
+/// is kept (the fallback faces, or the osifont it had).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum GostFontError {
+    /// No face could be read from the bytes.
+    #[error("the GOST lettering font's file holds no font the typesetter can read ({0} bytes): the PDFs' drawings use the fallback face")]
+    NotAFont(usize),
+    /// The bytes are a font, but not osifont, which the drawings name.
+    #[error(
+        "the GOST lettering font's file is the font \"{0}\", not osifont, which the drawings name: the PDFs' drawings use the fallback face"
+    )]
+    NotOsifont(String),
+}
+
+/// The faces of the osifont file `bytes`.
+///
+/// # Errors
+/// [`GostFontError`] when they hold no font, or a font of another family.
+fn gost_faces(bytes: Vec<u8>) -> Result<Vec<Font>, GostFontError> {
+    let len = bytes.len();
+    let faces: Vec<Font> = Font::iter(Bytes::new(bytes)).collect();
+    let Some(first) = faces.first() else {
+        return Err(GostFontError::NotAFont(len));
+    };
+    if !first.info().family.eq_ignore_ascii_case(GOST_FAMILY) {
+        return Err(GostFontError::NotOsifont(first.info().family.clone()));
+    }
+    Ok(faces)
+}
+
+/// Give the typesetter the GOST font osifont as the bytes of its file, in
+/// place of the one read from the disk (if any), for every document typeset
+/// after it in this process: how the browser page, which has no file
+/// system, embeds osifont (it serves the unaltered file beside its PDF
+/// module and fetches it on the first PDF request).
+///
+/// ```
+/// use tmm_note::fonts::{GostFontError, with_gost_font};
+/// // bytes that are no font are refused, and the set in use is kept
+/// let had = tmm_note::fonts::current().has_gost_font();
+/// assert_eq!(with_gost_font(b"no font".to_vec()), Err(GostFontError::NotAFont(7)));
+/// assert_eq!(tmm_note::fonts::current().has_gost_font(), had);
+/// ```
+///
+/// # Errors
+/// [`GostFontError`] when `bytes` hold no font or a font other than osifont;
+/// the faces in use are kept.
+pub fn with_gost_font(bytes: Vec<u8>) -> Result<(), GostFontError> {
+    let faces = gost_faces(bytes)?;
+    let set = Arc::new(FontSet::new(&faces));
+    *CURRENT.write().unwrap_or_else(PoisonError::into_inner) = set;
+    Ok(())
+}
+
+/// Every face the typesetter may use now: the linked ones, the supplement
+/// and the GOST font when there is one ([`current`]).
+pub fn all() -> Vec<Font> {
+    current().fonts().to_vec()
 }

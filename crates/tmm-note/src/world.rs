@@ -2,17 +2,20 @@
 //! `/template.typ`, the figures' SVG documents as virtual files, and the
 //! fonts of [`crate::fonts`] (those linked into the binary, and the GOST
 //! lettering face osifont when the machine has it — the one thing read from
-//! the disk; nothing from the network).
+//! the disk — or when the browser page gave its bytes; nothing from the
+//! network).
 //!
 //! Fonts: `typst-assets` (feature `fonts`) — New Computer Modern (text, full
 //! Cyrillic with the Ukrainian і ї є ґ in all four styles), New Computer
 //! Modern Math (formulas; Cyrillic inside formulas falls back to the text
 //! face), DejaVu Sans Mono (code), Libertinus Serif (not used by the
 //! template); tmm's GOST supplement and osifont (the drawings' lettering).
-//! The fonts and the standard library are parsed once per process.
+//! The fonts and the standard library are parsed once per process; each
+//! world keeps the font set in use when it was made
+//! ([`crate::fonts::current`]).
 
 use std::collections::HashMap;
-use std::sync::LazyLock;
+use std::sync::{Arc, LazyLock};
 
 use typst::diag::{FileError, FileResult};
 use typst::foundations::{Bytes, Datetime, Duration};
@@ -22,20 +25,7 @@ use typst::utils::LazyHash;
 use typst::{Library, LibraryExt, World};
 
 use crate::error::NoteError;
-
-/// The embedded fonts and their book.
-struct Fonts {
-    book: LazyHash<FontBook>,
-    fonts: Vec<Font>,
-}
-
-static FONTS: LazyLock<Fonts> = LazyLock::new(|| {
-    let fonts = crate::fonts::all();
-    Fonts {
-        book: LazyHash::new(FontBook::from_fonts(&fonts)),
-        fonts,
-    }
-});
+use crate::fonts::FontSet;
 
 static LIBRARY: LazyLock<LazyHash<Library>> = LazyLock::new(|| LazyHash::new(Library::default()));
 
@@ -55,6 +45,7 @@ pub struct NoteWorld {
     main: Source,
     template: Source,
     files: HashMap<FileId, Bytes>,
+    fonts: Arc<FontSet>,
 }
 
 impl NoteWorld {
@@ -71,7 +62,12 @@ impl NoteWorld {
             let svg = tmm_draw::svg::mark_supplement_runs(&svg);
             files.insert(file_id(&path)?, Bytes::from_string(svg));
         }
-        Ok(NoteWorld { main, template, files })
+        Ok(NoteWorld {
+            main,
+            template,
+            files,
+            fonts: crate::fonts::current(),
+        })
     }
 
     /// The file and line of a byte offset in one of the sources, for messages.
@@ -101,7 +97,7 @@ impl World for NoteWorld {
     }
 
     fn book(&self) -> &LazyHash<FontBook> {
-        &FONTS.book
+        self.fonts.book()
     }
 
     fn main(&self) -> FileId {
@@ -131,7 +127,7 @@ impl World for NoteWorld {
     }
 
     fn font(&self, index: usize) -> Option<Font> {
-        FONTS.fonts.get(index).cloned()
+        self.fonts.font(index)
     }
 
     /// No date: the note prints none, and the PDF stays reproducible.

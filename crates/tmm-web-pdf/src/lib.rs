@@ -7,6 +7,13 @@
 //! the page loads only when the PDFs are asked for; the first load stays
 //! small. Built by `scripts/build-web.sh` into `web/dist/tmm_web_pdf*`.
 //!
+//! The drawings' GOST lettering font osifont is not linked in (its licence
+//! frees the documents that embed it, not a program that carries it):
+//! `scripts/build-web.sh` copies the unaltered `osifont.ttf` beside this
+//! module, the PDF worker fetches it on the first request and gives its
+//! bytes to [`use_gost_font`]; without it the drawings fall back to the
+//! linked faces ([`tmm_note::fonts`]).
+//!
 //! It is not built for the host by the README's commands (its
 //! `wasm-bindgen` macros would make them build the typesetter twice, as
 //! for `tmm-web`); the browser test (`scripts/test-web.sh`) makes the
@@ -55,4 +62,22 @@ pub fn typeset(name: &str, text: &str, lang: &str) -> Result<Pdfs, String> {
     let run = tmm_report::run::run_task_in(&task, Language::from_code(lang)).map_err(|e| e.to_string())?;
     let docs = tmm_note::documents::pdf_documents(&run, &task, |_| {}).map_err(|e| e.to_string())?;
     Ok(Pdfs { docs })
+}
+
+/// Give the typesetter the drawings' GOST lettering font osifont, the bytes
+/// of the unaltered `osifont.ttf` the page serves beside this module, for
+/// every PDF typeset after it in this page ([`tmm_note::fonts::with_gost_font`]).
+///
+/// # Errors
+/// Why the bytes were refused (no font, or not osifont); the PDFs then
+/// keep the fallback faces.
+#[wasm_bindgen]
+pub fn use_gost_font(bytes: Vec<u8>) -> Result<(), String> {
+    tmm_note::fonts::with_gost_font(bytes).map_err(|e| e.to_string())
+}
+
+/// Whether the PDFs typeset now embed osifont (else the fallback faces).
+#[wasm_bindgen]
+pub fn has_gost_font() -> bool {
+    tmm_note::fonts::current().has_gost_font()
 }

@@ -196,3 +196,52 @@ fn the_default_projects_pdfs_embed_the_gost_fonts() {
     // sheet 1 prints "коэффициенту", minus signs and primes
     assert!(with_supplement >= 1);
 }
+
+/// A sheet of one line of lettering, named as the drawings name their
+/// font (osifont first).
+fn lettering_sheet() -> String {
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"80mm\" height=\"20mm\" viewBox=\"0 0 80 20\">\
+         <text x=\"5\" y=\"12\" font-family=\"{}\" font-size=\"5\">Шарнир B, звено 2</text></svg>",
+        tmm_draw::svg::FONT_FAMILY
+    )
+}
+
+#[test]
+fn osifont_given_as_bytes_is_embedded_in_the_pdf() {
+    // the browser page's way: no disk, the unaltered file's bytes given to
+    // the typesetter (the bytes read here from the machine's osifont, or
+    // from Debian's place when TMM_FONT_PATH turned the lookup off)
+    let debian = "/usr/share/fonts/truetype/osifont/osifont.ttf";
+    let Some(data) = osifont().or_else(|| std::fs::read(debian).ok()) else {
+        eprintln!("skipped: osifont is not installed (apt install fonts-osifont, or TMM_FONT_PATH)");
+        return;
+    };
+    tmm_note::fonts::with_gost_font(data).expect("osifont's own file is accepted");
+    assert!(tmm_note::fonts::current().has_gost_font());
+    let pdf = tmm_note::sheet_pdf(&lettering_sheet()).expect("the sheet typesets");
+    let fonts = font_names(&pdf);
+    assert_eq!(fonts, ["osifont"], "the lettering is set in osifont alone");
+}
+
+#[test]
+fn bytes_that_are_not_osifont_are_refused_and_the_pdf_falls_back() {
+    use tmm_note::fonts::{GostFontError, current, with_gost_font};
+    let had = current().has_gost_font();
+    let before = font_names(&tmm_note::sheet_pdf(&lettering_sheet()).expect("the sheet typesets"));
+    // no font at all: empty, text, a truncated TrueType header
+    for bytes in [&b""[..], b"not a font", b"\x00\x01\x00\x00\x00\x0a\x00\x80"] {
+        assert_eq!(with_gost_font(bytes.to_vec()), Err(GostFontError::NotAFont(bytes.len())));
+    }
+    // a font, but not the one the drawings name
+    let other = with_gost_font(tmm_note::fonts::SUPPLEMENT.to_vec());
+    assert_eq!(other, Err(GostFontError::NotOsifont("tmm GOST supplement".into())));
+    assert!(other.unwrap_err().to_string().contains("fallback"));
+    // the set in use is kept, and the PDF is made as before: in osifont
+    // when the machine has it, else in the fallback faces, never failing
+    assert_eq!(current().has_gost_font(), had);
+    let after = font_names(&tmm_note::sheet_pdf(&lettering_sheet()).expect("the sheet still typesets"));
+    assert_eq!(after, before);
+    assert_eq!(after.iter().any(|n| n == "osifont"), had, "{after:?}");
+    assert!(!after.is_empty());
+}
