@@ -51,6 +51,11 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     };
     w.out
         .push_str("#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break\n");
+    // the course's tangent in Russian and Ukrainian is tg (ctg), as the
+    // where-lines and the textbooks write it; typst's math names it tan
+    if matches!(note.lang, Lang::Ru | Lang::Uk) {
+        w.out.push_str("#let tan = math.op(\"tg\")\n#let cot = math.op(\"ctg\")\n");
+    }
     w.out.push_str("#let tr = (\n");
     for (k, v) in tr.iter() {
         let _ = writeln!(w.out, "  {k}: {},", string_literal(v));

@@ -35,15 +35,45 @@ pub const MATH_CLOSE: char = '\u{E001}';
 /// assert_eq!(notation("R^τ, Н"), format!("{O}R^τ{C}, Н"));
 /// assert_eq!(notation("a plain_text"), "a plain_text");
 /// assert_eq!(notation("no notation"), "no notation");
+/// // a Greek letter standing alone is a symbol in every language
+/// assert_eq!(notation("угол θ,"), format!("угол {O}θ{C},"));
+/// assert_eq!(notation("A_c(2π)"), format!("{O}A_c{C}(2{O}π{C})"));
 /// ```
 pub fn notation(text: &str) -> String {
+    notation_with(text, false)
+}
+
+/// [`notation`], and with `lone_latin` a Latin letter standing alone
+/// (`m`, `W`, `c*`, not the Roman numerals `I`, `V`, `X`) marked as a
+/// symbol too (a letter with a star, `c*`, in every language): in a Russian or Ukrainian text a lone Latin letter is always
+/// one (`модуль m`, `точки B`), so it is set in italics as in the formulas;
+/// in English it may be a word (`a`, `I`) or a unit (`m`, `s`) and stays
+/// text. `ΔT` and `Δy` (Δ before one letter) are symbols in every language.
+///
+/// ```
+/// use tmm_note::notation::{notation_with, MATH_OPEN as O, MATH_CLOSE as C};
+/// assert_eq!(notation_with("модуль m, мм", true), format!("модуль {O}m{C}, мм"));
+/// assert_eq!(notation_with("c* —", true), format!("{O}c^*{C} —"));
+/// assert_eq!(notation_with("класс I(0,1)", true), "класс I(0,1)");
+/// assert_eq!(notation_with("a module m", false), "a module m");
+/// // a letter with a star is a symbol in every language
+/// assert_eq!(notation_with("clearance c*", false), format!("clearance {O}c^*{C}"));
+/// assert_eq!(notation_with("ΔT —", false), format!("{O}Δ T{C} —"));
+/// ```
+pub fn notation_with(text: &str, lone_latin: bool) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::new();
     let mut i = 0;
     while i < chars.len() {
         // a token starts at a letter that follows a non-letter
-        let starts = is_base(chars[i]) && (i == 0 || !is_base(chars[i - 1]) && !chars[i - 1].is_alphanumeric());
-        if starts && let Some((math, len)) = token(&chars[i..]) {
+        let starts = is_base(chars[i]) && (i == 0 || !is_base(chars[i - 1]) && !chars[i - 1].is_alphanumeric())
+            // a Greek letter after a number: 2π as in the formulas' 2𝜋
+            || is_greek(chars[i]) && i > 0 && chars[i - 1].is_ascii_digit();
+        if starts
+            && let Some((math, len)) = derivative(&chars[i..])
+                .or_else(|| token(&chars[i..]))
+                .or_else(|| lone(&chars[i..], lone_latin))
+        {
             out.push(MATH_OPEN);
             out.push_str(&math);
             out.push(MATH_CLOSE);
@@ -54,6 +84,103 @@ pub fn notation(text: &str) -> String {
         i += 1;
     }
     out
+}
+
+/// A line of the symbols under a formula ("где θ — угол перекрытия, °;
+/// K_v — …", "where θ is …; K_v the …"): every symbol it explains — the
+/// head of each entry, before " — " (or the English " is ", " are ",
+/// " the " …) — is marked as math whatever the language, so a lone `m` or
+/// `W` is set as in the formula; the explanations as [`notation_with`].
+///
+/// ```
+/// use tmm_note::notation::{where_line, MATH_OPEN as O, MATH_CLOSE as C};
+/// assert_eq!(
+///     where_line("where W is the mobility; n the number of links", false),
+///     format!("where {O}W{C} is the mobility; {O}n{C} the number of links")
+/// );
+/// assert_eq!(where_line("где v_B, v_C — скорости", true), format!("где {O}v_B{C}, {O}v_C{C} — скорости"));
+/// ```
+pub fn where_line(text: &str, lone_latin: bool) -> String {
+    let Some((prefix, rest)) = text.split_once(' ') else {
+        return notation_with(text, lone_latin);
+    };
+    let entries: Vec<String> = rest
+        .split("; ")
+        .map(|entry| {
+            let end = WHERE_VERBS.iter().filter_map(|v| entry.find(v)).min().unwrap_or(0);
+            format!("{}{}", notation_with(&entry[..end], true), notation_with(&entry[end..], lone_latin))
+        })
+        .collect();
+    format!("{prefix} {}", entries.join("; "))
+}
+
+/// What ends the symbols of a where-line's entry.
+const WHERE_VERBS: [&str; 7] = [" — ", " is ", " are ", " the ", " as ", " its ", " their "];
+
+/// A derivative written flat at the start of `s`, `ds/dφ` or `d²s/dφ²`
+/// (a letter over a Greek letter), as the formulas set it: an upright d,
+/// the letters in italics, a slash.
+///
+/// ```
+/// use tmm_note::notation::{notation, MATH_OPEN as O, MATH_CLOSE as C};
+/// assert_eq!(notation("max |ds/dφ|"), format!("max |{O}dif s\\/dif φ{C}|"));
+/// assert_eq!(notation("d²s/dφ², мм"), format!("{O}dif^2 s\\/dif φ^2{C}, мм"));
+/// ```
+fn derivative(s: &[char]) -> Option<(String, usize)> {
+    let mut i = 0;
+    let at = |k: usize| s.get(k).copied();
+    if at(i)? != 'd' {
+        return None;
+    }
+    i += 1;
+    let square = at(i) == Some('²');
+    if square {
+        i += 1;
+    }
+    let top = at(i).filter(char::is_ascii_alphabetic)?;
+    i += 1;
+    if at(i) != Some('/') || at(i + 1) != Some('d') {
+        return None;
+    }
+    i += 2;
+    let bottom = at(i).filter(|c| is_greek(*c))?;
+    i += 1;
+    if square {
+        if at(i) != Some('²') {
+            return None;
+        }
+        i += 1;
+    }
+    if at(i).is_some_and(|c| c.is_alphanumeric() || matches!(c, '_' | '^')) {
+        return None;
+    }
+    Some(if square {
+        (format!("dif^2 {top}\\/dif {bottom}^2"), i)
+    } else {
+        (format!("dif {top}\\/dif {bottom}"), i)
+    })
+}
+
+/// A symbol of one letter at the start of `s` standing alone: a Greek
+/// letter (`θ`, `ϑ`), `Δ` with one letter (`ΔT`), with `lone_latin` a
+/// Latin letter other than a Roman numeral; a `*` after it is a
+/// superscript (`c*`).
+fn lone(s: &[char], lone_latin: bool) -> Option<(String, usize)> {
+    let free = |k: usize| s.get(k).is_none_or(|c| !c.is_alphanumeric() && !matches!(c, '_' | '^'));
+    let c = *s.first()?;
+    let (math, len) = if c == 'Δ' && s.get(1).is_some_and(|d| d.is_ascii_alphabetic() || is_greek(*d)) && free(2) {
+        (format!("Δ {}", s[1]), 2)
+    } else if free(1)
+        && (is_greek(c) && c != 'Δ' || c.is_ascii_alphabetic() && (lone_latin && !matches!(c, 'I' | 'V' | 'X') || s.get(1) == Some(&'*')))
+    {
+        (c.to_string(), 1)
+    } else {
+        return None;
+    };
+    if s.get(len) == Some(&'*') {
+        return Some((format!("{math}^*"), len + 1));
+    }
+    Some((math, len))
 }
 
 /// A caller's string with the math markers removed.
@@ -120,6 +247,30 @@ fn token(s: &[char]) -> Option<(String, usize)> {
     for mark in ['_', '^'] {
         if i < s.len() && s[i] == mark {
             let start = i + 1;
+            // a subscript in quotes is upright as written: I_"M" (Mertsalov's)
+            if s.get(start) == Some(&'"')
+                && let Some(len) = s[start + 1..].iter().position(|c| *c == '"')
+                && len > 0
+            {
+                let end = start + 1 + len;
+                math.push(mark);
+                math.extend(&s[start..=end]);
+                i = end + 1;
+                continue;
+            }
+            // a script in parentheses keeps them: u_13^(H) (Willis's ratio)
+            if s.get(start) == Some(&'(')
+                && let Some(len) = s[start + 1..].iter().position(|c| *c == ')')
+                && len > 0
+                && s[start + 1..start + 1 + len].iter().all(|c| c.is_alphanumeric())
+            {
+                let end = start + 1 + len;
+                let inner: String = s[start + 1..end].iter().collect();
+                math.push(mark);
+                math.push_str(&format!("(({}))", spaced(&inner)));
+                i = end + 1;
+                continue;
+            }
             let mut j = start;
             while j < s.len() && is_sub(s[j]) {
                 j += 1;
@@ -173,7 +324,7 @@ fn spaced(p: &str) -> String {
 }
 
 fn is_greek(c: char) -> bool {
-    ('\u{0391}'..='\u{03C9}').contains(&c)
+    ('\u{0391}'..='\u{03C9}').contains(&c) || matches!(c, 'ϑ' | 'ϕ' | 'ϵ')
 }
 
 #[cfg(test)]
@@ -198,6 +349,8 @@ mod tests {
         assert_eq!(m("v_Si"), "v_(S i)");
         assert_eq!(m("M_Zh"), "M_\"Zh\"");
         assert_eq!(m("u_13^H"), "u_(13)^H");
+        assert_eq!(m("I_\"M\""), "I_\"M\"");
+        assert_eq!(m("u_13^(H)"), "u_(13)^((H))");
         // a number with a power, words without a mark, a lone underscore stay text
         assert_eq!(notation("10^5 a _ b"), "10^5 a _ b");
         let r = runs(&notation("по K_v и l_AB."));

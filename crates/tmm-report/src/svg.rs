@@ -923,6 +923,21 @@ pub fn mu_text(mu: f64, lang: crate::project::Language) -> String {
     num(mu, d, lang)
 }
 
+/// A standard scale as printed on a drawing of the language: GOST 2.302
+/// writes "1:2,5"; an English drawing writes its decimal point.
+///
+/// ```
+/// use tmm_report::{project::Language, svg::scale_text};
+/// assert_eq!(scale_text("1:2,5", Language::En), "1:2.5");
+/// assert_eq!(scale_text("1:2,5", Language::Uk), "1:2,5");
+/// ```
+pub fn scale_text(t: &str, lang: crate::project::Language) -> String {
+    match lang {
+        crate::project::Language::En => t.replace(',', "."),
+        _ => t.to_string(),
+    }
+}
+
 /// The decimal point of a printed number turned into a comma for ru and uk.
 pub fn comma(t: &str, lang: crate::project::Language) -> String {
     match lang {

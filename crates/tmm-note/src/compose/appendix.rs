@@ -108,9 +108,12 @@ pub(crate) fn appendices(cx: &Ctx) -> Result<Vec<Section>, NoteError> {
             .iter()
             .map(|pos| {
                 let g = |k: &str| pos.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+                // the crank's absolute angle, as appendices А and Б print it
+                // (φ of the dynamics runs from the start of the working stroke)
+                let phi = pos.get("crank_angle").and_then(Value::as_f64).unwrap_or(g("phi"));
                 vec![
                     text(pos.get("index").map(|v| v.to_string()).unwrap_or_default()),
-                    num(g("phi").to_degrees()),
+                    num(phi.to_degrees().rem_euclid(360.0)),
                     num(g("reduced_inertia_variable")),
                     num(g("reduced_moment")),
                     num(g("work")),

@@ -80,7 +80,7 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
                 (cx.w("q_ratio")?, cx.qv("/planetary/request/ratio", 1.0, "")?),
                 (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
                 (cx.w("q_module")?, cx.qv("/planetary/request/module", 1000.0, "u_mm")?),
-                (cx.w("q_omega1")?, cx.qv("/planetary/request/omega1", 1.0, "u_rad_s")?),
+                (cx.w("q_omega_sun")?, cx.qv("/planetary/request/omega1", 1.0, "u_rad_s")?),
             ],
         )?);
     }

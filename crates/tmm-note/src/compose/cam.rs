@@ -57,6 +57,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let mut formulas = vec![
         cx.para("cam_f_analogs", &[])?,
         formula("v = omega (dif s) / (dif phi), quad a = omega^2 (dif^2 s) / (dif phi^2)"),
+        cx.para("where_cam_analogs", &[])?,
     ];
     if osc {
         formulas.push(cx.para("cam_f_pressure_oscillating", &[])?);
@@ -65,6 +66,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         formulas.push(formula(
             "tan theta.alt = ((dif s) / (dif phi) - e) / (s_0 + s), quad s_0 = sqrt(r_0^2 - e^2)",
         ));
+        formulas.push(cx.para("where_cam_pressure", &[])?);
     }
     formulas.extend([
         cx.para("cam_f_roller", &[])?,
@@ -74,6 +76,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             crate::number::math_number(0.4, 1, cx.lang)?,
             crate::number::math_number(0.7, 1, cx.lang)?
         )),
+        cx.para("where_cam_roller", &[])?,
     ]);
     // the analogues of an oscillating follower are of an angle: dψ/dφ is a
     // pure number, d²ψ/dφ² per radian; of a translating one, lengths in mm
@@ -124,7 +127,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     }
     q.extend([
         (cx.w("q_pressure_rise")?, cx.deg("/cam/pressure_angle_max_rise")?),
-        (cx.w("q_pressure_return")?, cx.deg("/cam/pressure_angle_max_return")?),
+        (cx.w("q_pressure_fall")?, cx.deg("/cam/pressure_angle_max_return")?),
         (cx.w("q_rho_min")?, cx.qv("/cam/rho_min", 1000.0, "u_mm")?),
     ]);
     results.push(cx.quantities("tab_cam", q)?);

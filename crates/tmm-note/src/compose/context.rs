@@ -26,10 +26,19 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    /// A word, its notation (`K_v`, `M_ур`) marked as math
-    /// ([`crate::notation::notation`]).
+    /// A word, its notation (`K_v`, `M_ур`, a lone `θ`; in Russian and
+    /// Ukrainian a lone Latin letter too) marked as math
+    /// ([`crate::notation::notation_with`]); a line of the symbols under a
+    /// formula (a `where_*` key) with every symbol it explains marked
+    /// ([`crate::notation::where_line`]), so each is set as in its formula.
     pub fn w(&self, key: &str) -> Result<String, NoteError> {
-        self.words.get(key).map(crate::notation::notation)
+        let text = self.words.get(key)?;
+        let lone_latin = self.lang != Lang::En;
+        Ok(if key.starts_with("where_") {
+            crate::notation::where_line(text, lone_latin)
+        } else {
+            crate::notation::notation_with(text, lone_latin)
+        })
     }
 
     /// A word as written: the typst math of a formula's symbol (`sym_*`).
@@ -40,7 +49,7 @@ impl Ctx<'_> {
     /// A word with its notation marked and its places filled; the
     /// arguments (numbers, the caller's names) stay literal.
     pub fn fill(&self, key: &str, args: &[String]) -> Result<String, NoteError> {
-        let mut s = crate::notation::notation(self.words.get(key)?);
+        let mut s = self.w(key)?;
         // from the last place down, so {1} does not eat the start of {10}
         for (i, a) in args.iter().enumerate().rev() {
             s = s.replace(&format!("{{{}}}", i + 1), &crate::notation::strip(a));

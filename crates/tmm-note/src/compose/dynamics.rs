@@ -206,7 +206,7 @@ fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             out.push(cx.para("calc_ifl_motor", &[])?);
             out.push(Block::Calculation(Calculation::new(
                 Quantity::new(&cx.sym("sym_ifl")?, on_motor, &unit),
-                calc::div(calc::q(&crank_sym, fl, ""), calc::pow(calc::q("u_\"м\"", u, ""), 2)),
+                calc::div(calc::q(&crank_sym, fl, ""), calc::pow(calc::q(&cx.sym("sym_u_motor")?, u, ""), 2)),
             )));
         }
     }

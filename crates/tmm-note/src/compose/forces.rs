@@ -228,7 +228,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
 /// is among them, `Fc<link>`).
 fn worked(cx: &Ctx, mb: f64, mzh: f64) -> Result<Vec<Block>, NoteError> {
     let mut out = Vec::new();
-    let (Some((axis, pin, l)), Some(pb)) = (crank(cx), cx.opt("/forces/detail/balancing_force")) else {
+    let (Some((_, _, l)), Some(pb)) = (crank(cx), cx.opt("/forces/detail/balancing_force")) else {
         return Ok(out);
     };
     let unit_nm = cx.w("u_nm")?;
@@ -237,7 +237,8 @@ fn worked(cx: &Ctx, mb: f64, mzh: f64) -> Result<Vec<Block>, NoteError> {
         Quantity::new(&cx.sym("sym_mb")?, mb, &unit_nm),
         Expr::Mul(vec![
             calc::q(&cx.sym("sym_pb")?, pb, ""),
-            calc::q(&format!("l_({} {})", math_name(&axis), math_name(&pin)), l, ""),
+            // l_1 as in formula (3.3) and its where-line: the crank's length
+            calc::q("l_1", l, ""),
         ]),
     )));
     let Some(lever) = cx.report.pointer("/forces/lever").and_then(Value::as_array) else {

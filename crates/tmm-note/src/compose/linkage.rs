@@ -95,6 +95,23 @@ pub(crate) fn crank(cx: &Ctx) -> Option<(String, String, f64)> {
     Some((axis.to_string(), pin.to_string(), (a.0 - b.0).hypot(a.1 - b.1)))
 }
 
+/// The symbols under the velocity equations; a crank whose pin is not `B`
+/// (seed 003's `OA`) adds its pin's speed `v_A` of the formula's second
+/// equation.
+fn where_velocity(cx: &Ctx) -> Result<Block, NoteError> {
+    use crate::notation::{MATH_CLOSE, MATH_OPEN};
+    let line = cx.w("where_velocity")?;
+    let Some((_, pin, _)) = crank(cx).filter(|(_, pin, _)| pin != "B") else {
+        return Ok(Block::Paragraph(crate::model::Text::plain(line)));
+    };
+    let pin_speed = cx.fill("lk_where_pin", &[pin.clone()])?;
+    Ok(Block::Paragraph(crate::model::Text::plain(format!(
+        "{}; {MATH_OPEN}v_({}){MATH_CLOSE} {pin_speed}.",
+        line.trim_end_matches('.'),
+        math_name(&pin)
+    ))))
+}
+
 /// The section, if the report has `linkage`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(lk) = cx.report.get("linkage") else { return Ok(None) };
@@ -131,7 +148,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             ),
             None => "arrow(v)_C = arrow(v)_B + arrow(v)_(C B)".to_string(),
         }),
-        cx.para("where_velocity", &[])?,
+        where_velocity(cx)?,
         cx.para("lk_f_acceleration", &[])?,
         formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B), quad a^n_(C B) = omega_2^2 l_(B C)"),
         cx.para("where_acceleration", &[])?,
@@ -229,11 +246,20 @@ impl Structure {
         Ok(results)
     }
 
+    /// The class as the table of Assur groups prints it: II, not 2.
+    fn class_roman(&self) -> String {
+        if self.class >= 0.0 && self.class.fract() == 0.0 {
+            super::structure::roman(self.class as u64)
+        } else {
+            format!("{}", self.class)
+        }
+    }
+
     /// The conclusion's sentence on the structure.
     fn conclusion(&self, cx: &Ctx) -> Result<Block, NoteError> {
         cx.para(
             "lk_conclusion_structure",
-            &[self.formula.clone(), format!("{}", self.class), format!("{}", self.dof)],
+            &[self.formula.clone(), self.class_roman(), format!("{}", self.dof)],
         )
     }
 
@@ -248,7 +274,7 @@ impl Structure {
                 format!("{}", self.p4),
                 format!("{}", self.dof),
                 self.formula.clone(),
-                format!("{}", self.class),
+                self.class_roman(),
             ],
         )?);
         for (path, key) in [

@@ -138,7 +138,7 @@ fn para_ref(cx: &Ctx, key: &str, label: &str) -> Result<Block, NoteError> {
 }
 
 /// A class as the course writes it: I, II, III, IV.
-fn roman(n: u64) -> String {
+pub(crate) fn roman(n: u64) -> String {
     ["0", "I", "II", "III", "IV", "V", "VI"]
         .get(n as usize)
         .map_or_else(|| n.to_string(), |s| s.to_string())

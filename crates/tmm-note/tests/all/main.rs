@@ -2,6 +2,7 @@
 //! the dependency graph instead of one per file). Each former test file is
 //! a module here: run one with `cargo test --release -p tmm-note --test all <module>::`.
 
+mod appendices;
 mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
@@ -19,3 +20,4 @@ mod scales_pdf;
 mod sheets_dxf_pdf;
 mod sheets_pdf;
 mod typeset;
+mod where_lines;

@@ -5,7 +5,8 @@
 //! captions went through math; nor a Greek letter written flat with its
 //! index (`εα`, `ωmax`, `φ20`, `ΔTmax`: typst's math sets the letter in
 //! math italic, U+1D6FC …, so a plain Greek letter followed at once by a
-//! plain letter or digit was never typeset as a symbol). The drawings are
+//! plain letter or digit was never typeset as a symbol), nor a plain Greek
+//! letter standing alone (`угол φ` under a formula's 𝜑). The drawings are
 //! blanked first: their lettering is the drawings' own (tmm-report), not
 //! the note's text.
 
@@ -59,17 +60,21 @@ fn plain_alnum(c: char) -> bool {
 
 /// Greek letters written flat with an index: a plain lower-case Greek
 /// letter right after a non-letter and right before a plain letter or digit
-/// (`εα`, `ωmax`, `φ20`), or `Δ` before two plain letters or digits
-/// (`ΔTmax`, `ΔTI`).
+/// (`εα`, `ωmax`, `φ20`), or `Δ` before a plain letter or digit (`ΔT`,
+/// `ΔTmax`, `Δy`); and a plain Greek letter standing alone (`угол φ`,
+/// `θ —`), which the formulas set in math italic (𝜑, 𝜃).
 fn flat_greek(text: &str) -> Vec<String> {
     let chars: Vec<char> = text.chars().collect();
     let mut out = Vec::new();
-    for i in 0..chars.len().saturating_sub(1) {
+    for i in 0..chars.len() {
         let c = chars[i];
         let after_gap = i == 0 || !chars[i - 1].is_alphanumeric();
+        let next = chars.get(i + 1).copied();
+        let greek = ('α'..='ω').contains(&c) || matches!(c, 'ϑ' | 'ϕ');
         let flat = after_gap
-            && (('α'..='ω').contains(&c) && plain_alnum(chars[i + 1])
-                || c == 'Δ' && plain_alnum(chars[i + 1]) && chars.get(i + 2).is_some_and(|d| plain_alnum(*d)));
+            && (greek && next.is_some_and(plain_alnum)
+                || greek && next.is_none_or(|n| !n.is_alphanumeric())
+                || c == 'Δ' && next.is_some_and(plain_alnum));
         if flat {
             out.push(chars[i.saturating_sub(6)..(i + 7).min(chars.len())].iter().collect());
         }
@@ -93,7 +98,8 @@ fn the_raw_token_finder_finds_what_it_must() {
     assert_eq!(raw_tokens("R^τ, Н").len(), 1);
     assert!(raw_tokens("K𝑣 = 1,107; 10^ _x").is_empty());
     assert_eq!(flat_greek("εα = 1,205; ωmax, φ20 и ΔTmax").len(), 4);
-    assert!(flat_greek("𝜀𝛼 = 1,205; 𝜔max, Δ𝑇max, угол φ, ψ = 38°, (φ, ψ), Δy, d²s/dφ²").is_empty());
+    assert_eq!(flat_greek("угол φ, ψ = 38°, (φ, ψ), Δy").len(), 5);
+    assert!(flat_greek("𝜀𝛼 = 1,205; 𝜔max, Δ𝑇max, угол 𝜑, 𝜓 = 38°, (𝜑, 𝜓), Δ𝑦, d²s/dφ²").is_empty());
 }
 
 #[test]

@@ -546,7 +546,12 @@ pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) ->
     // the legend and the sizes on the right
     let lx = pw - legend_w;
     let mut ly = 8.0;
-    lab.put_left((lx, ly), &format!("{} {}", word(lang, "common.scale"), scale.text), H_LABEL, "#000");
+    lab.put_left(
+        (lx, ly),
+        &format!("{} {}", word(lang, "common.scale"), crate::svg::scale_text(scale.text, lang)),
+        H_LABEL,
+        "#000",
+    );
     let mm = word(lang, "cam.mm");
     let mut rows: Vec<(Option<Style>, String)> = vec![
         (Some(Style::THICK), word(lang, "cam.legend_working").to_string()),

@@ -81,7 +81,7 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
         &format!(
             "{} {},   μ_l = {} {},   s_max = {} {},   β = {}°",
             word(lang, "common.scale"),
-            scale.text,
+            crate::svg::scale_text(scale.text, lang),
             mu_text(0.001 / scale.factor, lang),
             wd("m_per_mm"),
             num(d.travel(), 3, lang),

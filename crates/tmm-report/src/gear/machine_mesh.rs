@@ -159,7 +159,11 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     let win = (wx0, wx1, wy0, wy1);
     cv.text_paper(
         (0.5 * pw, 7.0),
-        &format!("{} {}", word(lang, "gear.machine_mesh_title"), scale.text),
+        &format!(
+            "{} {}",
+            word(lang, "gear.machine_mesh_title"),
+            crate::svg::scale_text(scale.text, lang)
+        ),
         H_HEAD,
         Anchor::Middle,
         "#000",

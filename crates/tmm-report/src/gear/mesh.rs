@@ -309,7 +309,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let paper = |q: Pt| c_to_paper(&lay, q, ph);
     // the title over the drawing; one wider than the drawing's part (the
     // note's A4 page) over the whole paper, the table moved under it
-    let title = format!("{} {}", word(lang, "gear.mesh_title"), lay.scale.text);
+    let title = format!("{} {}", word(lang, "gear.mesh_title"), crate::svg::scale_text(lay.scale.text, lang));
     let title_w = CHAR_WIDTH * H_HEAD * plain(&title).chars().count() as f64;
     let title_wide = title_w > lay.table_x - 6.0;
     let title_x = if title_wide {

@@ -16,7 +16,7 @@ use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
 use crate::picture::Picture;
 use crate::project::Language;
-use crate::svg::{Anchor, Canvas, Style, comma, mu_text, num};
+use crate::svg::{Anchor, Canvas, Style, mu_text, num};
 use crate::words::word;
 use crate::{Error, TaskSource};
 
@@ -234,7 +234,7 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         "{}, {} {},  μ_l = {} {}",
         word(lang, "linkage.scheme"),
         word(lang, "linkage.scale_short"),
-        comma(scale.text, lang),
+        crate::svg::scale_text(scale.text, lang),
         mu_text(1.0 / s, lang),
         word(lang, "linkage.m_per_mm")
     );

@@ -105,7 +105,7 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
         teeth_text(sc, b),
         word(lang, "common.scale"),
-        scale.text
+        crate::svg::scale_text(scale.text, lang)
     );
     // in lines that stay on the paper (the labels' boxes are CHAR_WIDTH =
     // 0.62 of the size a letter, the wrapping's 0.6: 4 % narrower room)

@@ -251,7 +251,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         format!(
             "{} {},   μ_l = {} {}",
             word(lang, "common.scale"),
-            scale.text,
+            crate::svg::scale_text(scale.text, lang),
             mu_text(0.001 / scale.factor, lang),
             wd("m_per_mm")
         )
@@ -259,7 +259,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         format!(
             "{} {},   μ_l = {} {},   K = {},   θ = {}°",
             word(lang, "common.scale"),
-            scale.text,
+            crate::svg::scale_text(scale.text, lang),
             mu_text(0.001 / scale.factor, lang),
             wd("m_per_mm"),
             num(y.k, 4, lang),
