@@ -164,6 +164,7 @@ impl Dimension {
                     rich: text.clone(),
                     anchor: Anchor::Middle,
                     rotation_deg: rot,
+                    width_factor: 1.0,
                 }));
             }
             Dimension::Angular {
@@ -198,6 +199,7 @@ impl Dimension {
                     rich: text.clone(),
                     anchor: Anchor::Middle,
                     rotation_deg: rot,
+                    width_factor: 1.0,
                 }));
             }
             Dimension::Radius {
@@ -221,6 +223,7 @@ impl Dimension {
                     rich: text.clone(),
                     anchor: Anchor::Middle,
                     rotation_deg: rot,
+                    width_factor: 1.0,
                 }));
             }
         }

@@ -599,6 +599,9 @@ impl Entities<'_> {
             if t.rotation_deg != 0.0 {
                 o.f(50, t.rotation_deg.rem_euclid(360.0));
             }
+            if t.width_factor != 1.0 {
+                o.f(41, t.width_factor);
+            }
             o.pair(7, TEXT_STYLE);
             let j = match t.anchor {
                 Anchor::Start => 0,
@@ -631,7 +634,10 @@ impl Entities<'_> {
                 },
             );
             o.i(72, 1);
-            let content = mtext(&t.rich);
+            let mut content = mtext(&t.rich);
+            if t.width_factor != 1.0 {
+                content = format!("\\W{};{content}", crate::fixed::Fixed(t.width_factor, 3));
+            }
             let chars: Vec<char> = content.chars().collect();
             let chunks: Vec<String> = chars.chunks(240).map(|c| c.iter().collect()).collect();
             for (k, c) in chunks.iter().enumerate() {

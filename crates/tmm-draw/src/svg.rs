@@ -306,7 +306,7 @@ impl Svg {
             num(-SLANT_DEG),
             esc(FONT_FAMILY).replace("&quot;", "'")
         );
-        self.out.push_str(&rich_tspans(&t.rich, t.height));
+        self.out.push_str(&rich_tspans(&t.rich, t.height, t.width_factor));
         self.out.push_str("</text>\n");
     }
 }
@@ -314,8 +314,9 @@ impl Svg {
 /// The tspans of rich text at height `h`: base text plain, a superscript
 /// raised by half the capital height, a subscript lowered by a third of
 /// it, both at the index height ([`crate::TextHeight::index`]); when a
-/// span has both, the subscript is moved back under the superscript.
-pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
+/// span has both, the subscript is moved back under the superscript;
+/// `width` narrows every run by that factor ([`Text::width_factor`]).
+pub fn rich_tspans(r: &Rich, h: crate::TextHeight, width: f64) -> String {
     let ih = h.index();
     let isize = num(ih.mm() / CAP_EM);
     // The text is set to type B's width (GOST 2.304, table 2): a face wider
@@ -340,7 +341,7 @@ pub fn rich_tspans(r: &Rich, h: crate::TextHeight) -> String {
             }
         }
     }
-    let k = if wf > 0.0 { wb / wf } else { 1.0 };
+    let k = if wf > 0.0 { wb / wf } else { 1.0 } * width;
     let len = |s: &str, h: crate::TextHeight| format!(" textLength=\"{}\" lengthAdjust=\"spacingAndGlyphs\"", num(k * face(s, h)));
     // each run of one font is its own tspan with its own length: a
     // textLength applies to the characters of its own element only

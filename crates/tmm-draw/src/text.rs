@@ -284,6 +284,11 @@ pub struct Text {
     pub anchor: Anchor,
     /// Rotation, degrees counter-clockwise.
     pub rotation_deg: f64,
+    /// The letters' width over type B's (ширина букв): 1 for type B; under
+    /// 1 only for the title block form's own captions, narrowed where the
+    /// form's narrow columns hold no type B word (`eskd`), as the forms
+    /// printed by KOMPAS-3D and the like do.
+    pub width_factor: f64,
 }
 
 impl Text {
@@ -298,6 +303,7 @@ impl Text {
             rich: Rich::parse(markup)?,
             anchor: Anchor::Start,
             rotation_deg: 0.0,
+            width_factor: 1.0,
         })
     }
 

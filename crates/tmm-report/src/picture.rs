@@ -794,6 +794,7 @@ fn text(sc: &mut Scene, at: Point, s: &str, size: f64, anchor: tmm_draw::Anchor,
         rich: r,
         anchor,
         rotation_deg: 0.0,
+        width_factor: 1.0,
     }
     .rotated(rot);
     let _ = sc.text(&layer, t);

@@ -535,10 +535,9 @@ fn organisation(project: &Project) -> String {
             .join(", ")
     };
     let full = join(&project.university);
-    // the room `tmm_draw::eskd::sheet` leaves in the cell: 0.6 mm and the slant's lean
+    // the rule `tmm_draw::eskd::sheet` fits the cell by (1 mm clear of its lines)
     let (w, h) = ORGANISATION_CELL_MM;
-    let room = w - 0.6 - TextHeight::H3_5.mm() * tmm_draw::svg::SLANT_DEG.to_radians().tan();
-    let (_, _, cut) = tmm_draw::eskd::fit(&full, TextHeight::H3_5, room, h - 0.6);
+    let (_, _, cut) = tmm_draw::eskd::fit(&full, TextHeight::H3_5, w, h);
     let u = project.university.trim();
     match (cut, u.strip_suffix(')').and_then(|v| v.rsplit_once('('))) {
         (Some(_), Some((_, index))) if !index.trim().is_empty() => join(index.trim()),
