@@ -214,14 +214,14 @@ impl Svg {
             }
             Geom::Polyline { points, closed } => {
                 let tag = if *closed { "polygon" } else { "polyline" };
-                let pts: Vec<String> = points
-                    .iter()
-                    .map(|&q| {
-                        let (x, y) = self.p(q);
-                        format!("{x},{y}")
-                    })
-                    .collect();
-                let _ = writeln!(self.out, "<{tag} class=\"{layer}\" points=\"{}\"{attrs}/>", pts.join(" "));
+                // the points written straight into the text, no string each
+                let _ = write!(self.out, "<{tag} class=\"{layer}\" points=\"");
+                for (i, &q) in points.iter().enumerate() {
+                    let (x, y) = self.p(q);
+                    let sep = if i == 0 { "" } else { " " };
+                    let _ = write!(self.out, "{sep}{x},{y}");
+                }
+                let _ = writeln!(self.out, "\"{attrs}/>");
             }
             Geom::Circle { center, radius } => {
                 let (x, y) = self.p(*center);
