@@ -59,16 +59,23 @@ pub const TEXT_FONT: &str = "gost_bu.ttf";
 /// The font file of the "Standard" style: the open osifont.
 pub const FALLBACK_FONT: &str = "osifont.ttf";
 
-/// A number for DXF: six decimals at most, no trailing zeros, no "-0".
-fn num(v: f64) -> String {
-    let mut s = crate::fixed::Fixed(v, 6).to_string();
-    while s.ends_with('0') {
-        s.pop();
+/// A number for DXF written at the end of `out`: six decimals at most, no
+/// trailing zeros, no "-0" (a drawing writes hundreds of thousands of
+/// them: no string each).
+fn num_into(out: &mut String, v: f64) {
+    let start = out.len();
+    let _ = write!(out, "{}", crate::fixed::Fixed(v, 6));
+    // six decimals always write a point, so the zeros end at it
+    while out.ends_with('0') {
+        out.pop();
     }
-    if s.ends_with('.') {
-        s.push('0');
+    if out.ends_with('.') {
+        out.push('0');
     }
-    if s == "-0.0" { "0.0".to_string() } else { s }
+    if &out[start..] == "-0.0" {
+        out.truncate(start);
+        out.push_str("0.0");
+    }
 }
 
 struct Out {
@@ -82,6 +89,12 @@ impl Out {
     /// letter), so MTEXT's stacking `^` and line breaks survive reading.
     fn pair(&mut self, code: i32, v: &str) {
         let _ = writeln!(self.s, "{code:>3}");
+        if v.bytes().all(|b| b >= 0x20 && b != b'^') {
+            // nothing to escape (every number, most names): as it is
+            self.s.push_str(v);
+            self.s.push('\n');
+            return;
+        }
         for c in v.chars() {
             match c {
                 '^' => self.s.push_str("^ "),
@@ -96,7 +109,10 @@ impl Out {
     }
     fn f(&mut self, code: i32, v: f64) {
         let v = if v.is_finite() { v } else { 0.0 };
-        self.pair(code, &num(v));
+        // a number has nothing to escape: written straight in
+        let _ = writeln!(self.s, "{code:>3}");
+        num_into(&mut self.s, v);
+        self.s.push('\n');
     }
     fn i(&mut self, code: i32, v: i64) {
         self.pair(code, &v.to_string());

@@ -38,16 +38,28 @@ pub const CAP_EM: f64 = 0.645;
 
 /// A number for SVG: at most three decimals, no trailing zeros, no "-0".
 pub fn num(v: f64) -> String {
-    let mut s = crate::fixed::Fixed(v, 3).to_string();
-    if s.contains('.') {
-        while s.ends_with('0') {
-            s.pop();
+    let mut s = String::new();
+    num_into(&mut s, v);
+    s
+}
+
+/// [`num`] written at the end of `out`, for the many numbers of a
+/// polyline (no string each).
+fn num_into(out: &mut String, v: f64) {
+    let start = out.len();
+    let _ = write!(out, "{}", crate::fixed::Fixed(v, 3));
+    if out[start..].contains('.') {
+        while out.ends_with('0') {
+            out.pop();
         }
-        if s.ends_with('.') {
-            s.pop();
+        if out.ends_with('.') {
+            out.pop();
         }
     }
-    if s == "-0" { "0".to_string() } else { s }
+    if &out[start..] == "-0" {
+        out.truncate(start);
+        out.push('0');
+    }
 }
 
 /// The family of tmm's supplement to osifont (`tmm GOST supplement`, drawn
@@ -214,14 +226,19 @@ impl Svg {
             }
             Geom::Polyline { points, closed } => {
                 let tag = if *closed { "polygon" } else { "polyline" };
-                let pts: Vec<String> = points
-                    .iter()
-                    .map(|&q| {
-                        let (x, y) = self.p(q);
-                        format!("{x},{y}")
-                    })
-                    .collect();
-                let _ = writeln!(self.out, "<{tag} class=\"{layer}\" points=\"{}\"{attrs}/>", pts.join(" "));
+                // the points written straight into the text, no string each
+                let _ = write!(self.out, "<{tag} class=\"{layer}\" points=\"");
+                let h = self.h;
+                for (i, q) in points.iter().enumerate() {
+                    if i > 0 {
+                        self.out.push(' ');
+                    }
+                    // as `p`: x, then y from the top
+                    num_into(&mut self.out, q.x);
+                    self.out.push(',');
+                    num_into(&mut self.out, h - q.y);
+                }
+                let _ = writeln!(self.out, "\"{attrs}/>");
             }
             Geom::Circle { center, radius } => {
                 let (x, y) = self.p(*center);

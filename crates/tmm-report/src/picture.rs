@@ -401,14 +401,15 @@ fn write_element(s: &mut String, e: &Element, prefix: &str) {
             );
         }
         Element::Poly { points, style, closed } => {
-            let d: Vec<String> = points.iter().map(|p| format!("{},{}", f3(p.0), f3(p.1))).collect();
             let tag = if *closed { "polygon" } else { "polyline" };
-            let _ = writeln!(
-                s,
-                "<{tag} points=\"{}\" {} stroke-linejoin=\"round\"/>",
-                d.join(" "),
-                style_attr(style)
-            );
+            // the points written straight into the text: a plot has
+            // thousands, and a string for each was most of the drawing's cost
+            let _ = write!(s, "<{tag} points=\"");
+            for (i, p) in points.iter().enumerate() {
+                let sep = if i == 0 { "" } else { " " };
+                let _ = write!(s, "{sep}{},{}", f3(p.0), f3(p.1));
+            }
+            let _ = writeln!(s, "\" {} stroke-linejoin=\"round\"/>", style_attr(style));
         }
         Element::Circle { c, r, style } => {
             let _ = writeln!(
