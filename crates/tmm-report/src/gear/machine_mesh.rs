@@ -240,16 +240,12 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     let (y0p, y1p) = (py(0.0), py(y_ref));
     // the lines' names at their right ends, each on its side of the pair
     let rx = cv.to_paper(wx1, 0.0).0 - 1.0;
-    let (above, below) = if y_ref <= 0.0 {
-        (y0p - 1.0, y1p + 3.2)
-    } else {
-        (y1p - 1.0, y0p + 3.2)
-    };
     let (top_name, top_color, low_name, low_color) = if y_ref <= 0.0 {
         ("gear.machine_pitch_line", RED, "gear.rack_reference_line", "#000")
     } else {
         ("gear.rack_reference_line", "#000", "gear.machine_pitch_line", RED)
     };
+    let (above, below) = name_baselines(y0p.min(y1p), y0p.max(y1p), word(lang, top_name), word(lang, low_name));
     cv.text_paper((rx, above), word(lang, top_name), H_LABEL - 1.0, Anchor::End, top_color);
     cv.text_paper((rx, below), word(lang, low_name), H_LABEL - 1.0, Anchor::End, low_color);
     let xm_text = format!("x·m = {} {}", num(x * m, 3, lang), word(lang, "gear.mm"));
@@ -291,4 +287,32 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     cv.label((0.0, 0.0), "P", H_LABEL, RED);
     cv.label(n_pt, "N", H_LABEL, RED);
     cv.finish()
+}
+
+/// The baselines (paper mm, y down) of the names of the two lines of the
+/// machine meshing, one over the upper line at `upper` and one under the
+/// lower at `lower`, each with its printed ink ([`tmm_draw::face::ink`]:
+/// descenders under the upper name, capitals over the lower) 1 mm clear of
+/// its line, so no letter touches the line it names.
+fn name_baselines(upper: f64, lower: f64, top: &str, low: &str) -> (f64, f64) {
+    let h = tmm_draw::TextHeight::at_most(H_LABEL - 1.0).unwrap_or(tmm_draw::TextHeight::H2_5);
+    let (a, b) = (tmm_draw::face::ink(top, h), tmm_draw::face::ink(low, h));
+    (upper - 1.0 - a.below, lower + 1.0 + b.above)
+}
+
+#[cfg(test)]
+mod tests {
+    /// The names clear their lines by 1 mm: "станочно-начальная прямая"
+    /// has descenders (р, у: about 0.8 mm at 2.5 mm), "делительная прямая
+    /// инструмента" letters over 2 mm high at print size.
+    #[test]
+    fn the_line_names_keep_clear_of_their_lines() {
+        let (top, low) = ("станочно-начальная прямая", "делительная прямая инструмента");
+        let (a, b) = super::name_baselines(100.0, 102.0, top, low);
+        let h = tmm_draw::TextHeight::H2_5;
+        let (ka, kb) = (tmm_draw::face::ink(top, h), tmm_draw::face::ink(low, h));
+        // the upper name's feet over the upper line, the lower name's tops under the lower
+        assert!(100.0 - (a + ka.below) >= 1.0 - 1e-9 && ka.below > 0.5);
+        assert!((b - kb.above) - 102.0 >= 1.0 - 1e-9 && kb.above > 2.0);
+    }
 }

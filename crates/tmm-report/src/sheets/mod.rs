@@ -548,8 +548,8 @@ fn organisation(project: &Project) -> String {
 /// The organisation's cell (graph 9) of title block form 1, mm.
 const ORGANISATION_CELL_MM: (f64, f64) = (50.0, 15.0);
 
-/// The title block's words and fields of a sheet.
-fn title_block_of(sheet: &Sheet, project: &Project, count: usize) -> tmm_draw::eskd::TitleBlock {
+/// The title block's words and fields of a sheet (`count` sheets in the set).
+pub fn title_block_of(sheet: &Sheet, project: &Project, count: usize) -> tmm_draw::eskd::TitleBlock {
     let lang = project.lang;
     let w = |k: &str| word(lang, k).to_string();
     let five = |k: [&str; 5]| k.map(w);

@@ -539,3 +539,67 @@ fn the_organisation_wraps_inside_its_cell() {
         assert!(!all.contains("автомобильно-дорожный"), "{path}: the long name does not fit: {all}");
     }
 }
+
+/// Every title block of the default project, seed 003 and the synthesised
+/// seed-003 six-bar, in ru, uk and en, as `sheet_documents` draws it: no
+/// field cut, every text at 2.5 mm or more with its printed ink
+/// (`tmm_draw::eskd::clearances`) 1 mm from the edges of the lines beside
+/// it and above and below it; in a 5 mm row centred between its lines and
+/// off them; the changes' row captions and the letter cell 0.5 mm from
+/// the sides; no two texts overlapping.
+#[test]
+fn title_blocks_keep_their_texts_clear_of_the_lines() {
+    use tmm_draw::eskd::{CLEAR_MM, FORM_CLEAR_MM, TIGHT_MM, clearances, sheet};
+    let all = tasks();
+    let picked: Vec<_> = all
+        .iter()
+        .filter(|(n, _)| ["default", "seed-003-sixbar.toml", "synth-seed-003-six-bar.toml"].contains(&n.as_str()))
+        .collect();
+    assert_eq!(picked.len(), 3);
+    for (name, src) in picked {
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let run = run_task_in(&TaskSource::new(name, src), Some(lang)).unwrap();
+            let sheets = tmm_report::sheets::layout_sheets(&run.docs, &run.project);
+            assert!(!sheets.is_empty(), "{name}");
+            let format = match run.project.sheet {
+                SheetFormat::A2 => tmm_draw::eskd::Format::A2,
+                _ => tmm_draw::eskd::Format::A1,
+            };
+            for s in &sheets {
+                let what = format!("{name} {} sheet {}", lang.code(), s.number);
+                let tb = tmm_report::sheets::title_block_of(s, &run.project, sheets.len());
+                let (scene, cut) = sheet(format, &tb).unwrap();
+                assert!(cut.is_empty(), "{what}: cut {cut:?}");
+                let c = clearances(&scene);
+                assert!(c.len() > 20, "{what}: {c:?}");
+                // the form's left part ends 65 mm from the block's left
+                let left_part = scene.width - 5.0 - 185.0 + 65.0;
+                for t in &c {
+                    assert!(t.height >= 2.5, "{what}: {t:?}");
+                    let form_row = t.cell.1 <= 5.0 + 1e-6 && t.ink.2 < left_part && t.ink.1 > 35.0 && t.ink.3 < 40.0;
+                    let sides = if form_row || t.cell.0 <= 10.0 + 1e-6 {
+                        FORM_CLEAR_MM
+                    } else {
+                        CLEAR_MM
+                    };
+                    assert!(t.sides >= sides - 1e-6, "{what}: {:?} {:.2} mm from a side line", t.text, t.sides);
+                    if t.cell.1 > 5.0 + 1e-6 {
+                        assert!(t.above.min(t.below) >= CLEAR_MM - 1e-6, "{what}: {:?} {t:?}", t.text);
+                    } else {
+                        assert!(t.above.min(t.below) >= TIGHT_MM - 1e-6, "{what}: {t:?}");
+                        assert!((t.above - t.below).abs() < 1e-6, "{what}: {t:?}");
+                    }
+                }
+                for (i, a) in c.iter().enumerate() {
+                    for b in &c[i + 1..] {
+                        let apart = a.ink.2 <= b.ink.0 || b.ink.2 <= a.ink.0 || a.ink.3 <= b.ink.1 || b.ink.3 <= a.ink.1;
+                        assert!(apart, "{what}: {:?} and {:?} overlap", a.text, b.text);
+                    }
+                }
+                // the scale field is filled: a scale or the dash of a sheet without one
+                assert!(!tb.scale.trim().is_empty(), "{what}");
+                assert!(c.iter().any(|t| t.text == tb.scale), "{what}: no scale {:?}", tb.scale);
+            }
+        }
+    }
+}
