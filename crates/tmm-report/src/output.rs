@@ -316,11 +316,7 @@ pub fn check_finite_in(d: &Document, excused: &[String]) -> Result<(), Error> {
 /// word that is not part of the user's text `excused`.
 #[doc(hidden)]
 pub fn find_nonfinite_in(text: &str, excused: &[String]) -> Option<usize> {
-    // the markers start with a rare byte: look for it, then compare
-    let b = text.as_bytes();
-    let marker = (0..b.len()).find(|&i| {
-        matches!(b[i], 1 | b'\\') && (b[i..].starts_with(NONFINITE.as_bytes()) || b[i..].starts_with(NONFINITE_JSON.as_bytes()))
-    });
+    let marker = [NONFINITE, NONFINITE_JSON].iter().filter_map(|m| text.find(m)).min();
     let mut from = 0;
     let mut word = None;
     while let Some(i) = find_nonfinite_word(&text[from..]) {
@@ -370,18 +366,22 @@ fn word_end(text: &str, s: usize) -> usize {
 /// Byte offset of the first `NaN`, `inf` or `Infinity` that stands as a word.
 #[doc(hidden)]
 pub fn find_nonfinite_word(text: &str) -> Option<usize> {
-    // One pass over the bytes (a run's texts are megabytes, and a search
-    // per word was a visible share of the run): the first place where one
-    // of the words starts with no word character on either side. The
-    // words are ASCII, so a match starts and ends on a char boundary.
     let b = text.as_bytes();
     let is_word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
-    (0..b.len()).find(|&s| {
-        matches!(b[s], b'N' | b'i' | b'I')
-            && (s == 0 || !is_word(b[s - 1]))
-            && [&b"NaN"[..], b"inf", b"Infinity"].iter().any(|w| {
-                let e = s + w.len();
-                b[s..].starts_with(w) && (e >= b.len() || !is_word(b[e]))
-            })
-    })
+    let mut best: Option<usize> = None;
+    for word in ["NaN", "inf", "Infinity"] {
+        let mut from = 0;
+        while let Some(i) = text[from..].find(word) {
+            let s = from + i;
+            let e = s + word.len();
+            let before = s == 0 || !is_word(b[s - 1]);
+            let after = e >= b.len() || !is_word(b[e]);
+            if before && after {
+                best = Some(best.map_or(s, |x| x.min(s)));
+                break;
+            }
+            from = e;
+        }
+    }
+    best
 }
