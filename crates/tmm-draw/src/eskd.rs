@@ -7,10 +7,14 @@
 //! Every text of the title block is fitted to its cell at a GOST 2.304
 //! size: the largest size not above the cell's own (7 mm for the
 //! designation, 5 for the name and the scale, 3.5 for the organisation,
-//! 2.5 for captions) at which the text, wrapped at spaces, fits the cell's
-//! width and height with lines 1.7 h apart (type B's line step, GOST 2.304
-//! table 2). Nothing is narrowed: a text that does not fit at 2.5 mm keeps
-//! the lines that fit, the last ending with "…", and is reported.
+//! 2.5 for captions) at which the text, wrapped at spaces with lines 1.7 h
+//! apart (type B's line step, GOST 2.304 table 2), keeps its printed ink
+//! ([`crate::face::ink`]) [`CLEAR_MM`] from the edges of the cell's lines
+//! ([`fit`] tells where a cell cannot, and what is kept there). No field
+//! is narrowed: a text that does not fit at 2.5 mm keeps the lines that
+//! fit, the last ending with "…", and is reported; only the form's own
+//! captions of its changes' row are narrowed, where type B cannot keep
+//! [`FORM_CLEAR_MM`] in the form's 7 mm column.
 
 use kurbo::Point;
 
