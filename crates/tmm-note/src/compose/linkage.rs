@@ -104,7 +104,7 @@ fn where_velocity(cx: &Ctx) -> Result<Block, NoteError> {
     let Some((_, pin, _)) = crank(cx).filter(|(_, pin, _)| pin != "B") else {
         return Ok(Block::Paragraph(crate::model::Text::plain(line)));
     };
-    let pin_speed = cx.fill("lk_where_pin", &[pin.clone()])?;
+    let pin_speed = cx.fill("lk_where_pin", std::slice::from_ref(&pin))?;
     Ok(Block::Paragraph(crate::model::Text::plain(format!(
         "{}; {MATH_OPEN}v_({}){MATH_CLOSE} {pin_speed}.",
         line.trim_end_matches('.'),

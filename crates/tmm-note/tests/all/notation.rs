@@ -72,8 +72,7 @@ fn flat_greek(text: &str) -> Vec<String> {
         let next = chars.get(i + 1).copied();
         let greek = ('α'..='ω').contains(&c) || matches!(c, 'ϑ' | 'ϕ');
         let flat = after_gap
-            && (greek && next.is_some_and(plain_alnum)
-                || greek && next.is_none_or(|n| !n.is_alphanumeric())
+            && (greek && (next.is_some_and(plain_alnum) || next.is_none_or(|n| !n.is_alphanumeric()))
                 || c == 'Δ' && next.is_some_and(plain_alnum));
         if flat {
             out.push(chars[i.saturating_sub(6)..(i + 7).min(chars.len())].iter().collect());
