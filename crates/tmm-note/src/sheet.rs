@@ -80,6 +80,23 @@ pub fn svg_size_mm(svg: &str) -> Result<(f64, f64), NoteError> {
     Ok((side("width")?, side("height")?))
 }
 
+/// The language of a sheet: the root `<svg>`'s `xml:lang`, when it is an
+/// ISO 639 code (two or three lowercase letters), so the PDF declares the
+/// sheet's language (its `/Lang`), not typst's default English.
+///
+/// ```
+/// use tmm_note::sheet::svg_lang;
+/// assert_eq!(svg_lang(r#"<svg xml:lang="uk" width="1mm">"#), Some("uk"));
+/// assert_eq!(svg_lang(r#"<svg width="1mm">"#), None);
+/// assert_eq!(svg_lang(r#"<svg xml:lang="ru&quot;)">"#), None);
+/// ```
+pub fn svg_lang(svg: &str) -> Option<&str> {
+    let start = svg.find("<svg")?;
+    let tag = &svg[start..];
+    let tag = &tag[..tag.find('>').unwrap_or(tag.len())];
+    attribute(tag, "xml:lang").filter(|l| (2..=3).contains(&l.len()) && l.bytes().all(|b| b.is_ascii_lowercase()))
+}
+
 /// Typesets one sheet: a page of the SVG's own size with the SVG on it.
 ///
 /// ```no_run
@@ -94,8 +111,9 @@ pub fn svg_size_mm(svg: &str) -> Result<(f64, f64), NoteError> {
 /// the export fails.
 pub fn sheet_pdf(svg: &str) -> Result<Vec<u8>, NoteError> {
     let (w, h) = svg_size_mm(svg)?;
+    let lang = svg_lang(svg).map_or(String::new(), |l| format!(", lang: \"{l}\""));
     let main = format!(
-        "#set page(width: {w}mm, height: {h}mm, margin: 0pt)\n#set text(font: \"New Computer Modern\")\n#image(\"/sheet.svg\", width: {w}mm, height: {h}mm)\n"
+        "#set page(width: {w}mm, height: {h}mm, margin: 0pt)\n#set text(font: \"New Computer Modern\"{lang})\n#image(\"/sheet.svg\", width: {w}mm, height: {h}mm)\n"
     );
     let world = NoteWorld::new(main, vec![("/sheet.svg".into(), svg.to_string())])?;
     let result = typst::compile::<typst_layout::PagedDocument>(&world);

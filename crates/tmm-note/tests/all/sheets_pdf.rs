@@ -8,7 +8,8 @@
 //! every matrix, so it is measured on the paper, independently of the
 //! sizes the drawing code asks for.
 
-use tmm_report::run::run_task;
+use tmm_report::TaskSource;
+use tmm_report::run::{DEFAULT_TASK, run_task};
 
 use super::fixtures::task;
 use super::pdf_read::read;
@@ -87,4 +88,33 @@ fn gear_and_planetary_examples_sheets_letter_at_2_5_mm_or_more() {
 #[test]
 fn cam_and_cylinder_examples_sheets_letter_at_2_5_mm_or_more() {
     check(&["cam-oscillating-roller.toml", "textbook/p5-pneumatic-cylinder.toml"]);
+}
+
+/// Every sheet's PDF declares the project's language (`/Lang` in its
+/// catalog, read by screen readers and by a PDF viewer's hyphenation and
+/// search), not typst's default English: Russian by default, Ukrainian
+/// when `[project] lang = "uk"`.
+#[test]
+fn sheets_declare_the_projects_language() {
+    let uk = DEFAULT_TASK.replacen("[project]\n", "[project]\nlang = \"uk\"\n", 1);
+    assert_ne!(uk, DEFAULT_TASK, "the default task has a [project] table");
+    for (text, code) in [(DEFAULT_TASK.to_string(), "ru"), (uk, "uk")] {
+        let run = run_task(&TaskSource::new("default.toml", text)).expect("the task runs");
+        let mut n = 0;
+        for d in run
+            .docs
+            .iter()
+            .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
+        {
+            let pdf = tmm_note::sheet_pdf(d.as_text().expect("a sheet is text")).expect("the sheet typesets");
+            let want = format!("/Lang({code})");
+            assert!(
+                pdf.windows(want.len()).any(|w| w == want.as_bytes()),
+                "{}: the PDF does not declare {want}",
+                d.path
+            );
+            n += 1;
+        }
+        assert!(n >= 4, "{code}: four sheets at least, got {n}");
+    }
 }

@@ -47,6 +47,19 @@ const X_TICKS: f64 = 4.2;
 const RIGHT: f64 = 62.0;
 /// The legend column's start right of the frame, mm.
 const LEGEND_X: f64 = 13.0;
+/// The gap between a level's dashed line and the ink of its name, mm.
+const LEVEL_CLEAR: f64 = 1.0;
+
+/// The ink of a level's name (`ω_{max}`, `T_{I min}`) about its baseline,
+/// mm: the capitals' height over it and the index's foot under it. The
+/// printed capital of osifont at letter size h is 1.14 h (measured on the
+/// PDF, `tmm_draw::face`), taken as 1.15 h; the index stands 0.25 h under
+/// the baseline ([`crate::svg::rich`]) and its letters have no descenders.
+fn level_name_ink() -> (f64, f64) {
+    let h = crate::picture::em(H_SMALL);
+    (1.15 * h, 0.25 * h)
+}
+
 /// The grid step on paper, mm: the ticks stand at whole multiples of 10·μ.
 const GRID: f64 = 10.0;
 
@@ -360,22 +373,34 @@ impl Chart {
         let (x1, _) = self.corner();
         let (_, py) = self.map(self.x.lo, v);
         self.c.line_paper((self.fx, py), (x1, py), s);
-        // the name inside the frame at its right end, over the line (the
-        // legend's column right of the frame has no room for it at the
-        // printed size), one printed line clear of the names above
-        let step = (1.2 * crate::picture::em(H_SMALL)).max(3.2);
-        let mut at = py - 0.8;
+        let at = self.level_name_baseline(py);
+        self.levels.push(at);
+        self.c.rich_paper((x1 - 1.0, at), name, H_SMALL, Anchor::End, color);
+        self.legend_entry(&format!("{name} = {value}"), s);
+    }
+
+    /// The baseline of a level's name at the frame's right end (the
+    /// legend's column right of the frame has no room for it at the printed
+    /// size): its index's foot [`LEVEL_CLEAR`] over the level's line at `py`,
+    /// or, where the frame's top leaves no room above, its letters' tops
+    /// as far under it; then moved down a printed line at a time clear of
+    /// the names already written, and kept inside the frame.
+    fn level_name_baseline(&self, py: f64) -> f64 {
+        let (cap, drop) = level_name_ink();
+        let (_, y1) = self.corner();
+        let over = py - LEVEL_CLEAR - drop;
+        let mut at = if over - cap >= self.fy + 0.3 {
+            over
+        } else {
+            py + LEVEL_CLEAR + cap
+        };
+        let step = cap + drop + 0.8;
         for l in &self.levels {
             if (at - l).abs() < step {
                 at = l + step;
             }
         }
-        // under the frame's top and above its bottom
-        let (_, y1) = self.corner();
-        at = at.clamp(self.fy + 0.85 * crate::picture::em(H_SMALL) + 0.5, y1 - 0.5);
-        self.levels.push(at);
-        self.c.rich_paper((x1 - 1.0, at), name, H_SMALL, Anchor::End, color);
-        self.legend_entry(&format!("{name} = {value}"), s);
+        at.min(y1 - drop - 0.3)
     }
 
     /// A dot at a data point with its label put clear of the other text.
@@ -601,4 +626,51 @@ fn clip(k: f64, b: f64, bx: (f64, f64, f64, f64)) -> Option<((f64, f64), (f64, f
         return None;
     }
     (lo < hi).then_some(((lo, k * lo + b), (hi, k * hi + b)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The names of the ω diagram's levels keep [`LEVEL_CLEAR`] between
+    /// their ink and every level's line — the highest at the frame's top,
+    /// where there is no room above it — and apart from each other.
+    #[test]
+    fn level_names_keep_clear_of_the_lines() {
+        let xr = (0.0, 360.0);
+        let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
+        let levels = [95.1903, 94.2478, 93.3053];
+        let mut ch = Chart::new(
+            Language::Ru,
+            SheetFormat::A1,
+            Slot::Diagram,
+            "ω",
+            ("ω_1", "rad/s"),
+            (93.3053, 95.1903),
+            false,
+            phi,
+            xr,
+        );
+        for (v, n) in levels.iter().zip(["ω_{max}", "ω_m", "ω_{min}"]) {
+            ch.level(*v, RED, n, "");
+        }
+        let (cap, drop) = level_name_ink();
+        let lines: Vec<f64> = levels.iter().map(|v| ch.map(0.0, *v).1).collect();
+        assert_eq!(ch.levels.len(), 3);
+        for (i, at) in ch.levels.iter().enumerate() {
+            let (top, foot) = (at - cap, at + drop);
+            assert!(top >= ch.fy && foot <= ch.corner().1, "name {i} inside the frame");
+            for (j, y) in lines.iter().enumerate() {
+                assert!(
+                    foot <= y - LEVEL_CLEAR + 1e-9 || top >= y + LEVEL_CLEAR - 1e-9,
+                    "name {i} (ink {top:.2}…{foot:.2} mm) within {LEVEL_CLEAR} mm of line {j} at {y:.2} mm"
+                );
+            }
+            for other in &ch.levels[..i] {
+                assert!((at - other).abs() >= cap + drop, "names overlap");
+            }
+        }
+        // the highest level lies on the frame's top: its name hangs under it
+        assert!(ch.levels[0] > lines[0]);
+    }
 }

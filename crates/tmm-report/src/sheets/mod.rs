@@ -629,7 +629,8 @@ fn sheet_parts(sheet: &Sheet, ds: &[Drawing], project: &Project, count: usize) -
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\" data-format=\"{}\" data-sheet=\"{}\">",
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\" xml:lang=\"{}\" data-format=\"{}\" data-sheet=\"{}\">",
+        project.lang.code(),
         project.sheet.name(),
         sheet.number
     );
