@@ -96,8 +96,8 @@ fn cam_and_cylinder_examples_sheets_letter_at_2_5_mm_or_more() {
 /// when `[project] lang = "uk"`.
 #[test]
 fn sheets_declare_the_projects_language() {
-    let uk = DEFAULT_TASK.replacen("[project]\n", "[project]\nlang = \"uk\"\n", 1);
-    assert_ne!(uk, DEFAULT_TASK, "the default task has a [project] table");
+    let uk = DEFAULT_TASK.replacen("\nlang = \"ru\"\n", "\nlang = \"uk\"\n", 1);
+    assert_ne!(uk, DEFAULT_TASK, "the default task is in Russian");
     for (text, code) in [(DEFAULT_TASK.to_string(), "ru"), (uk, "uk")] {
         let run = run_task(&TaskSource::new("default.toml", text)).expect("the task runs");
         let mut n = 0;
