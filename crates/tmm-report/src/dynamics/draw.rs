@@ -13,7 +13,8 @@
 use tmm_linkage::dynamics::Dynamics;
 
 pub(crate) mod cylinder;
-mod indicator;
+#[doc(hidden)]
+pub mod indicator;
 pub(crate) mod stroke;
 
 use crate::Error;
@@ -48,14 +49,16 @@ const RIGHT: f64 = 62.0;
 /// The legend column's start right of the frame, mm.
 const LEGEND_X: f64 = 13.0;
 /// The gap between a level's dashed line and the ink of its name, mm.
-const LEVEL_CLEAR: f64 = 1.0;
+#[doc(hidden)]
+pub const LEVEL_CLEAR: f64 = 1.0;
 
 /// The ink of a level's name (`ω_{max}`, `T_{I min}`) about its baseline,
 /// mm: the capitals' height over it and the index's foot under it. The
 /// printed capital of osifont at letter size h is 1.14 h (measured on the
 /// PDF, `tmm_draw::face`), taken as 1.15 h; the index stands 0.25 h under
 /// the baseline ([`crate::svg::rich`]) and its letters have no descenders.
-fn level_name_ink() -> (f64, f64) {
+#[doc(hidden)]
+pub fn level_name_ink() -> (f64, f64) {
     let h = crate::picture::em(H_SMALL);
     (1.15 * h, 0.25 * h)
 }
@@ -269,7 +272,8 @@ impl Chart {
     }
 
     /// Data to paper (mm, y down).
-    fn map(&self, x: f64, y: f64) -> (f64, f64) {
+    #[doc(hidden)]
+    pub fn map(&self, x: f64, y: f64) -> (f64, f64) {
         (
             self.fx + (x - self.x.lo) / self.x.mu,
             self.fy + self.y.len - (y - self.y.lo) / self.y.mu,
@@ -277,7 +281,8 @@ impl Chart {
     }
 
     /// The frame's right edge and bottom, paper mm.
-    fn corner(&self) -> (f64, f64) {
+    #[doc(hidden)]
+    pub fn corner(&self) -> (f64, f64) {
         (self.fx + self.x.len, self.fy + self.y.len)
     }
 
@@ -363,7 +368,8 @@ impl Chart {
     /// A dashed level across the frame, its name right of the frame at its
     /// height (moved down clear of the names above it) and its value in
     /// the legend.
-    fn level(&mut self, v: f64, color: &'static str, name: &str, value: &str) {
+    #[doc(hidden)]
+    pub fn level(&mut self, v: f64, color: &'static str, name: &str, value: &str) {
         let s = Style {
             width: 0.35,
             color,
@@ -626,51 +632,4 @@ fn clip(k: f64, b: f64, bx: (f64, f64, f64, f64)) -> Option<((f64, f64), (f64, f
         return None;
     }
     (lo < hi).then_some(((lo, k * lo + b), (hi, k * hi + b)))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The names of the ω diagram's levels keep [`LEVEL_CLEAR`] between
-    /// their ink and every level's line — the highest at the frame's top,
-    /// where there is no room above it — and apart from each other.
-    #[test]
-    fn level_names_keep_clear_of_the_lines() {
-        let xr = (0.0, 360.0);
-        let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
-        let levels = [95.1903, 94.2478, 93.3053];
-        let mut ch = Chart::new(
-            Language::Ru,
-            SheetFormat::A1,
-            Slot::Diagram,
-            "ω",
-            ("ω_1", "rad/s"),
-            (93.3053, 95.1903),
-            false,
-            phi,
-            xr,
-        );
-        for (v, n) in levels.iter().zip(["ω_{max}", "ω_m", "ω_{min}"]) {
-            ch.level(*v, RED, n, "");
-        }
-        let (cap, drop) = level_name_ink();
-        let lines: Vec<f64> = levels.iter().map(|v| ch.map(0.0, *v).1).collect();
-        assert_eq!(ch.levels.len(), 3);
-        for (i, at) in ch.levels.iter().enumerate() {
-            let (top, foot) = (at - cap, at + drop);
-            assert!(top >= ch.fy && foot <= ch.corner().1, "name {i} inside the frame");
-            for (j, y) in lines.iter().enumerate() {
-                assert!(
-                    foot <= y - LEVEL_CLEAR + 1e-9 || top >= y + LEVEL_CLEAR - 1e-9,
-                    "name {i} (ink {top:.2}…{foot:.2} mm) within {LEVEL_CLEAR} mm of line {j} at {y:.2} mm"
-                );
-            }
-            for other in &ch.levels[..i] {
-                assert!((at - other).abs() >= cap + drop, "names overlap");
-            }
-        }
-        // the highest level lies on the frame's top: its name hangs under it
-        assert!(ch.levels[0] > lines[0]);
-    }
 }

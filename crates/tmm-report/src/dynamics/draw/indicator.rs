@@ -60,7 +60,8 @@ fn travel_m(scale: TravelScale, x: f64, h: f64) -> f64 {
 
 /// The tables in the order the cylinder's processes first use them, each
 /// with the spans of the machine's cycle (degrees) where it holds.
-fn tables_in_order(ind: &Indicator) -> Vec<(usize, Vec<(f64, f64)>)> {
+#[doc(hidden)]
+pub fn tables_in_order(ind: &Indicator) -> Vec<(usize, Vec<(f64, f64)>)> {
     let mut out: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();
     for p in &ind.processes {
         let span = (p.from.to_degrees(), p.to.to_degrees());
@@ -161,49 +162,4 @@ fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: S
     }
     ch.note(&format!("H = {} {}", num(h, 4, lang), wd("unit_m")));
     ch.finish()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use tmm_linkage::forces::{Curve, Interpolation, Process};
-
-    /// A table wrapping the cycle's end is one span across it, listed
-    /// where the cylinder first enters it.
-    #[test]
-    fn a_wrapped_process_is_one_span() {
-        let t = |v: &[(f64, f64)]| Curve::new(v, Interpolation::Linear, "t").unwrap();
-        let deg = f64::to_radians;
-        let ind = Indicator {
-            tables: vec![t(&[(0.0, 1.0), (1.0, 2.0)]), t(&[(0.0, 3.0), (1.0, 4.0)])],
-            names: vec!["a".into(), "b".into()],
-            travel: TravelScale::Stroke,
-            pressure_scale: 1.0,
-            processes: vec![
-                Process {
-                    name: "b".into(),
-                    from: 0.0,
-                    to: deg(90.0),
-                    table: 1,
-                },
-                Process {
-                    name: "a".into(),
-                    from: deg(90.0),
-                    to: deg(270.0),
-                    table: 0,
-                },
-                Process {
-                    name: "b".into(),
-                    from: deg(270.0),
-                    to: deg(360.0),
-                    table: 1,
-                },
-            ],
-        };
-        let o = tables_in_order(&ind);
-        assert_eq!(o.len(), 2);
-        assert_eq!(o[0].0, 1);
-        assert_eq!(o[0].1.len(), 2);
-        assert!((o[1].1[0].0 - 90.0).abs() < 1e-9 && (o[1].1[0].1 - 270.0).abs() < 1e-9);
-    }
 }

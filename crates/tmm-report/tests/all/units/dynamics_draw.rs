@@ -43,3 +43,77 @@ fn axis_fits_at_a_round_mu() {
         assert!(ax.lo <= a && ax.lo + ax.len * ax.mu >= b - 1e-12 && ax.len <= room + 1e-9);
     }
 }
+
+/// The names of the ω diagram's levels keep `LEVEL_CLEAR` between their
+/// ink and every level's line — the highest near the frame's top, where
+/// there is no room above it — and apart from each other.
+#[test]
+fn level_names_keep_clear_of_the_lines() {
+    let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
+    let levels = [95.1903, 94.2478, 93.3053];
+    let mut ch = Chart::new(
+        Language::Ru,
+        SheetFormat::A1,
+        Slot::Diagram,
+        "ω",
+        ("ω_1", "rad/s"),
+        (93.3053, 95.1903),
+        false,
+        phi,
+        (0.0, 360.0),
+    );
+    for (v, n) in levels.iter().zip(["ω_{max}", "ω_m", "ω_{min}"]) {
+        ch.level(*v, "#c00000", n, "");
+    }
+    let (cap, drop) = level_name_ink();
+    let lines: Vec<f64> = levels.iter().map(|v| ch.map(0.0, *v).1).collect();
+    assert_eq!(ch.levels.len(), 3);
+    for (i, at) in ch.levels.iter().enumerate() {
+        let (top, foot) = (at - cap, at + drop);
+        assert!(top >= ch.fy && foot <= ch.corner().1, "name {i} inside the frame");
+        for (j, y) in lines.iter().enumerate() {
+            assert!(
+                foot <= y - LEVEL_CLEAR + 1e-9 || top >= y + LEVEL_CLEAR - 1e-9,
+                "name {i} (ink {top:.2}…{foot:.2} mm) within {LEVEL_CLEAR} mm of line {j} at {y:.2} mm"
+            );
+        }
+        for other in &ch.levels[..i] {
+            assert!((at - other).abs() >= cap + drop, "names overlap");
+        }
+    }
+    // ω_max lies 2.4 mm under the frame's top (95.25 at μ 0.025): too close
+    // for its name above it, so the name hangs under its line
+    assert!(ch.levels[0] > lines[0]);
+}
+
+/// An indicator table wrapping the cycle's end is one span across it,
+/// listed where the cylinder first enters it.
+#[test]
+fn a_wrapped_process_is_one_span() {
+    use tmm_linkage::forces::{Curve, Indicator, Interpolation, Process, TravelScale};
+    use tmm_report::dynamics::draw::indicator::tables_in_order;
+    let t = |v: &[(f64, f64)]| Curve::new(v, Interpolation::Linear, "t").unwrap();
+    let deg = f64::to_radians;
+    let process = |name: &str, from: f64, to: f64, table: usize| Process {
+        name: name.into(),
+        from: deg(from),
+        to: deg(to),
+        table,
+    };
+    let ind = Indicator {
+        tables: vec![t(&[(0.0, 1.0), (1.0, 2.0)]), t(&[(0.0, 3.0), (1.0, 4.0)])],
+        names: vec!["a".into(), "b".into()],
+        travel: TravelScale::Stroke,
+        pressure_scale: 1.0,
+        processes: vec![
+            process("b", 0.0, 90.0, 1),
+            process("a", 90.0, 270.0, 0),
+            process("b", 270.0, 360.0, 1),
+        ],
+    };
+    let o = tables_in_order(&ind);
+    assert_eq!(o.len(), 2);
+    assert_eq!(o[0].0, 1);
+    assert_eq!(o[0].1.len(), 2);
+    assert!((o[1].1[0].0 - 90.0).abs() < 1e-9 && (o[1].1[0].1 - 270.0).abs() < 1e-9);
+}

@@ -6,6 +6,7 @@ mod dynamics_draw;
 mod dynamics_json;
 mod dynamics_task;
 mod gear_mesh;
+mod gear_section;
 mod labels;
 mod message_numbers;
 mod output;
