@@ -8,6 +8,7 @@ mod dynamics_task;
 mod gear_mesh;
 mod gear_section;
 mod labels;
+mod library_tests;
 mod message_numbers;
 mod output;
 mod planetary;
