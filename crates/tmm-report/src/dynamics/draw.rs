@@ -137,8 +137,11 @@ pub struct Chart {
     pub fx: f64,
     pub fy: f64,
     pub legend: usize,
-    /// Paper y of the level names written right of the frame.
+    /// Paper y of the level names' baselines (at the frame's right end).
     pub levels: Vec<f64>,
+    /// Whether each level's name stands right of the frame (clear of every
+    /// line drawn in it) rather than inside it over or under its line.
+    pub levels_outside: Vec<bool>,
 }
 
 /// `a unit/mm`, the unit in brackets when it is a ratio.
@@ -219,6 +222,7 @@ impl Chart {
             fy,
             legend: 0,
             levels: Vec::new(),
+            levels_outside: Vec::new(),
         };
         // the grid (not kept as lines to avoid: the names sit on the frame)
         let (x1, y1) = (fx + x.len, fy + y.len);
@@ -379,15 +383,33 @@ impl Chart {
         let (x1, _) = self.corner();
         let (_, py) = self.map(self.x.lo, v);
         self.c.line_paper((self.fx, py), (x1, py), s);
-        let at = self.level_name_baseline(py);
+        let ink = tmm_draw::face::ink(&crate::labels::plain(name), tmm_draw::TextHeight::H2_5);
+        let (x, at, anchor) = match self.level_name_outside(py, &ink) {
+            Some(at) => (x1 + LEVEL_CLEAR - ink.left.min(0.0), at, Anchor::Start),
+            None => (x1 - 1.0, self.level_name_baseline(py), Anchor::End),
+        };
+        self.levels_outside.push(anchor == Anchor::Start);
         self.levels.push(at);
-        self.c.rich_paper((x1 - 1.0, at), name, H_SMALL, Anchor::End, color);
+        self.c.rich_paper((x, at), name, H_SMALL, anchor, color);
         self.legend_entry(&format!("{name} = {value}"), s);
     }
 
-    /// The baseline of a level's name at the frame's right end (the
-    /// legend's column right of the frame has no room for it at the printed
-    /// size): its index's foot [`LEVEL_CLEAR`] over the level's line at `py`,
+    /// The baseline of a level's name right of the frame, centred on its
+    /// line's height, where the name fits between the frame and the
+    /// legend's samples ([`LEGEND_X`]) with [`LEVEL_CLEAR`] on both sides and
+    /// keeps clear of the names already written: there it crosses no line
+    /// or curve of the diagram.
+    fn level_name_outside(&self, py: f64, ink: &tmm_draw::face::Ink) -> Option<f64> {
+        let (cap, drop) = level_name_ink();
+        let wide = ink.right - ink.left.min(0.0);
+        let at = py + 0.5 * (cap - drop);
+        let step = cap + drop + 0.8;
+        (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= 0.0 && self.levels.iter().all(|l| (at - l).abs() >= step)).then_some(at)
+    }
+
+    /// The baseline of a level's name inside the frame at its right end,
+    /// where the name is too long for the room right of the frame: its
+    /// index's foot [`LEVEL_CLEAR`] over the level's line at `py`,
     /// or, where the frame's top leaves no room above, its letters' tops
     /// as far under it; then moved down a printed line at a time clear of
     /// the names already written, and kept inside the frame.

@@ -68,8 +68,14 @@ fn level_names_keep_clear_of_the_lines() {
     let (cap, drop) = level_name_ink();
     let lines: Vec<f64> = levels.iter().map(|v| ch.map(0.0, *v).1).collect();
     assert_eq!(ch.levels.len(), 3);
+    assert_eq!(ch.levels_outside.len(), 3);
     for (i, at) in ch.levels.iter().enumerate() {
         let (top, foot) = (at - cap, at + drop);
+        if ch.levels_outside[i] {
+            // right of the frame, on its line's height: no line reaches there
+            assert!(top < lines[i] && foot > lines[i], "name {i} stands at its line's height");
+            continue;
+        }
         assert!(top >= ch.fy && foot <= ch.corner().1, "name {i} inside the frame");
         for (j, y) in lines.iter().enumerate() {
             assert!(
@@ -81,9 +87,34 @@ fn level_names_keep_clear_of_the_lines() {
             assert!((at - other).abs() >= cap + drop, "names overlap");
         }
     }
-    // ω_max lies 2.4 mm under the frame's top (95.25 at μ 0.025): too close
-    // for its name above it, so the name hangs under its line
-    assert!(ch.levels[0] > lines[0]);
+    // the short names fit right of the frame (ω_max about 8 mm wide)
+    assert!(ch.levels_outside.iter().all(|o| *o));
+}
+
+/// A name too long for the room right of the frame stands inside it; at
+/// the frame's top (ω_max 2.4 mm under it, 95.25 at μ 0.025) it hangs
+/// under its line, its letters' tops `LEVEL_CLEAR` under the line.
+#[test]
+fn a_long_level_name_hangs_under_its_line_at_the_frames_top() {
+    let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
+    let mut ch = Chart::new(
+        Language::Ru,
+        SheetFormat::A1,
+        Slot::Diagram,
+        "ω",
+        ("ω_1", "rad/s"),
+        (93.3053, 95.1903),
+        false,
+        phi,
+        (0.0, 360.0),
+    );
+    ch.level(95.1903, "#c00000", "ω_{max, установившийся}", "");
+    let (cap, drop) = level_name_ink();
+    let y = ch.map(0.0, 95.1903).1;
+    assert_eq!(ch.levels_outside, [false]);
+    let (top, foot) = (ch.levels[0] - cap, ch.levels[0] + drop);
+    assert!(top >= y + LEVEL_CLEAR - 1e-9, "tops {top:.2} mm, line {y:.2} mm");
+    assert!(foot <= ch.corner().1);
 }
 
 /// An indicator table wrapping the cycle's end is one span across it,
