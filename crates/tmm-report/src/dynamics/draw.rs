@@ -395,16 +395,19 @@ impl Chart {
     }
 
     /// The baseline of a level's name right of the frame, centred on its
-    /// line's height, where the name fits between the frame and the
+    /// line's height (raised to stay within the frame's height), where the name fits between the frame and the
     /// legend's samples ([`LEGEND_X`]) with [`LEVEL_CLEAR`] on both sides and
     /// keeps clear of the names already written: there it crosses no line
     /// or curve of the diagram.
     fn level_name_outside(&self, py: f64, ink: &tmm_draw::face::Ink) -> Option<f64> {
         let (cap, drop) = level_name_ink();
         let wide = ink.right - ink.left.min(0.0);
-        let at = py + 0.5 * (cap - drop);
+        // within the frame's height: the x axis' numbers stand under it
+        let (_, y1) = self.corner();
+        let at = (py + 0.5 * (cap - drop)).min(y1 - drop - 0.5);
         let step = cap + drop + 0.8;
-        (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= 0.0 && self.levels.iter().all(|l| (at - l).abs() >= step)).then_some(at)
+        let apart = self.levels.iter().all(|l| (at - l).abs() >= step);
+        (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= self.fy && apart).then_some(at)
     }
 
     /// The baseline of a level's name inside the frame at its right end,
