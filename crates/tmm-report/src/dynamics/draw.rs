@@ -407,7 +407,7 @@ impl Chart {
         let at = (py + 0.5 * (cap - drop)).min(y1 - drop - 0.5);
         let step = cap + drop + 0.8;
         let apart = self.levels.iter().all(|l| (at - l).abs() >= step);
-        (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= self.fy && apart).then_some(at)
+        (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= 0.0 && apart).then_some(at)
     }
 
     /// The baseline of a level's name inside the frame at its right end,
