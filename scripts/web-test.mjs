@@ -640,8 +640,12 @@ for (const want of ["report.json", "linkage/positions.svg", "gear/mesh.dxf"]) {
   const cliPdf = join(editedDir, "out-pdf");
   writeFileSync(join(editedDir, "pdf-task.toml"), taskText);
   // the command line reads osifont from the machine, the page was given the
-  // same file by the build: both typeset with it
-  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], { stdio: "pipe" });
+  // same file by the build: both typeset with it. A page built without it
+  // (no osifont, or no licence text to serve beside it) is compared with a
+  // run kept off the machine's osifont (TMM_FONT_PATH naming a file that is
+  // no font), so both use the fallback faces.
+  const cliEnv = served ? process.env : { ...process.env, TMM_FONT_PATH: join(editedDir, "pdf-task.toml") };
+  execFileSync(tmmBin, ["run", "--out", cliPdf, join(editedDir, "pdf-task.toml")], { stdio: "pipe", env: cliEnv });
   const cliPdfs = walk(cliPdf).filter((f) => f.endsWith(".pdf")).sort();
   check("the page offers the same PDFs as tmm run", JSON.stringify([...pdfNames].sort()) === JSON.stringify(cliPdfs), `page ${pdfNames.join(" ")}; cli ${cliPdfs.join(" ")}`);
   // the note's text and pages against the command line's (pdftotext, pdfinfo)
