@@ -145,45 +145,7 @@ fn line_fits(line: &str, size: TextHeight, iw: f64) -> bool {
 /// `text` broken into lines that each fit `iw` at `size`, at spaces; with
 /// `break_words`, a word longer than a line is broken between letters.
 fn wrap_ink(text: &str, size: TextHeight, iw: f64, break_words: bool) -> Option<Vec<String>> {
-    let fits = |s: &str| line_fits(s, size, iw);
-    let mut lines: Vec<String> = Vec::new();
-    let mut cur = String::new();
-    for word in text.split_whitespace() {
-        let cand = if cur.is_empty() {
-            word.to_string()
-        } else {
-            format!("{cur} {word}")
-        };
-        if fits(&cand) {
-            cur = cand;
-            continue;
-        }
-        if !cur.is_empty() {
-            lines.push(std::mem::take(&mut cur));
-        }
-        if fits(word) {
-            cur = word.to_string();
-        } else if !break_words {
-            return None;
-        } else {
-            for c in word.chars() {
-                let mut next = cur.clone();
-                next.push(c);
-                if !fits(&next) {
-                    if cur.is_empty() {
-                        return None;
-                    }
-                    lines.push(std::mem::take(&mut cur));
-                    next = c.to_string();
-                }
-                cur = next;
-            }
-        }
-    }
-    if !cur.is_empty() {
-        lines.push(cur);
-    }
-    Some(lines)
+    crate::text::wrap_with(text, |s| line_fits(s, size, iw), break_words)
 }
 
 /// The ink height of `lines` at `size`, 1.7 h apart: the first line's top

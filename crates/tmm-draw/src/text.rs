@@ -330,7 +330,20 @@ impl Text {
 /// assert!(lines.len() >= 2);
 /// ```
 pub fn wrap(text: &str, h: TextHeight, width: f64) -> Option<Vec<String>> {
-    let w = |s: &str| s.chars().map(|c| h.advance(c)).sum::<f64>();
+    if text.chars().any(|c| !c.is_whitespace() && h.advance(c) > width) {
+        return None;
+    }
+    wrap_with(text, |s| s.chars().map(|c| h.advance(c)).sum::<f64>() <= width, true)
+}
+
+/// `text` broken greedily into lines for which `fits` holds, at spaces;
+/// with `break_words`, a word that fits no line alone is broken between
+/// letters (a letter that fits no line alone after a full line stands on
+/// a line of its own). `None` when a word must be broken and
+/// `break_words` is off, or a line would start with a letter that does
+/// not fit. The breaking of [`wrap`] (type B advances) and of the title
+/// block's fields (printed ink, [`crate::eskd::fit`]).
+pub(crate) fn wrap_with(text: &str, fits: impl Fn(&str) -> bool, break_words: bool) -> Option<Vec<String>> {
     let mut lines: Vec<String> = Vec::new();
     let mut cur = String::new();
     for word in text.split_whitespace() {
@@ -339,24 +352,29 @@ pub fn wrap(text: &str, h: TextHeight, width: f64) -> Option<Vec<String>> {
         } else {
             format!("{cur} {word}")
         };
-        if w(&cand) <= width {
+        if fits(&cand) {
             cur = cand;
             continue;
         }
         if !cur.is_empty() {
             lines.push(std::mem::take(&mut cur));
         }
-        if w(word) <= width {
+        if fits(word) {
             cur = word.to_string();
+        } else if !break_words {
+            return None;
         } else {
             for c in word.chars() {
-                if h.advance(c) > width {
-                    return None;
-                }
-                if w(&cur) + h.advance(c) > width {
+                let mut next = cur.clone();
+                next.push(c);
+                if !fits(&next) {
+                    if cur.is_empty() {
+                        return None;
+                    }
                     lines.push(std::mem::take(&mut cur));
+                    next = c.to_string();
                 }
-                cur.push(c);
+                cur = next;
             }
         }
     }
