@@ -12,7 +12,7 @@
 use tmm_note::{Block, Note};
 use tmm_report::run::run_task;
 
-use super::fixtures::task;
+use super::fixtures::{sheet_svgs, task};
 use super::pdf_read::{Read, read};
 
 /// GOST 2.304's smallest letter height, mm, less the rounding of the
@@ -81,15 +81,11 @@ fn check(name: &str) {
     // every sheet, every text: measured and shown (held to 2.5 mm, with
     // the examples of every section, by `sheets_pdf`)
     let mut sheets = 0;
-    for d in run
-        .docs
-        .iter()
-        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-    {
-        let pdf = tmm_note::sheet_pdf(d.as_text().expect("a sheet is text")).expect("the sheet typesets");
+    for (path, svg) in sheet_svgs(&run) {
+        let pdf = tmm_note::sheet_pdf(svg).expect("the sheet typesets");
         let r = read(&pdf);
         let low = smallest(&r, false).expect("a sheet has lettering");
-        eprintln!("{name}: {} smallest capital {:.3} mm (font {})", d.path, low.cap_mm, low.font);
+        eprintln!("{name}: {path} smallest capital {:.3} mm (font {})", low.cap_mm, low.font);
         sheets += 1;
     }
     assert!(sheets > 0, "{name}: the run has sheets");

@@ -3,7 +3,17 @@
 
 use tmm_note::{Block, Note, Section};
 use tmm_report::TaskSource;
-use tmm_report::run::DEFAULT_TASK;
+use tmm_report::run::{DEFAULT_TASK, Run};
+
+/// The drawing sheets of a run (`sheets/sheet-N.svg`): each one's path and
+/// SVG text.
+pub fn sheet_svgs(run: &Run) -> Vec<(&str, &str)> {
+    run.docs
+        .iter()
+        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
+        .map(|d| (d.path.as_str(), d.as_text().expect("a sheet is text")))
+        .collect()
+}
 
 /// The task `name`: "default" for the embedded default project, else a
 /// file under examples/.

@@ -11,7 +11,7 @@
 use tmm_note::{Block, Note};
 use tmm_report::run::run_task;
 
-use super::fixtures::task;
+use super::fixtures::{sheet_svgs, task};
 use super::pdf_read::{MM_PER_PT, Read, read};
 
 /// The SVG of every figure of the note, in order.
@@ -96,12 +96,7 @@ fn drawings(name: &str) -> (Vec<Printed>, serde_json::Value) {
     for (i, f) in r.forms.iter().enumerate() {
         out.push(printed(&r, f.clip, format!("{name}: note figure {} (page {})", i + 1, f.page)));
     }
-    for d in run
-        .docs
-        .iter()
-        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-    {
-        let svg = d.as_text().expect("a sheet is text");
+    for (path, svg) in sheet_svgs(&run) {
         let pdf = tmm_note::sheet_pdf(svg).expect("the sheet typesets");
         let r = read(&pdf);
         let page_h = r.clips.first().map(|c| c.rect_pt.3).expect("a sheet has its clip");
@@ -117,8 +112,8 @@ fn drawings(name: &str) -> (Vec<Printed>, serde_json::Value) {
                         && (c.rect_pt.2 - want.2).abs() < 0.5
                         && (c.rect_pt.3 - want.3).abs() < 0.5
                 })
-                .unwrap_or_else(|| panic!("{name}: {}: the clip of {source}", d.path));
-            out.push(printed(&r, clip, format!("{name}: {} {source}", d.path)));
+                .unwrap_or_else(|| panic!("{name}: {path}: the clip of {source}"));
+            out.push(printed(&r, clip, format!("{name}: {path} {source}")));
         }
     }
     (out, report)

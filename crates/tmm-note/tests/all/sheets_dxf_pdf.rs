@@ -13,6 +13,8 @@
 use tmm_report::TaskSource;
 use tmm_report::run::{DEFAULT_TASK, run_task};
 
+use super::fixtures::sheet_svgs;
+
 #[test]
 fn every_sheets_dxf_overlaps_its_pdf() {
     let py = std::env::var("TMM_EZDXF_PYTHON").unwrap_or_else(|_| "python3".to_string());
@@ -29,19 +31,15 @@ fn every_sheets_dxf_overlaps_its_pdf() {
     let mut args = Vec::new();
     for (name, text) in [("default", DEFAULT_TASK), ("seed-003", seed.as_str())] {
         let run = run_task(&TaskSource::new(name, text)).unwrap();
-        let sheets: Vec<_> = run
-            .docs
-            .iter()
-            .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-            .collect();
+        let sheets = sheet_svgs(&run);
         assert!(!sheets.is_empty(), "{name}: no sheet");
-        for d in sheets {
-            let stem = d.path.trim_start_matches("sheets/").trim_end_matches(".svg");
+        for (path, svg) in sheets {
+            let stem = path.trim_start_matches("sheets/").trim_end_matches(".svg");
             let dxf = run
                 .docs
                 .get(&format!("sheets/{stem}.dxf"))
                 .unwrap_or_else(|| panic!("{name}: {stem}.dxf"));
-            let pdf = tmm_note::sheet_pdf(d.as_text().unwrap()).unwrap();
+            let pdf = tmm_note::sheet_pdf(svg).unwrap();
             let (fd, fp) = (dir.join(format!("{name}-{stem}.dxf")), dir.join(format!("{name}-{stem}.pdf")));
             std::fs::write(&fd, &dxf.bytes).unwrap();
             std::fs::write(&fp, pdf).unwrap();

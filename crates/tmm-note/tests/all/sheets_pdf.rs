@@ -11,7 +11,7 @@
 use tmm_report::TaskSource;
 use tmm_report::run::{DEFAULT_TASK, run_task};
 
-use super::fixtures::task;
+use super::fixtures::{sheet_svgs, task};
 use super::pdf_read::read;
 
 /// GOST 2.304's smallest letter height, mm, less the rounding of the
@@ -25,12 +25,8 @@ fn sheets_under(name: &str) -> Vec<String> {
     let run = run_task(&task).expect("the task runs");
     let mut sheets = 0;
     let mut under = Vec::new();
-    for d in run
-        .docs
-        .iter()
-        .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-    {
-        let pdf = tmm_note::sheet_pdf(d.as_text().expect("a sheet is text")).expect("the sheet typesets");
+    for (path, svg) in sheet_svgs(&run) {
+        let pdf = tmm_note::sheet_pdf(svg).expect("the sheet typesets");
         let r = read(&pdf);
         let low = r
             .texts
@@ -39,14 +35,13 @@ fn sheets_under(name: &str) -> Vec<String> {
             .expect("a sheet has lettering");
         let n_small = r.texts.iter().filter(|t| t.cap_mm < MIN_CAP_MM).count();
         eprintln!(
-            "{name}: {} — {} texts, smallest capital {:.3} mm (font {}), {n_small} under 2.5 mm",
-            d.path,
+            "{name}: {path} — {} texts, smallest capital {:.3} mm (font {}), {n_small} under 2.5 mm",
             r.texts.len(),
             low.cap_mm,
             low.font
         );
         if n_small > 0 {
-            under.push(format!("{name}: {}: {n_small} texts, the smallest {:.3} mm", d.path, low.cap_mm));
+            under.push(format!("{name}: {path}: {n_small} texts, the smallest {:.3} mm", low.cap_mm));
         }
         sheets += 1;
     }
@@ -101,17 +96,12 @@ fn sheets_declare_the_projects_language() {
     for (text, code) in [(DEFAULT_TASK.to_string(), "ru"), (uk, "uk")] {
         let run = run_task(&TaskSource::new("default.toml", text)).expect("the task runs");
         let mut n = 0;
-        for d in run
-            .docs
-            .iter()
-            .filter(|d| d.path.starts_with("sheets/") && d.path.ends_with(".svg"))
-        {
-            let pdf = tmm_note::sheet_pdf(d.as_text().expect("a sheet is text")).expect("the sheet typesets");
+        for (path, svg) in sheet_svgs(&run) {
+            let pdf = tmm_note::sheet_pdf(svg).expect("the sheet typesets");
             let want = format!("/Lang({code})");
             assert!(
                 pdf.windows(want.len()).any(|w| w == want.as_bytes()),
-                "{}: the PDF does not declare {want}",
-                d.path
+                "{path}: the PDF does not declare {want}"
             );
             n += 1;
         }

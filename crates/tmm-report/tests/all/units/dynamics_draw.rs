@@ -44,14 +44,11 @@ fn axis_fits_at_a_round_mu() {
     }
 }
 
-/// The names of the ω diagram's levels keep `LEVEL_CLEAR` between their
-/// ink and every level's line — the highest near the frame's top, where
-/// there is no room above it — and apart from each other.
-#[test]
-fn level_names_keep_clear_of_the_lines() {
+/// The default project's ω diagram (ω from 93.3053 to 95.1903 rad/s over
+/// the cycle), framed with no level drawn yet.
+fn omega_chart() -> Chart {
     let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
-    let levels = [95.1903, 94.2478, 93.3053];
-    let mut ch = Chart::new(
+    Chart::new(
         Language::Ru,
         SheetFormat::A1,
         Slot::Diagram,
@@ -61,7 +58,16 @@ fn level_names_keep_clear_of_the_lines() {
         false,
         phi,
         (0.0, 360.0),
-    );
+    )
+}
+
+/// The names of the ω diagram's levels keep `LEVEL_CLEAR` between their
+/// ink and every level's line — the highest near the frame's top, where
+/// there is no room above it — and apart from each other.
+#[test]
+fn level_names_keep_clear_of_the_lines() {
+    let levels = [95.1903, 94.2478, 93.3053];
+    let mut ch = omega_chart();
     for (v, n) in levels.iter().zip(["ω_{max}", "ω_m", "ω_{min}"]) {
         ch.level(*v, "#c00000", n, "");
     }
@@ -96,18 +102,7 @@ fn level_names_keep_clear_of_the_lines() {
 /// under its line, its letters' tops `LEVEL_CLEAR` under the line.
 #[test]
 fn a_long_level_name_hangs_under_its_line_at_the_frames_top() {
-    let phi = XKind::Phi((0..=12).map(|i| 30.0 * f64::from(i)).collect());
-    let mut ch = Chart::new(
-        Language::Ru,
-        SheetFormat::A1,
-        Slot::Diagram,
-        "ω",
-        ("ω_1", "rad/s"),
-        (93.3053, 95.1903),
-        false,
-        phi,
-        (0.0, 360.0),
-    );
+    let mut ch = omega_chart();
     ch.level(95.1903, "#c00000", "ω_{max, установившийся}", "");
     let (cap, drop) = level_name_ink();
     let y = ch.map(0.0, 95.1903).1;
