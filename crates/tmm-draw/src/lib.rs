@@ -38,6 +38,7 @@ mod line;
 pub mod sample;
 mod scale;
 pub mod scene;
+pub mod simplify;
 mod text;
 
 pub mod dxf;

@@ -189,7 +189,15 @@ pub struct Picture {
 
 impl Picture {
     /// A drawing of `elements` on a paper `width × height` mm.
-    pub fn new(width: f64, height: f64, root: Vec<(String, String)>, elements: Vec<Element>) -> Picture {
+    ///
+    /// Polylines, polygons and the runs of paths keep only the vertices
+    /// Douglas–Peucker keeps at [`tmm_draw::simplify::TOLERANCE_MM`]
+    /// (0.01 mm on paper), so the SVG, the scene (the sheets, the DXF) and
+    /// the PDFs made from them carry one simplified geometry.
+    pub fn new(width: f64, height: f64, root: Vec<(String, String)>, mut elements: Vec<Element>) -> Picture {
+        for e in &mut elements {
+            simplify_element(e);
+        }
         let mut p = Picture {
             width,
             height,
@@ -283,6 +291,43 @@ impl Picture {
             add_to_scene(&mut sc, e, h);
         }
         sc
+    }
+}
+
+/// Drops the vertices of a polyline, polygon or path run that lie within
+/// [`tmm_draw::simplify::TOLERANCE_MM`] of the line through the others
+/// (its ends, and a polygon's first vertex, stay).
+fn simplify_element(e: &mut Element) {
+    use tmm_draw::simplify::{TOLERANCE_MM, simplify, simplify_closed};
+    let run = |pts: &[P], closed: bool| -> Option<Vec<P>> {
+        if pts.len() < 3 {
+            return None;
+        }
+        let v: Vec<Point> = pts.iter().map(|&(x, y)| Point::new(x, y)).collect();
+        let s = if closed {
+            simplify_closed(&v, TOLERANCE_MM)
+        } else {
+            simplify(&v, TOLERANCE_MM)
+        };
+        (s.len() < pts.len()).then(|| s.iter().map(|p| (p.x, p.y)).collect())
+    };
+    match e {
+        Element::Poly { points, closed, .. } => {
+            if let Some(s) = run(points, *closed) {
+                *points = s;
+            }
+        }
+        Element::Path {
+            data: PathData::Runs(runs),
+            ..
+        } => {
+            for r in runs.iter_mut() {
+                if let Some(s) = run(r, false) {
+                    *r = s;
+                }
+            }
+        }
+        _ => {}
     }
 }
 

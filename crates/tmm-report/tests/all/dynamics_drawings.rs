@@ -58,7 +58,9 @@ fn wittenbauer_lines_support_the_curve_from_above_and_below() {
         let c = curves(&s);
         assert_eq!(c.len(), 3, "{name}: the curve and two lines");
         let curve = &c[0].1;
-        assert!(curve.len() > 300, "{name}");
+        // a curve (the vertices Douglas–Peucker keeps at 0.01 mm of the
+        // densely sampled cycle, tmm_draw::simplify), not a few points joined
+        assert!(curve.len() > 24, "{name}: {} vertices", curve.len());
         for (k, above) in [(1, true), (2, false)] {
             let l = &c[k].1;
             assert_eq!(l.len(), 2, "{name}: a line is one segment");
