@@ -895,9 +895,11 @@ pub fn shown_len(s: &str) -> usize {
 /// width: it leans the top by tan 15° of the height.
 ///
 /// ```
-/// let (w, up, down) = tmm_report::svg::rich_ink("h_1 = 12", 3.0);
-/// let (w0, up0, _) = tmm_report::svg::rich_ink("h1 = 12", 3.0);
-/// assert!(w < w0 && up == up0 && down > 0.35 * 3.0);
+/// // 10 mm letters: the index at 7 mm (above the lettering floor)
+/// let (w, up, down) = tmm_report::svg::rich_ink("h_1 = 12", 10.0);
+/// let (w0, up0, down0) = tmm_report::svg::rich_ink("h1 = 12", 10.0);
+/// assert!(w < w0 && up == up0 && down > down0);
+/// assert!((down - (2.5 + 0.35 * 7.0)).abs() < 1e-9);
 /// ```
 pub fn rich_ink(s: &str, size: f64) -> (f64, f64, f64) {
     // written at the lettering floor at least, the indices by that size
