@@ -23,6 +23,7 @@
 //! [`dxf_out`] (DXF with layers), [`output`], [`run`] (the whole task).
 
 pub mod cam;
+pub mod crop;
 pub mod cylinder;
 pub mod dxf_out;
 pub mod dynamics;

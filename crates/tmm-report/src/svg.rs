@@ -494,6 +494,84 @@ impl Canvas {
         text_box(at, size_mm, Anchor::Middle, n)
     }
 
+    /// [`Canvas::label`] with the label's box as printed: the ink of the
+    /// typeset text in the drawing face ([`rich_ink`]), kept `clear_mm`
+    /// off every line drawn so far (off its edge: the line's half width of
+    /// up to 0.4 mm added) and off every other text and kept place. The
+    /// places tried: sixteen directions round the point, the box's nearest
+    /// edge `clear_mm` … 30 mm from it; when none is clear the least
+    /// crowded. Returns the ink's box.
+    pub fn label_clear(&mut self, at: (f64, f64), text: &str, size_mm: f64, color: &str, clear_mm: f64) -> Rect {
+        self.label_clear_near(&[at], text, size_mm, color, clear_mm)
+    }
+
+    /// [`Canvas::label_clear`] for a label that may stand by any of the
+    /// world points `near` (along a line it names): the nearest clear
+    /// place round the first point, else round the next …, the distances
+    /// tried in turn for all the points.
+    pub fn label_clear_near(&mut self, near: &[(f64, f64)], text: &str, size_mm: f64, color: &str, clear_mm: f64) -> Rect {
+        let pts: Vec<(f64, f64)> = near.iter().map(|q| self.to_paper(q.0, q.1)).collect();
+        let p = pts.first().copied().unwrap_or((0.0, 0.0));
+        // the coordinates and sizes are written rounded: a hair more
+        let clear_mm = clear_mm + 0.02;
+        let (w, up, down) = rich_ink(text, size_mm);
+        let lean = 15f64.to_radians().tan();
+        // the ink's box about the anchor (the middle of the advances, on the baseline)
+        let (bx0, bx1) = (-0.5 * w - lean * down, 0.5 * w + lean * up);
+        let (bw, bh) = (bx1 - bx0, up + down);
+        let mut best: Option<(usize, f64, (f64, f64))> = None;
+        'search: for d in [0.0, 0.5, 1.0, 1.8, 2.8, 4.0, 5.5, 7.5, 10.0, 13.0, 17.0, 22.0, 30.0] {
+            let d = clear_mm + d;
+            for (k, p) in (0..16).flat_map(|k| pts.iter().map(move |p| (k, *p))) {
+                let th = std::f64::consts::TAU * k as f64 / 16.0 + std::f64::consts::FRAC_PI_4;
+                let (c, sn) = (th.cos(), th.sin());
+                let reach = |half: f64, dir: f64| half * dir.abs().min(1.0) / c.abs().max(sn.abs()).max(1e-9);
+                let (cx, cy) = (p.0 + c * (d + reach(0.5 * bw, c)), p.1 - sn * (d + reach(0.5 * bh, sn)));
+                let r = Rect {
+                    x0: cx - 0.5 * bw,
+                    y0: cy - 0.5 * bh,
+                    x1: cx + 0.5 * bw,
+                    y1: cy + 0.5 * bh,
+                };
+                let grown = |g: f64| Rect {
+                    x0: r.x0 - g,
+                    y0: r.y0 - g,
+                    x1: r.x1 + g,
+                    y1: r.y1 + g,
+                };
+                let (rb, rl) = (grown(clear_mm), grown(clear_mm + 0.4));
+                let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= self.width - 0.5 && r.y1 <= self.height - 0.5;
+                let hits = self.boxes.iter().filter(|b| b.overlaps(&rb)).count()
+                    + self.segs.count((rl.x0, rl.y0, rl.x1, rl.y1), |s| rl.cuts(s.0, s.1))
+                    + if inside { 0 } else { 1000 };
+                let anchor = (cx - 0.5 * (bx0 + bx1), cy + 0.5 * (up - down));
+                if best.is_none_or(|b| hits < b.0) {
+                    best = Some((hits, d, anchor));
+                }
+                if hits == 0 {
+                    break 'search;
+                }
+            }
+        }
+        let at = best.map_or(p, |b| b.2);
+        self.els.push(Element::Text {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+            anchor: Anchor::Middle,
+            color: color.to_string(),
+            rich: true,
+        });
+        let r = Rect {
+            x0: at.0 + bx0,
+            y0: at.1 - up,
+            x1: at.0 + bx1,
+            y1: at.1 + down,
+        };
+        self.reserve(r);
+        r
+    }
+
     /// [`Canvas::label`], but when no place within 17 mm of the point is
     /// clear of the lines and the other texts, the label goes farther out
     /// (up to 47 mm) where it is clear, on a thin leader line to the point
@@ -806,6 +884,66 @@ pub fn text_box(at: (f64, f64), size: f64, anchor: Anchor, n: usize) -> Rect {
 /// The number of characters [`rich`] shows for `s` (the markup `^ _ { }` dropped).
 pub fn shown_len(s: &str) -> usize {
     s.chars().filter(|c| !matches!(c, '^' | '_' | '{' | '}')).count()
+}
+
+/// The ink of `s` typeset by [`rich`] at letter size `size`, in the
+/// drawing face (osifont's advances, [`tmm_draw::face::advance_em`], 0.6
+/// em for a character it lacks): the advance width (an index at its own
+/// smaller size, [`crate::picture::index_em`]), the height above the
+/// baseline and the depth below it (an index raised by 0.4 of the size or
+/// lowered by 0.25, as [`rich`] sets it), mm. The 75° slant is not in the
+/// width: it leans the top by tan 15° of the height.
+///
+/// ```
+/// // 10 mm letters: the index at 7 mm (above the lettering floor)
+/// let (w, up, down) = tmm_report::svg::rich_ink("h_1 = 12", 10.0);
+/// let (w0, up0, down0) = tmm_report::svg::rich_ink("h1 = 12", 10.0);
+/// assert!(w < w0 && up == up0 && down > down0);
+/// assert!((down - (2.5 + 0.35 * 7.0)).abs() < 1e-9);
+/// ```
+pub fn rich_ink(s: &str, size: f64) -> (f64, f64, f64) {
+    // written at the lettering floor at least, the indices by that size
+    let size = crate::picture::em(size);
+    let (e, ie) = (size, crate::picture::index_em(size));
+    let adv = |c: char| tmm_draw::face::advance_em(c).unwrap_or(0.6);
+    let (mut w, mut up, mut down) = (0.0, TEXT_ASCENT * e, TEXT_DESCENT * e);
+    // 0 on the line, 1 raised, -1 lowered
+    let mut level = 0i8;
+    let mut braced = false;
+    let mut run_open = false;
+    for ch in s.chars() {
+        match ch {
+            '^' | '_' => {
+                level = if ch == '^' { 1 } else { -1 };
+                braced = false;
+                run_open = false;
+            }
+            '{' if level != 0 && !run_open => braced = true,
+            '}' if braced => {
+                level = 0;
+                braced = false;
+            }
+            ' ' if level != 0 && !braced => {
+                level = 0;
+                w += adv(' ') * e;
+            }
+            c => {
+                run_open = true;
+                match level {
+                    0 => w += adv(c) * e,
+                    1 => {
+                        w += adv(c) * ie;
+                        up = up.max(0.4 * size + TEXT_ASCENT * ie);
+                    }
+                    _ => {
+                        w += adv(c) * ie;
+                        down = down.max(0.25 * size + TEXT_DESCENT * ie);
+                    }
+                }
+            }
+        }
+    }
+    (w, up, down)
 }
 
 /// Typeset a label of the course's notation as SVG text content: `^x` puts

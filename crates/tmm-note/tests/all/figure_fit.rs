@@ -89,7 +89,7 @@ fn body_width(body: &str, size: f64) -> (String, f64, f64) {
 
 /// Each text of `svg` not rotated: its shown characters and its box
 /// (x0, y0, x1, y1).
-fn text_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
+pub(super) fn text_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
     let mut out = Vec::new();
     let mut rest = svg;
     while let Some(i) = rest.find("<text") {

@@ -7,6 +7,7 @@ mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;
+mod figure_fill;
 mod figure_fit;
 mod figure_numbers;
 mod figures_pdf;

@@ -306,15 +306,22 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         .iter()
         .copied()
         .chain(a.lever.iter().flat_map(|x| [x.image, x.image + x.force * mu]))
+        // the feet of the arms drawn from the pole
+        .chain(lever_arms(a, f64::INFINITY, mu).into_iter().map(|arm| arm.foot))
     {
         xmin = xmin.min(p.x);
         xmax = xmax.max(p.x);
         ymin = ymin.min(p.y);
         ymax = ymax.max(p.y);
     }
-    let (w, h) = slot_mm(Slot::Plan, task.sheet);
+    // on the note's page as tall as a figure may be (the page's figure is
+    // cut to its content, `crate::crop`), so a tall plan is drawn larger
+    let (w, h) = match task.sheet {
+        crate::project::SheetFormat::A4 => (crate::paper::NOTE_WIDTH_MM, crate::paper::NOTE_HEIGHT_MM),
+        sheet => slot_mm(Slot::Plan, sheet),
+    };
     let mut c = Canvas::new(w, h);
-    let (margin, top) = (16.0, 26.0);
+    let (margin, top) = (16.0, 29.0);
     let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
     let mu_v = round_mu(raw.max(1e-12));
     let s = 1.0 / mu_v;
@@ -334,7 +341,7 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         "#000000",
     );
     c.rich_paper(
-        (w / 2.0, 15.0),
+        (w / 2.0, 15.5),
         &format!(
             "μ_v = {} {};  M_{{{zh}}} = P_{{{b}}}·l_1 = {} {}",
             mu_text(mu_v, lang),
@@ -347,7 +354,7 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         "#404040",
     );
     c.rich_paper(
-        (w / 2.0, 21.0),
+        (w / 2.0, 22.5),
         &format!(
             "P_{{{b}}} = {} {};  {}: M_{{{b}}} = {} {}",
             num(r.fs.zhukovsky_moment / m.crank.radius, 3, lang),
@@ -385,7 +392,24 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     c.begin_group("forces");
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
-        c.arrow(t(x.image), t(x.image + x.force * mu), Style::THIN.colored(col).widened(0.5), 3.0);
+        let end = x.image + x.force * mu;
+        let (from, to) = (c.to_paper(x.image.x, x.image.y), c.to_paper(end.x, end.y));
+        c.arrow_paper(from, to, Style::THIN.colored(col).widened(0.5), 3.0);
+        reserve_head(&mut c, from, to, 3.0);
+    }
+    c.end_group();
+    // the arms h of the forces about the pole p (плечи сил): the
+    // perpendicular from p to each force's line of action, that line
+    // carried on to its foot, the arm's length in paper mm (the lever's
+    // equation Σ ±F_i·h_i = 0 is read in these)
+    let arms = lever_arms(a, s, mu);
+    c.begin_group("arms");
+    for arm in &arms {
+        let col = COLORS[arm.force % COLORS.len()];
+        c.line((0.0, 0.0), t(arm.foot), Style::THIN.colored(col));
+        if let Some(from) = arm.carried_from {
+            c.line(t(from), t(arm.foot), Style::DASHED.colored(col));
+        }
     }
     c.end_group();
     for p in &imgs {
@@ -393,7 +417,9 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         c.reserve_point(t(*p), 1.0);
     }
     c.begin_group("labels");
-    c.label((0.0, 0.0), "p", H_LABEL, "#000");
+    // every label 1 mm clear of the lines and of the other labels, its box
+    // the ink of the drawing face
+    c.label_clear((0.0, 0.0), "p", H_LABEL, "#000", LEVER_CLEAR_MM);
     let mut named: Vec<Vec2> = vec![Vec2::ZERO];
     for (i, p) in imgs.iter().enumerate() {
         if named.iter().any(|q| (*q - *p).hypot() * s < 0.5) {
@@ -407,11 +433,11 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         } else {
             n
         };
-        c.label(t(*p), &n, H_LABEL, "#000");
+        c.label_clear(t(*p), &n, H_LABEL, "#000", LEVER_CLEAR_MM);
     }
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
-        c.label(
+        c.label_clear(
             t(x.image + x.force * mu),
             &format!(
                 "{} {} {}",
@@ -421,10 +447,90 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             ),
             H_LABEL - 0.5,
             col,
+            LEVER_CLEAR_MM,
+        );
+    }
+    for (k, arm) in arms.iter().enumerate() {
+        let col = COLORS[arm.force % COLORS.len()];
+        // by the middle of the arm, else nearer one of its ends
+        let along: Vec<(f64, f64)> = [0.5, 0.35, 0.65, 0.2, 0.8].iter().map(|f| t(arm.foot * *f)).collect();
+        c.label_clear_near(
+            &along,
+            &format!("h_{} = {} {}", k + 1, num(arm.mm, 1, lang), word(lang, "forces.unit_mm")),
+            H_LABEL - 0.5,
+            col,
+            LEVER_CLEAR_MM,
         );
     }
     c.end_group();
     c.finish()
+}
+
+/// How far Zhukovsky's lever keeps its labels off its lines and off each
+/// other, mm.
+pub const LEVER_CLEAR_MM: f64 = 1.0;
+
+/// An arm drawn on Zhukovsky's lever.
+struct Arm {
+    /// The force's index in the lever's list.
+    force: usize,
+    /// The foot of the perpendicular from the pole on the line of action, m/s (the plan's units).
+    foot: Vec2,
+    /// Where the drawn force ends nearest the foot, when the foot lies beyond it.
+    carried_from: Option<Vec2>,
+    /// The arm's length on the paper, mm.
+    mm: f64,
+}
+
+/// The arms of the lever's forces about the pole at the plan's scale `s`
+/// (paper mm per m/s): h = |r × F| / |F| for the image r of the force's
+/// point (derived here: the distance from the origin to the line through
+/// r along F). Arms under 0.5 mm (a line of action through the pole) are
+/// left out; the force drawn from r to r + F·μ at `mu`.
+fn lever_arms(a: &Analysis, s: f64, mu: f64) -> Vec<Arm> {
+    let fmax = a.lever.iter().map(|x| x.force.hypot()).fold(0.0, f64::max).max(1e-12);
+    a.lever
+        .iter()
+        .enumerate()
+        .filter_map(|(i, x)| {
+            let f = x.force.hypot();
+            if f <= 1e-9 * fmax {
+                return None;
+            }
+            let u = x.force / f;
+            let foot = x.image - u * x.image.dot(u);
+            let mm = foot.hypot() * s;
+            (mm >= 0.5).then(|| {
+                // along the line: 0 at the image, the arrow from 0 to its length
+                let (along, drawn) = ((foot - x.image).dot(u), f * mu);
+                let carried_from = (along < 0.0 || along > drawn).then(|| if along < 0.0 { x.image } else { x.image + x.force * mu });
+                Arm {
+                    force: i,
+                    foot,
+                    carried_from,
+                    mm,
+                }
+            })
+        })
+        .collect()
+}
+
+/// Keep labels off an arrow's head drawn from `from` to `to` (paper, mm):
+/// its two sides, `head_mm` long and 0.3 of it wide each way.
+fn reserve_head(c: &mut Canvas, from: (f64, f64), to: (f64, f64), head_mm: f64) {
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let len = dx.hypot(dy);
+    if len < 1e-9 {
+        return;
+    }
+    let h = head_mm.min(0.5 * len);
+    let (ux, uy) = (dx / len, dy / len);
+    let (bx, by) = (to.0 - h * ux, to.1 - h * uy);
+    let w = 0.3 * h;
+    let (l, r) = ((bx - w * uy, by + w * ux), (bx + w * uy, by - w * ux));
+    c.reserve_segment(to, l);
+    c.reserve_segment(to, r);
+    c.reserve_segment(l, r);
 }
 
 /// Every drawing, as documents whose paths start with `dir` (`"forces/"`).

@@ -383,7 +383,10 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         let chosen = !function && (*p - k.pivot).hypot() <= 1e-9 * size;
         labels.push((xy(*p), n.clone(), if chosen { RED } else { "#000" }));
     }
-    // the legend under the drawing (before the labels, which keep off it)
+    // the legend under the drawing (before the labels, which keep off it),
+    // a group of its own: the note's figure closes the gap above it
+    // (`crate::crop`)
+    c.begin_group(crate::crop::LEGEND);
     for (i, (col, t)) in rows.iter().enumerate() {
         let yy = h - bottom + 5.0 + row_step * i as f64;
         if let Some(col) = col {
@@ -391,6 +394,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         }
         c.rich_paper((side + 10.0, yy), t, H_SMALL, Anchor::Start, "#000");
     }
+    c.end_group();
     for (at, text, col) in &labels {
         c.label_led(*at, text, H_LABEL, col);
     }

@@ -1,0 +1,317 @@
+//! Zhukovsky's lever as the note prints it (issue 22, point 4: "Zhukovsky's
+//! lever with its arms h"), for the default project and the seed-003
+//! six-bar in ru, uk and en, read back from the figure's SVG:
+//!
+//! - every text stands at least 1 mm clear of every other text and of
+//!   every line, arrowhead and point drawn (a text's box: its characters'
+//!   advances in the drawing face, `tmm_draw::face`, at each run's own font
+//!   size and baseline shift, the 75° slant's lean; a line by its half
+//!   width);
+//! - every force of the report's lever (`forces.lever`: image k and force
+//!   F) whose arm about the pole is at least 0.5 mm on the paper has its
+//!   arm drawn and labelled: h = |k × F| / |F| (the distance from the pole
+//!   to the line of action, computed here from the report's numbers) over
+//!   the printed μ_v (`data-mu`) is the length printed in a label
+//!   `h_n = … мм`, within the printed rounding, and a line of that length
+//!   is drawn from the pole.
+
+use serde_json::Value;
+use tmm_report::TaskSource;
+use tmm_report::project::Language;
+use tmm_report::run::{DEFAULT_TASK, note_figures, run_task_in};
+
+/// The least gap between a text and anything else drawn, mm (less a
+/// rounding of the coordinates written to 0.001 mm).
+const CLEAR: f64 = 1.0 - 2e-3;
+
+fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!(" {name}=\"");
+    let i = tag.find(&key)? + key.len();
+    Some(&tag[i..i + tag[i..].find('"')?])
+}
+
+fn num(tag: &str, name: &str) -> Option<f64> {
+    attr(tag, name).and_then(|v| v.trim_end_matches("mm").parse().ok())
+}
+
+/// A text of the drawing: what it shows and its ink's box (x0, y0, x1, y1).
+#[derive(Debug)]
+struct Ink {
+    text: String,
+    b: [f64; 4],
+}
+
+/// Every text's ink: the runs (the text's own characters and each
+/// `tspan`) at their font sizes and baselines (`dy` accumulates), each
+/// character its advance in the drawing face (0.6 em if it lacks it); 0.85
+/// of a run's size above its baseline and 0.35 below; the slant leaning the
+/// top right and the foot left by tan 15°.
+fn texts(svg: &str) -> Vec<Ink> {
+    let unescape = |s: &str| {
+        s.replace("&amp;", "&")
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&quot;", "\"")
+    };
+    let lean = 15f64.to_radians().tan();
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find("<text") {
+        let r = &rest[i..];
+        let end = r.find("</text>").expect("a text closes");
+        let open = r.find('>').unwrap();
+        let (tag, body) = (&r[..open], &r[open + 1..end]);
+        rest = &r[end..];
+        let (x, y, size) = (num(tag, "x").unwrap(), num(tag, "y").unwrap(), num(tag, "font-size").unwrap());
+        // (font size, baseline shift) of the runs in order, their widths
+        let (mut w, mut shift, mut top, mut foot) = (0.0, 0.0, f64::MAX, f64::MIN);
+        let mut shown = String::new();
+        let mut run_size = size;
+        let mut b = body;
+        while !b.is_empty() {
+            if b.starts_with("<tspan") {
+                let e = b.find('>').unwrap();
+                let t = &b[..e];
+                shift += num(t, "dy").unwrap_or(0.0);
+                run_size = num(t, "font-size").unwrap_or(size);
+                b = &b[e + 1..];
+            } else if b.starts_with("</tspan>") {
+                run_size = size;
+                b = &b["</tspan>".len()..];
+            } else {
+                let n = b.find('<').unwrap_or(b.len());
+                let t = unescape(&b[..n]);
+                if !t.is_empty() {
+                    w += t.chars().map(|c| tmm_draw::face::advance_em(c).unwrap_or(0.6)).sum::<f64>() * run_size;
+                    top = top.min(y + shift - 0.85 * run_size);
+                    foot = foot.max(y + shift + 0.35 * run_size);
+                    shown.push_str(&t);
+                }
+                b = &b[n..];
+            }
+        }
+        if shown.trim().is_empty() {
+            continue;
+        }
+        let x0 = match attr(tag, "text-anchor") {
+            Some("middle") => x - 0.5 * w,
+            Some("end") => x - w,
+            _ => x,
+        };
+        out.push(Ink {
+            text: shown,
+            b: [x0 - lean * (foot - y), top, x0 + w + lean * (y - top), foot],
+        });
+    }
+    out
+}
+
+/// Every straight piece drawn (lines, polylines, polygons' sides) with its
+/// half width, and every circle (centre, radius).
+fn strokes(svg: &str) -> (Vec<((f64, f64), (f64, f64), f64)>, Vec<((f64, f64), f64)>) {
+    let (mut segs, mut circles) = (Vec::new(), Vec::new());
+    let mut rest = svg;
+    while let Some(i) = rest.find('<') {
+        let r = &rest[i + 1..];
+        let end = r.find('>').unwrap_or(r.len());
+        let tag = &r[..end];
+        rest = &r[end..];
+        let half = 0.5 * num(tag, "stroke-width").unwrap_or(0.0);
+        match tag.split_whitespace().next().unwrap_or("") {
+            "line" => segs.push((
+                (num(tag, "x1").unwrap(), num(tag, "y1").unwrap()),
+                (num(tag, "x2").unwrap(), num(tag, "y2").unwrap()),
+                half,
+            )),
+            name @ ("polyline" | "polygon") => {
+                let v: Vec<f64> = attr(tag, "points")
+                    .unwrap()
+                    .split([' ', ','])
+                    .filter_map(|t| t.parse().ok())
+                    .collect();
+                let pts: Vec<(f64, f64)> = v.chunks_exact(2).map(|c| (c[0], c[1])).collect();
+                for w in pts.windows(2) {
+                    segs.push((w[0], w[1], half));
+                }
+                if name == "polygon" && pts.len() > 2 {
+                    segs.push((pts[pts.len() - 1], pts[0], half));
+                }
+            }
+            "circle" => circles.push(((num(tag, "cx").unwrap(), num(tag, "cy").unwrap()), num(tag, "r").unwrap() + half)),
+            _ => {}
+        }
+    }
+    (segs, circles)
+}
+
+/// The distance from a point to a box (0 inside).
+fn point_box(p: (f64, f64), b: &[f64; 4]) -> f64 {
+    let dx = (b[0] - p.0).max(p.0 - b[2]).max(0.0);
+    let dy = (b[1] - p.1).max(p.1 - b[3]).max(0.0);
+    dx.hypot(dy)
+}
+
+/// The distance from a point to a segment.
+fn point_seg(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 > 0.0 {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+/// The distance from a segment to a box: 0 when it enters the box, else
+/// the least of its ends' distances to the box and the box's corners'
+/// distances to it.
+fn seg_box(a: (f64, f64), b: (f64, f64), r: &[f64; 4]) -> f64 {
+    // sampled entry test: the segment cut into 200 steps
+    let enters = (0..=200).any(|k| {
+        let t = k as f64 / 200.0;
+        point_box((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)), r) == 0.0
+    });
+    if enters {
+        return 0.0;
+    }
+    let corners = [(r[0], r[1]), (r[2], r[1]), (r[0], r[3]), (r[2], r[3])];
+    corners
+        .iter()
+        .map(|&c| point_seg(c, a, b))
+        .chain([point_box(a, r), point_box(b, r)])
+        .fold(f64::MAX, f64::min)
+}
+
+fn box_box(a: &[f64; 4], b: &[f64; 4]) -> f64 {
+    let dx = (a[0] - b[2]).max(b[0] - a[2]).max(0.0);
+    let dy = (a[1] - b[3]).max(b[1] - a[3]).max(0.0);
+    dx.hypot(dy)
+}
+
+/// The texts closer than 1 mm to another text or to a line or point.
+fn crowded(svg: &str) -> Vec<String> {
+    let inks = texts(svg);
+    let (segs, circles) = strokes(svg);
+    let mut out = Vec::new();
+    for (i, t) in inks.iter().enumerate() {
+        for u in &inks[i + 1..] {
+            let d = box_box(&t.b, &u.b);
+            if d < CLEAR {
+                out.push(format!("\"{}\" and \"{}\": {d:.2} mm apart", t.text, u.text));
+            }
+        }
+        for (a, b, half) in &segs {
+            let d = seg_box(*a, *b, &t.b) - half;
+            if d < CLEAR {
+                out.push(format!("\"{}\" {d:.2} mm from the line {a:?}–{b:?}", t.text));
+            }
+        }
+        for (c, r) in &circles {
+            let d = point_box(*c, &t.b) - r;
+            if d < CLEAR {
+                out.push(format!("\"{}\" {d:.2} mm from the point {c:?}", t.text));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_clearance_finder_finds_what_it_must() {
+    let svg = |x: f64| {
+        format!(
+            "<svg viewBox=\"0 0 100 100\"><line x1=\"0\" y1=\"50\" x2=\"100\" y2=\"50\" stroke-width=\"0.5\"/><text x=\"{x}\" y=\"45\" font-size=\"5\" text-anchor=\"middle\">ab<tspan dy=\"1.25\" font-size=\"3.5\">1</tspan></text></svg>"
+        )
+    };
+    // the subscript's foot 45 + 1.25 + 0.35·3.5 = 47.475, the line's edge at 49.75
+    let t = &texts(&svg(50.0))[0];
+    assert!((t.b[3] - 47.475).abs() < 1e-9, "{:?}", t.b);
+    assert!(crowded(&svg(50.0)).is_empty());
+    let close = svg(50.0).replace("y=\"45\"", "y=\"47\"");
+    assert_eq!(crowded(&close).len(), 1, "{:?}", crowded(&close));
+    assert!(seg_box((0.0, 0.0), (10.0, 10.0), &[4.0, 4.0, 6.0, 6.0]) == 0.0);
+    assert!((seg_box((0.0, 0.0), (0.0, 10.0), &[2.0, 4.0, 6.0, 6.0]) - 2.0).abs() < 1e-12);
+}
+
+fn example(file: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// A printed number ("12,3", "−4") at the start of `s`.
+fn printed(s: &str) -> Option<f64> {
+    let t: String = s
+        .trim_start()
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || matches!(c, ',' | '.' | '-' | '−'))
+        .collect();
+    t.replace(',', ".").replace('−', "-").parse().ok()
+}
+
+#[test]
+fn zhukovsky_lever_labels_clear_and_arms_drawn() {
+    let tasks = [
+        ("default.toml", DEFAULT_TASK.to_string()),
+        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
+    ];
+    let mut faults = Vec::new();
+    let mut arms_checked = 0;
+    for (name, text) in &tasks {
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let task = TaskSource::new(*name, text.as_str());
+            let report: Value = run_task_in(&task, Some(lang)).unwrap().report.clone();
+            let figs = note_figures(&task, Some(lang)).unwrap();
+            let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
+            let svg = pic.svg();
+            for f in crowded(svg) {
+                faults.push(format!("{name} {lang:?}: {f}"));
+            }
+            // the arms: from the report's lever, over the printed μ_v
+            let mu_v: f64 = pic.attr("data-mu").and_then(|v| v.parse().ok()).expect("data-mu");
+            let labels: Vec<(f64, String)> = texts(svg)
+                .into_iter()
+                .filter_map(|t| {
+                    let rest = t.text.strip_prefix('h')?;
+                    let eq = rest.find('=')?;
+                    Some((printed(&rest[eq + 1..])?, t.text.clone()))
+                })
+                .collect();
+            let (segs, _) = strokes(svg);
+            let mut want = Vec::new();
+            for e in report["forces"]["lever"].as_array().unwrap() {
+                let (k, f) = (&e["image"], &e["force"]);
+                let (kx, ky, fx, fy) = (
+                    k[0].as_f64().unwrap(),
+                    k[1].as_f64().unwrap(),
+                    f[0].as_f64().unwrap(),
+                    f[1].as_f64().unwrap(),
+                );
+                let ff = fx.hypot(fy);
+                if ff > 0.0 {
+                    let h = (kx * fy - ky * fx).abs() / ff / mu_v;
+                    if h >= 0.5 {
+                        want.push(h);
+                    }
+                }
+            }
+            // the pole: where the arms' lines meet — every arm line is as
+            // long as its arm, and one end of each is the same point
+            for h in &want {
+                arms_checked += 1;
+                if !labels.iter().any(|(v, _)| (v - h).abs() <= 0.05 + 1e-6) {
+                    faults.push(format!("{name} {lang:?}: no label h = {h:.2} mm (labels {labels:?})"));
+                }
+                if !segs.iter().any(|(a, b, _)| ((a.0 - b.0).hypot(a.1 - b.1) - h).abs() < 0.01) {
+                    faults.push(format!("{name} {lang:?}: no line {h:.2} mm long for the arm"));
+                }
+            }
+            if labels.len() != want.len() {
+                faults.push(format!("{name} {lang:?}: {} arm labels for {} arms", labels.len(), want.len()));
+            }
+        }
+    }
+    println!("lever: {arms_checked} arms checked");
+    assert!(arms_checked > 10, "{arms_checked}");
+    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}
