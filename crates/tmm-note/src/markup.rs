@@ -16,9 +16,15 @@ use crate::model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
 use crate::number::{format_number, push_unit};
 use crate::translation::Translation;
 
-/// A table of at most this many rows is kept on one page (about a quarter
-/// of the text area: moving it whole leaves no page half empty).
-const SHORT_TABLE_ROWS: usize = 8;
+/// A table of at most this many rows is kept on one page: a row of 12 pt
+/// text with its insets is about 6.6 mm high, so 16 rows with the header
+/// and the caption take about 125 mm, under half the text area (252 mm
+/// with the frame, 257 mm without), and moving such a table whole to the
+/// next page leaves no page half empty. Only a longer table is split, and
+/// its continuation is then most of a page of table (GOST 2.105-95, 4.4.9:
+/// the part carried over stands under "Продолжение таблицы N" at the head
+/// of the new page, not under figures set in the middle of it).
+const SHORT_TABLE_ROWS: usize = 16;
 
 /// The generated source and the virtual files it refers to.
 #[derive(Debug, Clone, PartialEq)]
@@ -49,8 +55,9 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         out: String::new(),
         figures: Vec::new(),
     };
-    w.out
-        .push_str("#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break\n");
+    w.out.push_str(
+        "#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break, with-next\n",
+    );
     // the course's tangent in Russian and Ukrainian is tg (ctg), as the
     // where-lines and the textbooks write it; typst's math names it tan
     if matches!(note.lang, Lang::Ru | Lang::Uk) {
@@ -67,9 +74,7 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     write_project(&mut w.out, &note.project);
     if !note.assignment.is_empty() {
         w.out.push_str("  assignment: [\n");
-        for b in &note.assignment {
-            w.block(b)?;
-        }
+        w.blocks(&note.assignment)?;
         w.out.push_str("  ],\n");
     }
     w.out.push_str(")\n\n");
@@ -169,9 +174,7 @@ impl Writer<'_> {
             self.out.push_str("#section-break()\n");
         }
         let _ = writeln!(self.out, "#heading(level: {level}, {})\n", content_arg(&s.title));
-        for b in &s.blocks {
-            self.block(b)?;
-        }
+        self.blocks(&s.blocks)?;
         for sub in &s.subsections {
             self.section(sub, level + 1)?;
         }
@@ -183,11 +186,35 @@ impl Writer<'_> {
     fn unnumbered(&mut self, s: &Section) -> Result<(), NoteError> {
         self.out.push_str("#section-break()\n");
         let _ = writeln!(self.out, "#heading(level: 1, numbering: none, {})\n", content_arg(&s.title));
-        for b in &s.blocks {
-            self.block(b)?;
-        }
+        self.blocks(&s.blocks)?;
         for sub in &s.subsections {
             self.section(sub, 2)?;
+        }
+        Ok(())
+    }
+
+    /// The blocks in order. A paragraph that names the table right after
+    /// it ("Значения сведены в таблицу 3.2.") is kept with that table
+    /// (template.typ, `with-next`): when the table moves to the next page
+    /// whole, its sentence goes with it instead of standing a page and two
+    /// figures before it.
+    fn blocks(&mut self, bs: &[Block]) -> Result<(), NoteError> {
+        for (i, b) in bs.iter().enumerate() {
+            let names_next = match (b, bs.get(i + 1)) {
+                (Block::Paragraph(t), Some(Block::Table { label: Some(l), .. })) => t.0.iter().any(|s| matches!(s, Span::Ref(r) if r == l)),
+                _ => false,
+            };
+            if names_next {
+                // a paragraph of its own inside the block (`par`), so it
+                // keeps the first-line indent of every body paragraph
+                self.out.push_str("#with-next(par[");
+                if let Block::Paragraph(t) = b {
+                    self.text(t)?;
+                }
+                self.out.push_str("])\n\n");
+            } else {
+                self.block(b)?;
+            }
         }
         Ok(())
     }
@@ -396,17 +423,35 @@ impl Writer<'_> {
 
 /// A text of the note's words in markup mode: its plain runs as string
 /// literals, its notation runs ([`crate::notation`]) as inline math.
+///
+/// A symbol and the text touching it stay on one line: where a plain run
+/// meets a math run with no space between (`s–ds/dφ`, `R^n,`, `M_ур).`),
+/// a word joiner (U+2060) stands at the seam, so the line never breaks
+/// between a symbol and its punctuation or dash (typst treats an inline
+/// formula as an object a line may break before and after).
 fn content_markup(s: &str) -> String {
+    let runs = crate::notation::runs(s);
+    let math_at = |i: usize| runs.get(i).is_some_and(|(m, r)| *m && check_math(r).is_ok());
     let mut out = String::new();
-    for (math, run) in crate::notation::runs(s) {
-        if math && check_math(&run).is_ok() {
+    for (i, (_, run)) in runs.iter().enumerate() {
+        if math_at(i) {
             let _ = write!(out, "${run}$");
         } else {
-            let _ = write!(out, "#{}", string_literal(&keep_equals(&run)));
+            let mut text = keep_equals(run);
+            if i > 0 && math_at(i - 1) && !text.starts_with(char::is_whitespace) {
+                text.insert(0, WORD_JOINER);
+            }
+            if math_at(i + 1) && !text.ends_with(char::is_whitespace) {
+                text.push(WORD_JOINER);
+            }
+            let _ = write!(out, "#{}", string_literal(&text));
         }
     }
     out
 }
+
+/// U+2060 WORD JOINER: no line break on either side, no width.
+const WORD_JOINER: char = '\u{2060}';
 
 /// A text whose `=`, `≈` and `≤`, `≥` stay on the line of the symbol before
 /// them: the space before each made a no-break space, so a line never ends

@@ -7,8 +7,64 @@ use super::context::Ctx;
 use crate::error::NoteError;
 use crate::model::{Block, Section, Span, Text};
 
+/// A part of the course project, as the note has it (one section each).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Part {
+    /// Metric synthesis of the lever mechanism (метрический синтез).
+    Synthesis,
+    /// Structure and kinematics (структурный и кинематический анализ).
+    Linkage,
+    /// Kinetostatics (кинетостатический анализ).
+    Forces,
+    /// Steady motion and the flywheel (динамика, расчёт маховика).
+    Dynamics,
+    /// The unsteady single stroke (неустановившееся движение за цикл).
+    Stroke,
+    /// The involute gear pair (эвольвентное зацепление).
+    Gear,
+    /// The planetary train (планетарная передача).
+    Planetary,
+    /// The cam mechanism (кулачковый механизм).
+    Cam,
+    /// The drive by a cylinder (привод от цилиндра).
+    Cylinder,
+}
+
+impl Part {
+    /// The key of the part's aim in the words files (`intro_aim_…`).
+    fn aim_key(self) -> &'static str {
+        match self {
+            Part::Synthesis => "intro_aim_synthesis",
+            Part::Linkage => "intro_aim_linkage",
+            Part::Forces => "intro_aim_forces",
+            Part::Dynamics => "intro_aim_dynamics",
+            Part::Stroke => "intro_aim_stroke",
+            Part::Gear => "intro_aim_gear",
+            Part::Planetary => "intro_aim_planetary",
+            Part::Cam => "intro_aim_cam",
+            Part::Cylinder => "intro_aim_cylinder",
+        }
+    }
+
+    /// The key of the part's graphical constructions (`intro_build_…`),
+    /// in the order the note draws them; the diagram-only parts share one.
+    fn build_key(self) -> &'static str {
+        match self {
+            Part::Synthesis => "intro_build_synthesis",
+            Part::Linkage => "intro_build_linkage",
+            Part::Forces => "intro_build_forces",
+            Part::Gear => "intro_build_gear",
+            Part::Planetary => "intro_build_planetary",
+            Part::Dynamics | Part::Stroke | Part::Cam | Part::Cylinder => "intro_build_diagrams",
+        }
+    }
+}
+
 /// The introduction: the course, the project's topic, its aims and parts.
-pub(crate) fn introduction(cx: &Ctx, title: &str, sections: &[Section]) -> Result<Option<Section>, NoteError> {
+/// The aims and the graphical constructions named are those of the parts
+/// the note has (`parts`, one per section): a note without a synthesis
+/// section never speaks of synthesis.
+pub(crate) fn introduction(cx: &Ctx, title: &str, sections: &[Section], parts: &[Part]) -> Result<Option<Section>, NoteError> {
     if sections.is_empty() {
         return Ok(None);
     }
@@ -19,7 +75,13 @@ pub(crate) fn introduction(cx: &Ctx, title: &str, sections: &[Section]) -> Resul
     };
     let mut s = Section::new(cx.w("intro_title")?);
     s.blocks.push(cx.para("intro_course", &[topic])?);
-    s.blocks.push(cx.para("intro_aims", &[])?);
+    let aims = parts.iter().map(|p| cx.w(p.aim_key())).collect::<Result<Vec<_>, _>>()?;
+    s.blocks.push(Block::Paragraph(Text::plain(format!(
+        "{} {}. {}",
+        cx.w("intro_aims_lead")?,
+        join_and(&aims, &cx.w("intro_and")?),
+        cx.w("intro_sections")?
+    ))));
     s.blocks.push(Block::List(
         sections
             .iter()
@@ -30,7 +92,15 @@ pub(crate) fn introduction(cx: &Ctx, title: &str, sections: &[Section]) -> Resul
             })
             .collect(),
     ));
-    s.blocks.push(cx.para("intro_methods", &[])?);
+    let mut builds: Vec<&str> = Vec::new();
+    for p in parts {
+        let k = p.build_key();
+        if !builds.contains(&k) {
+            builds.push(k);
+        }
+    }
+    let builds = builds.iter().map(|k| cx.w(k)).collect::<Result<Vec<_>, _>>()?;
+    s.blocks.push(cx.para("intro_methods_parts", &[builds.join(", ")])?);
     Ok(Some(s))
 }
 
@@ -82,6 +152,15 @@ pub(crate) fn conclusion(cx: &Ctx, sections: &[Section]) -> Result<Option<Sectio
     s.blocks.push(cx.para("conclusion_lead", &[])?);
     s.blocks.push(Block::List(items));
     Ok(Some(s))
+}
+
+/// `a, b and c`: the items with commas, the last one after `and`.
+fn join_and(items: &[String], and: &str) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [head @ .., last] => format!("{} {and} {last}", head.join(", ")),
+    }
 }
 
 /// A title with its first letter in lower case, for the middle of a sentence.

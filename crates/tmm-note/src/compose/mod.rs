@@ -44,6 +44,7 @@ use tmm_report::run::Run;
 use crate::error::NoteError;
 use crate::model::{Lang, Note, ProjectInfo};
 use context::Ctx;
+use frame_parts::Part;
 
 /// The note's language for a run's language.
 ///
@@ -111,20 +112,24 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         designation,
     };
     let mut sections = Vec::new();
-    let builders: [SectionBuilder; 9] = [
-        synthesis::section,
-        linkage::section,
-        forces::section,
-        dynamics::section,
-        stroke::section,
-        gear::section,
-        planetary::section,
-        cam::section,
-        cylinder::section,
+    // each builder with the name of its part (the introduction names the
+    // aims of the parts the note has, and of no other)
+    let builders: [(Part, SectionBuilder); 9] = [
+        (Part::Synthesis, synthesis::section),
+        (Part::Linkage, linkage::section),
+        (Part::Forces, forces::section),
+        (Part::Dynamics, dynamics::section),
+        (Part::Stroke, stroke::section),
+        (Part::Gear, gear::section),
+        (Part::Planetary, planetary::section),
+        (Part::Cam, cam::section),
+        (Part::Cylinder, cylinder::section),
     ];
-    for b in builders {
+    let mut parts = Vec::new();
+    for (part, b) in builders {
         if let Some(s) = b(&cx)? {
             sections.push(s);
+            parts.push(part);
         }
     }
     references::add(&cx, &mut sections)?;
@@ -140,7 +145,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         lang,
         frame: p.frame,
         assignment: assignment::blocks(&cx)?,
-        introduction: frame_parts::introduction(&cx, &project.title, &sections)?,
+        introduction: frame_parts::introduction(&cx, &project.title, &sections, &parts)?,
         conclusion: frame_parts::conclusion(&cx, &sections)?,
         project,
         sections,

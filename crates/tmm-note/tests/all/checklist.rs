@@ -95,6 +95,9 @@ struct Page {
     text: String,
     /// The lines of that text, top to bottom: (baseline, text).
     lines: Vec<(f64, String)>,
+    /// The same lines as their characters, in the order shown (typst sets
+    /// a line from left to right).
+    glyph_lines: Vec<Vec<Glyph>>,
     /// The drawings' boxes (top, bottom).
     figures: Vec<(f64, f64)>,
     /// The horizontal rules outside the drawings.
@@ -205,6 +208,7 @@ fn pages(doc: &pdf_extract::Document, top: f64, bottom: f64) -> Vec<Page> {
         spans.extend(page.rules.iter().map(|&y| (y, y)));
         let mut last: Option<&Glyph> = None;
         let mut lines: Vec<(f64, String)> = Vec::new();
+        let mut glyph_lines: Vec<Vec<Glyph>> = Vec::new();
         for g in glyphs.pages.get(&n).into_iter().flatten() {
             if inside(g) || g.y < top - 1.0 || g.y > bottom + 1.0 {
                 continue;
@@ -216,14 +220,22 @@ fn pages(doc: &pdf_extract::Document, top: f64, bottom: f64) -> Vec<Page> {
                 page.text.push(' ');
             }
             page.text.push_str(&g.ch);
-            match lines.iter_mut().find(|(y, _)| (y - g.y).abs() < 0.4 * g.size) {
-                Some((_, s)) => s.push_str(&g.ch),
-                None => lines.push((g.y, g.ch.clone())),
+            match lines.iter_mut().position(|(y, _)| (*y - g.y).abs() < 0.4 * g.size) {
+                Some(i) => {
+                    lines[i].1.push_str(&g.ch);
+                    glyph_lines[i].push(g.clone());
+                }
+                None => {
+                    lines.push((g.y, g.ch.clone()));
+                    glyph_lines.push(vec![g.clone()]);
+                }
             }
             last = Some(g);
         }
-        lines.sort_by(|a, b| a.0.total_cmp(&b.0));
-        page.lines = lines;
+        let mut order: Vec<usize> = (0..lines.len()).collect();
+        order.sort_by(|a, b| lines[*a].0.total_cmp(&lines[*b].0));
+        page.lines = order.iter().map(|i| lines[*i].clone()).collect();
+        page.glyph_lines = order.iter().map(|i| glyph_lines[*i].clone()).collect();
         page.filled = covered(spans, top, bottom);
         out.push(page);
     }
@@ -284,11 +296,79 @@ fn bad_numbers(text: &str) -> Vec<String> {
     out
 }
 
+/// The words of a note's language the checklist looks for.
+#[derive(Debug, Clone, Copy)]
+struct Words {
+    /// How the continuation line begins and ends.
+    continued: (&'static str, &'static str),
+    /// The word that begins a figure's caption.
+    figure: &'static str,
+    /// The word that begins a table's caption.
+    table: &'static str,
+    /// The sentence that names the table after it, up to the number.
+    collected: &'static str,
+}
+
+const RU: Words = Words {
+    continued: ("Продолжение таблицы", ""),
+    figure: "Рисунок",
+    table: "Таблица",
+    collected: "Значения сведены в таблицу",
+};
+const UK: Words = Words {
+    continued: ("Продовження таблиці", ""),
+    figure: "Рисунок",
+    table: "Таблиця",
+    collected: "Значення зведено в таблицю",
+};
+const EN: Words = Words {
+    continued: ("Table", "continued"),
+    figure: "Figure",
+    table: "Table",
+    collected: "The values are collected in Table",
+};
+
+/// How far below the baseline New Computer Modern's descenders reach (у, р,
+/// ц: about 0.2 em), in em.
+const DESCENDER_EM: f64 = 0.22;
+
+/// `s` without its white space (the PDF's text gives a space back only
+/// where the pen jumps).
+fn squeeze(s: &str) -> String {
+    s.chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+/// The line-breaking faults of a page's lines (GOST 2.105: a symbol keeps
+/// its punctuation and the dash glued to it): a line at the left edge of
+/// the text (`left`, mm) that begins with punctuation or a dash, a line
+/// that ends with a dash glued to the symbol before it (`s–` | `ds/dφ`)
+/// (the middle dot of a unit: `a_compound_units_dot_is_as_narrow_as_a_full_stop`).
+/// A number and its unit are joined by a no-break space
+/// (`number::UNIT_SPACE`) and never parted.
+fn break_faults(lines: &[Vec<Glyph>], left: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let text = |l: &[Glyph]| l.iter().map(|g| g.ch.as_str()).collect::<String>();
+    for l in lines {
+        let (Some(head), Some(tail)) = (l.first(), l.last()) else {
+            continue;
+        };
+        if head.x < left + 2.0 && [",", ".", ";", ":", ")", "–", "-"].contains(&head.ch.as_str()) {
+            out.push(format!("a line begins with \"{}\": {:?}", head.ch, text(l)));
+        }
+        if l.len() >= 2 && tail.ch == "–" {
+            let before = &l[l.len() - 2];
+            if tail.x - before.x < 0.75 * before.size {
+                out.push(format!("a line ends with a dash glued to a symbol: {:?}", text(l)));
+            }
+        }
+    }
+    out
+}
+
 /// Runs the checklist on one note and returns its counts; every failure is
-/// pushed to `faults`.
-/// `continued`: how the continuation line begins and ends in the note's
-/// language; `figure_word` begins a figure's caption.
-fn check(name: &str, note: &Note, continued: (&str, &str), figure_word: &str, faults: &mut Vec<String>) -> Counts {
+/// pushed to `faults`. `words`: the note's language's words.
+fn check(name: &str, note: &Note, words: Words, faults: &mut Vec<String>) -> Counts {
+    let (continued, figure_word) = (words.continued, words.figure);
     let mut note = note.clone();
     blank_figures(&mut note);
     let t = typeset_with_warnings(&note).unwrap();
@@ -296,6 +376,7 @@ fn check(name: &str, note: &Note, continued: (&str, &str), figure_word: &str, fa
         faults.push(format!("{name}: typst warnings {:?}", t.warnings));
     }
     let (top, bottom) = if note.frame { (15.0, 267.0) } else { (20.0, 277.0) };
+    let left = if note.frame { 25.0 } else { 30.0 };
     let doc = pdf_extract::Document::load_mem(&t.pdf).unwrap();
     let pages = pages(&doc, top, bottom);
     let starts = section_starts(&doc);
@@ -339,11 +420,49 @@ fn check(name: &str, note: &Note, continued: (&str, &str), figure_word: &str, fa
                 if k != 0 {
                     faults.push(format!("{name} p. {n}: \"{s}\" not at the head of the page"));
                 }
+                // GOST 2.105-95, 4.4.9: the line heads the new page's text,
+                // above the repeated header: no figure set above it
+                if p.lines.first().is_some_and(|l| l.0 < *y - 1.0) || p.figures.iter().any(|f| f.0 < *y) {
+                    faults.push(format!("{name} p. {n}: \"{s}\" stands under a figure, not at the head of the page"));
+                }
+                // and clear of the table's top rule: its descenders at
+                // least 1 mm above it
+                let size = p
+                    .glyph_lines
+                    .iter()
+                    .zip(&p.lines)
+                    .find(|(_, l)| (l.0 - *y).abs() < 0.1)
+                    .and_then(|(g, _)| g.first())
+                    .map_or(0.0, |g| g.size);
+                if let Some(rule) = p.rules.iter().copied().filter(|r| *r > *y).reduce(f64::min)
+                    && rule - *y - DESCENDER_EM * size < 1.0
+                {
+                    faults.push(format!(
+                        "{name} p. {n}: \"{s}\" {:.2} mm from the table's rule (its descenders {:.2} mm), under 1 mm",
+                        rule - *y,
+                        rule - *y - DESCENDER_EM * size
+                    ));
+                }
                 if !p.rules.iter().any(|r| *r > *y && *r < *y + 8.0) {
                     faults.push(format!("{name} p. {n}: \"{s}\" is not right above a table"));
                 }
                 counts.continued += 1;
             }
+        }
+        // the sentence naming a table stands right before the table's
+        // caption, on its page
+        for (k, (_, line)) in p.lines.iter().enumerate() {
+            let line = squeeze(line);
+            if let Some(rest) = line.strip_prefix(&squeeze(words.collected)) {
+                let number = rest.trim_end_matches('.');
+                let caption = format!("{}{number}", squeeze(words.table));
+                if !p.lines.get(k + 1).is_some_and(|l| squeeze(&l.1).starts_with(&caption)) {
+                    faults.push(format!("{name} p. {n}: \"{line}\" is not right above its table"));
+                }
+            }
+        }
+        for f in break_faults(&p.glyph_lines, left) {
+            faults.push(format!("{name} p. {n}: {f}"));
         }
         let last_of_section = n == pages.len() as u32 || starts.contains(&(n + 1)) || n < first;
         if p.filled < 0.5 {
@@ -422,9 +541,8 @@ fn the_checklist_finders_find_what_they_must() {
     assert!((f - 40.0 / 257.0).abs() < 1e-9, "{f}");
 }
 
-/// One note to check: the task's name and text, the language, how a
-/// continuation line begins and ends, the word of a figure's caption.
-type Job<'a> = (&'a str, &'a String, Language, (&'a str, &'a str), &'a str);
+/// One note to check: the task's name and text, the language, its words.
+type Job<'a> = (&'a str, &'a String, Language, Words);
 
 /// The checklist over every note of the list, in ru, uk and en.
 #[test]
@@ -442,14 +560,10 @@ fn teachers_checklist_over_the_notes() {
             example("textbook/p5-pneumatic-cylinder.toml"),
         ),
     ];
-    let langs = [
-        (Language::Ru, ("Продолжение таблицы", ""), "Рисунок"),
-        (Language::Uk, ("Продовження таблиці", ""), "Рисунок"),
-        (Language::En, ("Table", "continued"), "Figure"),
-    ];
+    let langs = [(Language::Ru, RU), (Language::Uk, UK), (Language::En, EN)];
     let jobs: Vec<Job> = tasks
         .iter()
-        .flat_map(|(n, t)| langs.iter().map(move |(l, w, f)| (*n, t, *l, *w, *f)))
+        .flat_map(|(n, t)| langs.iter().map(move |(l, w)| (*n, t, *l, *w)))
         .collect();
     // two threads: the notes are independent
     let results: Vec<(String, Counts, Vec<String>)> = std::thread::scope(|s| {
@@ -460,13 +574,13 @@ fn teachers_checklist_over_the_notes() {
                 s.spawn(move || {
                     chunk
                         .iter()
-                        .map(|(name, text, lang, word, figure)| {
+                        .map(|(name, text, lang, words)| {
                             let task = TaskSource::new(*name, text.as_str());
                             let run = run_task_in(&task, Some(*lang)).unwrap();
                             let note = compose(&run, &task).unwrap();
                             let label = format!("{name} {lang:?}");
                             let mut faults = Vec::new();
-                            let counts = check(&label, &note, *word, figure, &mut faults);
+                            let counts = check(&label, &note, *words, &mut faults);
                             (label, counts, faults)
                         })
                         .collect::<Vec<_>>()
@@ -498,4 +612,89 @@ fn teachers_checklist_over_the_notes() {
         results.len()
     );
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}
+
+/// A table longer than half a page is split: its continuation heads the
+/// next page under "Продолжение таблицы 1.1", the header repeated below it
+/// and the line's descenders at least 1 mm above the table's rule (the
+/// checks of `check`, which fail on a continuation set under figures or
+/// touching the rule).
+#[test]
+fn a_long_table_continues_at_the_head_of_the_next_page() {
+    use tmm_note::{Cell, Text};
+    let mut note = Note::default();
+    let mut s = Section::new("Раздел");
+    for _ in 0..6 {
+        s.blocks.push(Block::Paragraph(Text::plain(
+            "Абзац текста перед таблицей, достаточно длинный, чтобы занять несколько строк страницы: момент 12,5\u{202f}Н·м, момент инерции 0,25\u{202f}кг·м².",
+        )));
+    }
+    s.blocks.push(Block::Table {
+        caption: "Длинная таблица".into(),
+        header: vec!["Номер".into(), "Значение".into()],
+        rows: (1..=40)
+            .map(|i| {
+                vec![
+                    Cell::Number {
+                        value: f64::from(i),
+                        digits: 3,
+                    },
+                    Cell::Text(Text::plain(format!("строка {i}"))),
+                ]
+            })
+            .collect(),
+        units: vec![],
+        label: Some("tab-long".into()),
+    });
+    note.sections.push(s);
+    let mut faults = Vec::new();
+    let c = check("long table", &note, RU, &mut faults);
+    assert!(c.continued >= 1, "the table is not continued: {c:?}");
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
+}
+
+/// GOST 8.417 writes a compound unit "Н·м" with the middle dot close to its
+/// letters; New Computer Modern's dot advances about 0.7 em (a full stop
+/// 0.28 em) and prints "Н · м". Typeset "Н·м" and "Н.м", each followed by
+/// a formula's 𝑥 (a glyph of another font, so its place in the PDF is its
+/// own, not reckoned by the reader from the widths before it): the dot may
+/// push the 𝑥 at most 0.05 em further than the full stop does.
+#[test]
+fn a_compound_units_dot_is_as_narrow_as_a_full_stop() {
+    use tmm_note::{Span, Text};
+    let x_after = |unit: &str| {
+        let mut note = Note::default();
+        let mut s = Section::new("Раздел");
+        s.blocks.push(Block::Paragraph(Text(vec![
+            Span::Plain(format!("Момент 12,5\u{202f}{unit}")),
+            Span::Math("x".into()),
+        ])));
+        note.sections.push(s);
+        let pdf = typeset_with_warnings(&note).unwrap().pdf;
+        let doc = pdf_extract::Document::load_mem(&pdf).unwrap();
+        let mut glyphs = Glyphs::default();
+        pdf_extract::output_doc(&doc, &mut glyphs).unwrap();
+        let g = glyphs
+            .pages
+            .values()
+            .flatten()
+            .find(|g| g.ch == "\u{1d465}")
+            .unwrap_or_else(|| panic!("no 𝑥 after {unit}"))
+            .clone();
+        (g.x, g.size)
+    };
+    let (dot, size) = x_after("Н·м");
+    let (stop, _) = x_after("Н.м");
+    let extra = (dot - stop) / size;
+    // the measure sees the font's own dot: between digits (no unit) it is
+    // left as the font sets it, wider than a full stop
+    let (digits_dot, _) = x_after("2·3");
+    let (digits_stop, _) = x_after("2.3");
+    let wide = (digits_dot - digits_stop) / size;
+    println!("the dot sets 𝑥 {extra:.3} em further than a full stop (between digits {wide:.3} em)");
+    assert!(
+        wide > 0.2,
+        "the font's dot is not wider than a full stop ({wide:.3} em): the check sees nothing"
+    );
+    assert!(extra.abs() < 0.05, "the dot of Н·м takes {extra:.3} em more than a full stop");
 }

@@ -15,6 +15,7 @@ mod fixtures;
 mod fonts_pdf;
 mod formulas;
 mod frame;
+mod intro_parts;
 mod notation;
 mod pdf_read;
 mod scales_pdf;
