@@ -364,24 +364,28 @@ fn word_end(text: &str, s: usize) -> usize {
 }
 
 /// Byte offset of the first `NaN`, `inf` or `Infinity` that stands as a word.
+///
+/// One pass over the bytes: only a word's first byte (`N`, `i` or `I` after a
+/// non-word byte) is tried against the three words, so a long output is read
+/// once instead of once per word.
 #[doc(hidden)]
 pub fn find_nonfinite_word(text: &str) -> Option<usize> {
     let b = text.as_bytes();
     let is_word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
-    let mut best: Option<usize> = None;
-    for word in ["NaN", "inf", "Infinity"] {
-        let mut from = 0;
-        while let Some(i) = text[from..].find(word) {
-            let s = from + i;
+    let mut prev_is_word = false;
+    for (s, &c) in b.iter().enumerate() {
+        if !prev_is_word && matches!(c, b'N' | b'i' | b'I') {
+            let word: &[u8] = match c {
+                b'N' => b"NaN",
+                b'i' => b"inf",
+                _ => b"Infinity",
+            };
             let e = s + word.len();
-            let before = s == 0 || !is_word(b[s - 1]);
-            let after = e >= b.len() || !is_word(b[e]);
-            if before && after {
-                best = Some(best.map_or(s, |x| x.min(s)));
-                break;
+            if b[s..].starts_with(word) && (e >= b.len() || !is_word(b[e])) {
+                return Some(s);
             }
-            from = e;
         }
+        prev_is_word = is_word(c);
     }
-    best
+    None
 }
