@@ -334,7 +334,15 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     // centre lines and centres
     c.begin_group("centres");
     let cross = 6.0 / s;
-    c.line((0.0, wy0), (0.0, wy1), DASH_DOT);
+    // the line of centres 5 mm past both wheels' outer circles (GOST
+    // 2.303: a centre line runs 2 … 5 mm beyond the contour), within the
+    // window: on the note's page the figure then ends with the wheels
+    let past = 5.0 / s;
+    // (an internal wheel's root circle is its outer one)
+    let (ra1, ra2) = (pair.w1.da.max(pair.w1.df) / 2.0 * 1e3, pair.w2.da.max(pair.w2.df) / 2.0 * 1e3);
+    let reach_lo = (sc.o1.1 - ra1).min(sc.o2.1 - ra2) - past;
+    let reach_hi = (sc.o1.1 + ra1).max(sc.o2.1 + ra2) + past;
+    c.line((0.0, reach_lo.max(wy0)), (0.0, reach_hi.min(wy1)), DASH_DOT);
     for o in [sc.o1, sc.o2] {
         c.line((o.0 - 2.0 * cross, o.1), (o.0 + 2.0 * cross, o.1), DASH_DOT);
     }

@@ -108,7 +108,12 @@ fn texts(svg: &str) -> Vec<Ink> {
 
 /// Every straight piece drawn (lines, polylines, polygons' sides) with its
 /// half width, and every circle (centre, radius).
-fn strokes(svg: &str) -> (Vec<((f64, f64), (f64, f64), f64)>, Vec<((f64, f64), f64)>) {
+/// A straight piece: its ends and half width, mm.
+type Seg = ((f64, f64), (f64, f64), f64);
+/// A circle: its centre and radius (its half width added), mm.
+type Circle = ((f64, f64), f64);
+
+fn strokes(svg: &str) -> (Vec<Seg>, Vec<Circle>) {
     let (mut segs, mut circles) = (Vec::new(), Vec::new());
     let mut rest = svg;
     while let Some(i) = rest.find('<') {
