@@ -197,11 +197,17 @@ impl Writer<'_> {
     /// it ("Значения сведены в таблицу 3.2.") is kept with that table
     /// (template.typ, `with-next`): when the table moves to the next page
     /// whole, its sentence goes with it instead of standing a page and two
-    /// figures before it.
+    /// figures before it. So is a sentence ending with a colon with the
+    /// formula it introduces.
     fn blocks(&mut self, bs: &[Block]) -> Result<(), NoteError> {
         for (i, b) in bs.iter().enumerate() {
             let names_next = match (b, bs.get(i + 1)) {
                 (Block::Paragraph(t), Some(Block::Table { label: Some(l), .. })) => t.0.iter().any(|s| matches!(s, Span::Ref(r) if r == l)),
+                // a sentence ending with a colon introduces the formula
+                // after it ("… по формуле Чебышёва:")
+                (Block::Paragraph(t), Some(Block::Formula { .. } | Block::Calculation(_))) => {
+                    matches!(t.0.last(), Some(Span::Plain(p)) if p.trim_end().ends_with(':'))
+                }
                 _ => false,
             };
             if names_next {

@@ -307,6 +307,9 @@ struct Words {
     table: &'static str,
     /// The sentence that names the table after it, up to the number.
     collected: &'static str,
+    /// How the sentence naming a figure begins, and what follows its
+    /// number ("На рисунке 3.2 —", "Figure 3.2:").
+    figure_ref: (&'static str, char),
 }
 
 const RU: Words = Words {
@@ -314,18 +317,21 @@ const RU: Words = Words {
     figure: "Рисунок",
     table: "Таблица",
     collected: "Значения сведены в таблицу",
+    figure_ref: ("На рисунке", '—'),
 };
 const UK: Words = Words {
     continued: ("Продовження таблиці", ""),
     figure: "Рисунок",
     table: "Таблиця",
     collected: "Значення зведено в таблицю",
+    figure_ref: ("На рисунку", '—'),
 };
 const EN: Words = Words {
     continued: ("Table", "continued"),
     figure: "Figure",
     table: "Table",
     collected: "The values are collected in Table",
+    figure_ref: ("Figure", ':'),
 };
 
 /// How far below the baseline New Computer Modern's descenders reach (у, р,
@@ -459,6 +465,19 @@ fn check(name: &str, note: &Note, words: Words, faults: &mut Vec<String>) -> Cou
                 if !p.lines.get(k + 1).is_some_and(|l| squeeze(&l.1).starts_with(&caption)) {
                     faults.push(format!("{name} p. {n}: \"{line}\" is not right above its table"));
                 }
+            }
+        }
+        // every body paragraph has the paragraph indent (GOST 2.105-95,
+        // 4.1.7: 15 … 17 mm), the sentences naming a figure or a table
+        // too, after a heading or a figure as anywhere
+        for (g, (_, line)) in p.glyph_lines.iter().zip(&p.lines) {
+            let line = squeeze(line);
+            let names_figure = line.strip_prefix(&squeeze(words.figure_ref.0)).is_some_and(|rest| {
+                let after = rest.trim_start_matches(|c: char| c.is_ascii_digit() || c == '.' || c.is_alphabetic() && c.is_uppercase());
+                after.starts_with(words.figure_ref.1)
+            });
+            if (names_figure || line.starts_with(&squeeze(words.collected))) && g.first().is_some_and(|h| h.x < left + 14.0) {
+                faults.push(format!("{name} p. {n}: \"{line}\" without the paragraph indent"));
             }
         }
         for f in break_faults(&p.glyph_lines, left) {
