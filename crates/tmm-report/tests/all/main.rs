@@ -12,6 +12,8 @@ mod dynamics_drawings;
 mod flywheel_period;
 mod force_polygons;
 mod hardening_examples;
+mod label_clearance;
+mod label_ink;
 mod lever_virtual_power;
 mod linkage_examples;
 mod seg_index;
