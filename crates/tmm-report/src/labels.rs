@@ -236,6 +236,60 @@ pub struct Placer {
     items: Vec<crate::picture::Element>,
     /// The drawn lines to keep off, once [`Placer::avoid_lines`] is called.
     lines: Option<LineGrid>,
+    /// The printed ink of each label written ([`ink_rect`]).
+    inks: Vec<Rect>,
+    /// The areas kept free by [`Placer::reserve`].
+    reserved: Vec<Rect>,
+    /// After [`Placer::keep_clear`]: the paper (mm) a label's ink keeps
+    /// from the lines and from the other labels' ink.
+    clear: Option<f64>,
+}
+
+/// The half width of the widest line a label keeps clear of (a diagram's
+/// curve, 0.7 mm), mm.
+const HALF_MAIN: f64 = 0.35;
+
+/// The box of the printed ink of a label of `text` (with index marks) at
+/// `h` mm ([`crate::picture::em`]), centred at `c` as [`Placer::put`]
+/// writes it (or starting there, with `start`), paper mm, y down: osifont's
+/// ink ([`tmm_draw::face::ink`], the 75° slant, capitals 1.14 of the
+/// capital height, descenders) at type B's widths, which are at least
+/// osifont's own, an index raised or lowered by 0.35 of the letter size
+/// as the SVG writes it.
+///
+/// ```
+/// use tmm_report::labels::ink_rect;
+/// let r = ink_rect((50.0, 20.0), "φдс", 2.5, false);
+/// // centred, about 6 mm wide, capitals and descenders about the baseline
+/// assert!((r.x0 + r.x1 - 100.0).abs() < 1.0 && r.x1 - r.x0 > 4.0 && r.x1 - r.x0 < 8.0);
+/// assert!(r.y0 < 20.0 && r.y1 > 21.5);
+/// ```
+pub fn ink_rect(c: (f64, f64), text: &str, h: f64, start: bool) -> Rect {
+    let e = crate::picture::em(h);
+    let ie = crate::picture::index_em(h);
+    let k = |em: f64| em * CAP_PER_EM / 2.5;
+    let parts = parts(text);
+    let all: String = parts.iter().map(|p| p.0.as_str()).collect();
+    let i = tmm_draw::face::ink(&all, tmm_draw::TextHeight::H2_5);
+    let kk = k(e.max(ie));
+    let (left, right) = (kk * i.left, kk * i.right.max(i.width));
+    let (mut above, mut below) = (kk * i.above, kk * i.below);
+    for (t, lvl) in &parts {
+        let j = tmm_draw::face::ink(t, tmm_draw::TextHeight::H2_5);
+        match lvl.signum() {
+            1 => above = above.max(k(ie) * j.above + 0.35 * e),
+            -1 => below = below.max(k(ie) * j.below + 0.35 * e),
+            _ => {}
+        }
+    }
+    let x = if start { c.0 } else { c.0 - 0.5 * kk * i.width };
+    let base = c.1 + 0.35 * e;
+    Rect {
+        x0: x + left.min(0.0),
+        y0: base - above,
+        x1: x + right,
+        y1: base + below,
+    }
 }
 
 /// A label placed by [`Placer::place_near`]: its centre and, when it stands
@@ -269,7 +323,19 @@ impl Placer {
             taken: Vec::new(),
             items: Vec::new(),
             lines: None,
+            inks: Vec::new(),
+            reserved: Vec::new(),
+            clear: None,
         }
+    }
+
+    /// From now on a label fits only where its printed ink ([`ink_rect`])
+    /// keeps `mm` of paper from the lines given to [`Placer::avoid_lines`]
+    /// (from their edges, lines up to 0.7 mm wide) and from every other
+    /// label's ink, and its lettering box ([`text_label_box`]) overlaps no
+    /// other.
+    pub fn keep_clear(&mut self, mm: f64) {
+        self.clear = Some(mm);
     }
 
     /// From now on keep the labels off the segments `segs` (paper mm): a
@@ -309,7 +375,19 @@ impl Placer {
                         let from = (p.0 + c * (d - 0.3), p.1 + s * (d - 0.3));
                         // (the box kept free around the point itself does not count)
                         let at_p = |b: &Rect| p.0 >= b.x0 && p.0 <= b.x1 && p.1 >= b.y0 && p.1 <= b.y1;
-                        let cut = self.taken.iter().any(|b| b.cuts(from, p) && !at_p(b));
+                        let cut = self.taken.iter().any(|b| b.cuts(from, p) && !at_p(b))
+                            || self.clear.is_some_and(|g| {
+                                // (after keep_clear) the leader keeps off the others' ink
+                                self.inks.iter().any(|b| {
+                                    let r = Rect {
+                                        x0: b.x0 - g,
+                                        y0: b.y0 - g,
+                                        x1: b.x1 + g,
+                                        y1: b.y1 + g,
+                                    };
+                                    r.cuts(from, p) && !at_p(&r)
+                                })
+                            });
                         if cut {
                             continue;
                         }
@@ -331,11 +409,27 @@ impl Placer {
     /// Keep labels out of `r` (a table, a legend, a title).
     pub fn reserve(&mut self, r: Rect) {
         self.taken.push(r);
+        self.reserved.push(r);
     }
 
     /// Would a label of `text` at `h` fit centred at `c`?
     pub fn fits(&self, c: (f64, f64), text: &str, h: f64) -> bool {
         let b = text_label_box(c, plain(text).chars().count(), h);
+        if let Some(gap) = self.clear {
+            let i = ink_rect(c, text, h, false);
+            let grown = Rect {
+                x0: i.x0 - gap - HALF_MAIN,
+                y0: i.y0 - gap - HALF_MAIN,
+                x1: i.x1 + gap + HALF_MAIN,
+                y1: i.y1 + gap + HALF_MAIN,
+            };
+            return i.inside(&self.paper)
+                && b.inside(&self.paper)
+                && !self.taken.iter().any(|t| t.hits(&b, 0.0))
+                && !self.inks.iter().any(|t| t.hits(&i, gap))
+                && !self.reserved.iter().any(|t| t.hits(&i, gap))
+                && !self.lines.as_ref().is_some_and(|g| g.hits(&grown));
+        }
         b.inside(&self.paper) && !self.taken.iter().any(|t| t.hits(&b, 0.4)) && !self.lines.as_ref().is_some_and(|g| g.hits(&b))
     }
 
@@ -367,6 +461,7 @@ impl Placer {
         let w = CHAR_WIDTH * crate::picture::em(h) * n as f64;
         let centre = if start { (c.0 + 0.5 * w, c.1) } else { c };
         self.taken.push(text_label_box(centre, n, h));
+        self.inks.push(ink_rect(c, text, h, start));
         self.items.push(crate::picture::Element::Label {
             c,
             text: text.to_string(),

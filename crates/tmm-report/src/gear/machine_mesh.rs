@@ -7,7 +7,10 @@
 //! of the wheel with the tool's positions around the cut that envelope them,
 //! the wheel's reference, base, tip and root circles, and the line of action
 //! of the machine meshing from the pole P to its tangency N with the base
-//! circle.
+//! circle. The two lines run past the tool's teeth on the right, where a
+//! leader turns down from each line's end to a shelf under the tool's body
+//! carrying the line's name, its printed ink 1 mm clear of every line: no
+//! name lies on the teeth.
 //!
 //! Geometry (Chernaya & Timofeev 2019, ch. 3, "станочное зацепление";
 //! derived here for the placement): the pole P at the origin, the machine
@@ -48,6 +51,17 @@ const TITLE_H: f64 = 14.0;
 const LEFT: f64 = 26.0;
 /// The margin on the other sides, mm.
 const MARGIN: f64 = 4.0;
+/// Room right of the tool for the two lines' ends and the leaders that
+/// turn down from them to their names, mm.
+const NAME_ENDS: f64 = 7.0;
+/// How far the lower line runs past the tool's window, and the upper one
+/// past the lower one's end, mm.
+const END_STEP: f64 = 3.0;
+/// Room under the tool's body for the two names on their shelves, mm.
+const NAME_ROWS: f64 = 14.0;
+/// The paper between a name's printed ink and the edge of every line
+/// (thin lines 0.3 mm wide, half of it counted on each side), mm.
+const NAME_CLEAR: f64 = 1.0 + 0.15;
 /// Tool teeth each side of the one at the pole.
 const TEETH: i32 = 2;
 /// Positions of the tool drawn each side of the one shown, enveloping the teeth.
@@ -140,7 +154,7 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     let wy0 = y_ref - (ha + c) * m - 1.6 * m;
     let wy1 = ((ha + c - x) * m + 2.5 * m).max(n_pt.1 + m).max(y_ref + (ha + c) * m + 1.5 * m);
     let (pw, ph) = slot_mm(Slot::Small, sheet);
-    let room = (pw - LEFT - MARGIN, ph - TITLE_H - MARGIN);
+    let room = (pw - LEFT - MARGIN - NAME_ENDS, ph - TITLE_H - MARGIN - NAME_ROWS);
     let scale = match (standard_scale(wx1 - wx0, room.0), standard_scale(wy1 - wy0, room.1)) {
         (Some(a), Some(b)) => {
             if a.factor < b.factor {
@@ -152,9 +166,9 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
         _ => return Canvas::new(10.0, 10.0).finish(),
     };
     let f = scale.factor;
-    let ph = (TITLE_H + MARGIN + f * (wy1 - wy0)).min(ph);
+    let ph = (TITLE_H + MARGIN + NAME_ROWS + f * (wy1 - wy0)).min(ph);
     let mut cv = Canvas::new(pw, ph);
-    cv.set_transform(f, (LEFT - f * wx0, MARGIN - f * wy0));
+    cv.set_transform(f, (LEFT - f * wx0, MARGIN + NAME_ROWS - f * wy0));
     cv.root_attr("data-scale", scale.text);
     let win = (wx0, wx1, wy0, wy1);
     cv.text_paper(
@@ -209,6 +223,7 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
         cv.polyline(&run, Style::THICK.colored(WHEEL));
     }
     let (ra, rf) = (pair.w1.da / 2.0 * k, pair.w1.df / 2.0 * k);
+    let mut circle_names = Vec::new();
     for (rad, style, name) in [
         (r, Style::AXIS.colored(WHEEL), "r"),
         (rb, Style::THIN.colored(WHEEL), "r_{b}"),
@@ -221,33 +236,45 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
         }
         // the name at the circle's right end within the window
         if let Some(end) = pieces.iter().flatten().filter(|q| q.0 > 0.0).max_by(|a, b| a.0.total_cmp(&b.0)) {
-            cv.label(*end, name, H_LABEL, WHEEL);
+            circle_names.push((*end, name));
         }
     }
 
-    // the two lines and the shift between them
-    let ext = |y: f64| ((wx0, y), (wx1, y));
+    // the two lines and the shift between them: each runs past the tool's
+    // window (the upper one farther), where a leader turns down from its
+    // end to a shelf under the tool's body that carries its name, so no
+    // name lies on the teeth
+    let (upper_y, lower_y) = if y_ref <= 0.0 { (0.0, y_ref) } else { (y_ref, 0.0) };
+    let past = |y: f64| if y == upper_y { 2.0 * END_STEP / f } else { END_STEP / f };
     cv.begin_group_data("machine-pitch-line", &[]);
-    let (a, b) = ext(0.0);
-    cv.line(a, b, Style::THIN.colored(RED));
+    cv.line((wx0, 0.0), (wx1 + past(0.0), 0.0), Style::THIN.colored(RED));
     cv.end_group();
     cv.begin_group_data("rack-reference-line", &[]);
-    let (a, b) = ext(y_ref);
-    cv.line(a, b, Style::AXIS.colored(TOOL));
+    cv.line((wx0, y_ref), (wx1 + past(y_ref), y_ref), Style::AXIS.colored(TOOL));
     cv.end_group();
     let lx = cv.to_paper(wx0, 0.0).0;
     let py = |y: f64| cv.to_paper(0.0, y).1;
     let (y0p, y1p) = (py(0.0), py(y_ref));
-    // the lines' names at their right ends, each on its side of the pair
-    let rx = cv.to_paper(wx1, 0.0).0 - 1.0;
     let (top_name, top_color, low_name, low_color) = if y_ref <= 0.0 {
         ("gear.machine_pitch_line", RED, "gear.rack_reference_line", "#000")
     } else {
         ("gear.rack_reference_line", "#000", "gear.machine_pitch_line", RED)
     };
-    let (above, below) = name_baselines(y0p.min(y1p), y0p.max(y1p), word(lang, top_name), word(lang, low_name));
-    cv.text_paper((rx, above), word(lang, top_name), H_LABEL - 1.0, Anchor::End, top_color);
-    cv.text_paper((rx, below), word(lang, low_name), H_LABEL - 1.0, Anchor::End, low_color);
+    let body_bottom = py(wy0);
+    let names = [
+        (word(lang, low_name), low_color, lower_y),
+        (word(lang, top_name), top_color, upper_y),
+    ];
+    for (i, (baseline, shelf)) in name_shelves(body_bottom, names[0].0, names[1].0).into_iter().enumerate() {
+        let (name, color, y) = names[i];
+        let (xe, ye) = cv.to_paper(wx1 + past(y), y);
+        let st = if color == RED { Style::THIN.colored(RED) } else { Style::THIN };
+        let w = name_ink(name);
+        let x_text = xe - NAME_CLEAR - w.x1;
+        cv.line_paper((xe, ye), (xe, shelf), st);
+        cv.line_paper((xe, shelf), (x_text + w.x0 - NAME_CLEAR, shelf), st);
+        cv.text_paper((x_text, baseline), name, H_LABEL - 1.0, Anchor::Start, color);
+    }
     let xm_text = format!("x·m = {} {}", num(x * m, 3, lang), word(lang, "gear.mm"));
     let dx = lx - 8.0;
     if (y1p - y0p).abs() > 1e-9 {
@@ -259,6 +286,10 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
         cv.arrow_paper((dx, 0.5 * (ya + yb)), (dx, yb), Style::THIN, head);
     }
     cv.text_paper((dx - 1.5, 0.5 * (y0p + y1p) + 1.0), &xm_text, H_LABEL - 1.0, Anchor::End, "#000");
+
+    for (end, name) in circle_names {
+        cv.label(end, name, H_LABEL, WHEEL);
+    }
 
     // the rack's pitch p = π·m between the right flanks of two teeth on the
     // tool's reference line, under the tool's root line
@@ -289,14 +320,33 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     cv.finish()
 }
 
-/// The baselines (paper mm, y down) of the names of the two lines of the
-/// machine meshing, one over the upper line at `upper` and one under the
-/// lower at `lower`, each with its printed ink ([`tmm_draw::face::ink`]:
-/// descenders under the upper name, capitals over the lower) 1 mm clear of
-/// its line, so no letter touches the line it names.
+/// The ink of a line's name written from x = 0 on the baseline y = 0
+/// (paper mm, y down), as [`crate::labels::ink_rect`] measures it.
+fn name_ink(name: &str) -> crate::labels::Rect {
+    let e = crate::picture::em(H_LABEL - 1.0);
+    let r = crate::labels::ink_rect((0.0, 0.0), name, H_LABEL - 1.0, true);
+    let base = 0.35 * e;
+    crate::labels::Rect {
+        x0: r.x0,
+        y0: r.y0 - base,
+        x1: r.x1,
+        y1: r.y1 - base,
+    }
+}
+
+/// The baselines and the shelves (paper mm, y down) of the names of the
+/// two lines of the machine meshing under the tool's body, whose lower
+/// edge is at `body`: the lower line's name `low` first, its ink 1 mm
+/// under the body and 1 mm over its shelf, then the upper line's `top`,
+/// its ink 1 mm under the first shelf and over its own
+/// ([`tmm_draw::face::ink`]'s capitals and descenders), so no letter
+/// touches a line.
 #[doc(hidden)]
-pub fn name_baselines(upper: f64, lower: f64, top: &str, low: &str) -> (f64, f64) {
-    let h = tmm_draw::TextHeight::at_most(H_LABEL - 1.0).unwrap_or(tmm_draw::TextHeight::H2_5);
-    let (a, b) = (tmm_draw::face::ink(top, h), tmm_draw::face::ink(low, h));
-    (upper - 1.0 - a.below, lower + 1.0 + b.above)
+pub fn name_shelves(body: f64, low: &str, top: &str) -> [(f64, f64); 2] {
+    let (a, b) = (name_ink(low), name_ink(top));
+    let base1 = body + NAME_CLEAR - a.y0;
+    let shelf1 = base1 + a.y1 + NAME_CLEAR;
+    let base2 = shelf1 + NAME_CLEAR - b.y0;
+    let shelf2 = base2 + b.y1 + NAME_CLEAR;
+    [(base1, shelf1), (base2, shelf2)]
 }

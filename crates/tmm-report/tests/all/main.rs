@@ -13,6 +13,8 @@ mod flywheel_period;
 mod force_polygons;
 mod gear_indices;
 mod hardening_examples;
+mod label_clearance;
+mod label_ink;
 mod lever_drawing;
 mod lever_virtual_power;
 mod linkage_examples;

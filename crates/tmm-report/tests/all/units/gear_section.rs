@@ -48,16 +48,21 @@ fn the_a4_run_makes_drawings_only() {
     assert_eq!(svgs(&a4), svgs(&a1));
 }
 
-/// The names clear their lines by 1 mm: "станочно-начальная прямая"
-/// has descenders (р, у: about 0.8 mm at 2.5 mm), "делительная прямая
-/// инструмента" letters over 2 mm high at print size.
+/// The names stand on their shelves under the tool's body, each 1 mm
+/// clear of the lines over and under it: "делительная прямая
+/// инструмента" (the lower line's, capitals over 2 mm high at print size)
+/// first, "станочно-начальная прямая" (descenders р, у about 0.8 mm)
+/// under it.
 #[test]
-fn the_line_names_keep_clear_of_their_lines() {
-    let (top, low) = ("станочно-начальная прямая", "делительная прямая инструмента");
-    let (a, b) = tmm_report::gear::machine_mesh::name_baselines(100.0, 102.0, top, low);
+fn the_line_names_keep_clear_of_their_shelves() {
+    let (low, top) = ("делительная прямая инструмента", "станочно-начальная прямая");
+    let [(b1, s1), (b2, s2)] = tmm_report::gear::machine_mesh::name_shelves(100.0, low, top);
     let h = tmm_draw::TextHeight::H2_5;
-    let (ka, kb) = (tmm_draw::face::ink(top, h), tmm_draw::face::ink(low, h));
-    // the upper name's feet over the upper line, the lower name's tops under the lower
-    assert!(100.0 - (a + ka.below) >= 1.0 - 1e-9 && ka.below > 0.5);
-    assert!((b - kb.above) - 102.0 >= 1.0 - 1e-9 && kb.above > 2.0);
+    let (kl, kt) = (tmm_draw::face::ink(low, h), tmm_draw::face::ink(top, h));
+    // the ink as printed at the lettering floor (2.5 mm capitals)
+    assert!(kl.above > 2.0 && kt.below > 0.5);
+    assert!((b1 - kl.above) - 100.0 >= 1.0 - 1e-9, "under the body");
+    assert!(s1 - (b1 + kl.below) >= 1.0 - 1e-9, "over its shelf");
+    assert!((b2 - kt.above) - s1 >= 1.0 - 1e-9, "under the first shelf");
+    assert!(s2 - (b2 + kt.below) >= 1.0 - 1e-9, "over its shelf");
 }

@@ -1,0 +1,80 @@
+//! The labels of the machine meshing and of the cam's diagrams keep 1 mm
+//! of paper between their printed ink ([`crate::label_ink`]) and every
+//! line of the drawing and every other text, on the A1 sheet and on the
+//! note's A4 page: the default project, and one cam example per motion law.
+
+use crate::label_ink::faults;
+use crate::svg_read::example;
+use tmm_report::TaskSource;
+use tmm_report::output::Documents;
+use tmm_report::picture::Element;
+use tmm_report::run::{DEFAULT_TASK, note_figures, run_task};
+
+/// The drawings of `text` on the A1 sheets and on the note's page.
+fn both(name: &str, text: &str) -> [(String, Documents); 2] {
+    let t = TaskSource::new(name, text);
+    [
+        (format!("{name} A1"), run_task(&t).unwrap().docs),
+        (format!("{name} A4"), note_figures(&t, None).unwrap()),
+    ]
+}
+
+/// The machine meshing's line names, 1 mm clear of the rack's teeth, the
+/// wheel's teeth and circles, the lines they name and the other texts.
+#[test]
+fn machine_mesh_line_names_clear_every_line() {
+    let mut bad = Vec::new();
+    for (name, text) in [
+        ("default", DEFAULT_TASK.to_string()),
+        ("gear-seed003.toml", example("gear-seed003.toml")),
+        ("gear-internal.toml", example("gear-internal.toml")),
+    ] {
+        for (what, docs) in both(name, &text) {
+            let pic = docs.picture("gear/machine-mesh.svg").unwrap();
+            let names = ["станочно-начальная прямая", "делительная прямая инструмента"];
+            let f = faults(pic, 1.0, |t| names.contains(&t));
+            bad.extend(f.into_iter().map(|f| format!("{what}: {f}")));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// Every text of the cam's motion diagrams (s, v, a, j with the impacts'
+/// Δa, Δv), of its analogues and of its pressure angle 1 mm clear of every
+/// line and of every other text: the default project's cam and one cam
+/// example per motion law (constant acceleration, sine, the textbook's
+/// accelerations of sine and constant pieces).
+#[test]
+fn cam_diagram_labels_clear_every_line_and_each_other() {
+    let mut bad = Vec::new();
+    for (name, text) in [
+        ("default", DEFAULT_TASK.to_string()),
+        ("cam-seed-001-roller.toml", example("cam-seed-001-roller.toml")),
+        ("cam-oscillating-roller.toml", example("cam-oscillating-roller.toml")),
+        ("textbook/p6-cam-translating.toml", example("textbook/p6-cam-translating.toml")),
+    ] {
+        for (what, docs) in both(name, &text) {
+            for file in ["cam/cam-motion.svg", "cam/cam-analogs.svg", "cam/cam-pressure.svg"] {
+                let Some(pic) = docs.picture(file) else { continue };
+                let f = faults(pic, 1.0, |_| true);
+                bad.extend(f.into_iter().map(|f| format!("{what} {file}: {f}")));
+                // every impact's arrow (a red arrowhead) has its size written
+                let red = |c: &str| c.eq_ignore_ascii_case("#c62828");
+                let heads = pic
+                    .elements
+                    .iter()
+                    .filter(|e| matches!(e, Element::Head { color, .. } if red(color)))
+                    .count();
+                let sizes = pic
+                    .elements
+                    .iter()
+                    .filter(|e| matches!(e, Element::Label { color, .. } if red(color)))
+                    .count();
+                if file.ends_with("motion.svg") && heads != sizes {
+                    bad.push(format!("{what} {file}: {heads} impacts, {sizes} sizes written"));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
+}
