@@ -78,9 +78,38 @@ impl Ctx<'_> {
     }
 
     /// A number with the unit of the words key `unit` (empty: none).
+    ///
+    /// A zero (or the rounding noise of one, under 10⁻⁹ in the unit
+    /// printed) is written `0`, not `0,000`: four significant digits of
+    /// nothing say nothing (θ = 0° of a centric crank-slider, an eccentricity
+    /// e = 0 мм).
     pub fn q(&self, value: f64, unit: &str) -> Result<String, NoteError> {
         let u = if unit.is_empty() { String::new() } else { self.w(unit)? };
-        format_quantity(value, DIGITS, &u, self.lang)
+        self.quantity(value, &u)
+    }
+
+    /// `value` and the unit text `u`, a zero as `0` (see [`Ctx::q`]).
+    fn quantity(&self, value: f64, u: &str) -> Result<String, NoteError> {
+        if value.abs() < 1e-9 {
+            let mut s = String::from("0");
+            crate::number::push_unit(&mut s, u);
+            return Ok(s);
+        }
+        format_quantity(value, DIGITS, u, self.lang)
+    }
+
+    /// A relative difference `x` (a ratio) in per cent: `0 %` where it is
+    /// the rounding noise of an exact agreement (under 10⁻⁹), not the
+    /// "0,000" four significant digits of zero would print; otherwise its
+    /// four significant digits in per cent.
+    pub fn relative(&self, x: f64) -> Result<String, NoteError> {
+        if x.abs() < 1e-9 {
+            let mut s = String::from("0");
+            crate::number::push_unit(&mut s, &self.w("u_percent")?);
+            Ok(s)
+        } else {
+            self.q(x * 100.0, "u_percent")
+        }
     }
 
     /// A given value at `ptr`, scaled by `scale`, as the task gives it: its
@@ -104,7 +133,7 @@ impl Ctx<'_> {
 
     /// An angle in radians at `ptr`, printed in degrees.
     pub fn deg(&self, ptr: &str) -> Result<String, NoteError> {
-        format_quantity(self.v(ptr)?.to_degrees(), DIGITS, "°", self.lang)
+        self.quantity(self.v(ptr)?.to_degrees(), "°")
     }
 
     /// The figure of the run's drawing `path`, or `None` if the run has

@@ -133,7 +133,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         &[
             cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?,
             cx.qv("/dynamics/flywheel_inertia", 1.0, "u_kgm2")?,
-            cx.qv("/dynamics/delta", 1.0, "")?,
+            // the δ reached, trimmed as the given one is (0,02 against 0,02,
+            // not 0,02000)
+            cx.given("/dynamics/delta", 1.0, "")?,
             cx.given("/dynamics/delta_requested", 1.0, "")?,
         ],
     )?];

@@ -193,9 +193,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             cx.q(mb, "u_nm")?,
             cx.q(mzh, "u_nm")?,
             // a relative difference under 10⁻⁹ is the rounding noise of
-            // an exact agreement: printed as 0, not as 1,959·10⁻¹⁴
-            cx.q(noise_to_zero(cx.v("/forces/detail/relative_difference")?), "")?,
-            cx.q(noise_to_zero(cx.v("/forces/max_relative_difference")?), "")?,
+            // an exact agreement: printed as 0 %, not as 1,959·10⁻¹⁴
+            cx.relative(cx.v("/forces/detail/relative_difference")?)?,
+            cx.relative(cx.v("/forces/max_relative_difference")?)?,
         ],
     )?];
     if let Some(cycle) = fo.get("cycle").and_then(Value::as_array) {
@@ -295,10 +295,4 @@ fn worked(cx: &Ctx, mb: f64, mzh: f64) -> Result<Vec<Block>, NoteError> {
         )),
     )));
     Ok(out)
-}
-
-/// A relative difference under 10⁻⁹ (the rounding noise of two equal
-/// results in double precision) as 0.
-fn noise_to_zero(v: f64) -> f64 {
-    if v.abs() < 1e-9 { 0.0 } else { v }
 }

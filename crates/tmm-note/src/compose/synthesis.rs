@@ -161,7 +161,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let check = cx.v("/synthesis/check/k")?;
     let conclusions = vec![cx.para(
         "sy_conclusion",
-        &[cx.q(check, "")?, cx.q(k, "")?, cx.q(((check - k) / k).abs(), "")?],
+        &[cx.q(check, "")?, cx.q(k, "")?, cx.relative(((check - k) / k).abs())?],
     )?];
     Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
 }

@@ -18,6 +18,7 @@ mod frame;
 mod intro_parts;
 mod notation;
 mod pdf_read;
+mod prose_numbers;
 mod scales_pdf;
 mod sheets_dxf_pdf;
 mod sheets_pdf;
