@@ -630,7 +630,7 @@ fn wittenbauer(d: &Dynamics, lang: Language, sheet: SheetFormat) -> Picture {
     let top = ch.y.lo + ch.y.len * ch.y.mu;
     let right = ch.x.lo + ch.x.len * ch.x.mu;
     let bx = (ch.x.lo, right, ch.y.lo, top);
-    let tangents = [(&w.upper, RED, "ω_{max}^{2}/2"), (&w.lower, BLUE, "ω_{min}^{2}/2")];
+    let tangents = [(&w.upper, RED, "ω^{2}_{max}/2"), (&w.lower, BLUE, "ω^{2}_{min}/2")];
     for (t, color, name) in tangents {
         if let Some(seg) = clip(t.slope, t.intercept, bx) {
             ch.curve(&[seg.0, seg.1], color, &format!("{name} = {} {u_s}", num(t.slope, 1, lang)), None);

@@ -165,3 +165,29 @@ fn mertsalov_swing_between_the_drawn_extremes_and_the_run_up_settles() {
     assert!(last.1 < first.1 - 20.0, "the speed rises on the drawing: {first:?} → {last:?}");
     assert!(r.contains("ω") && r.contains("t, s"), "axes named");
 }
+
+/// The legend of Wittenbauer's tangents writes ω²_max/2 as the course
+/// does: the square raised right after ω, the index lowered after it (not
+/// ω_max with the square after the index). Read from the SVG's text: ω, then
+/// a raised "2", then a lowered "max"/"min".
+#[test]
+fn wittenbauer_legend_squares_omega_before_its_index() {
+    let s = svg(&docs("seed-001-fourbar.toml"), "wittenbauer.svg");
+    let dy = |run: &str| -> f64 { run.split("dy=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap() };
+    for index in ["max", "min"] {
+        let end = s
+            .find(&format!(">{index}</tspan>"))
+            .unwrap_or_else(|| panic!("no ω {index} in the legend"));
+        let start = s[..end].rfind("<text").unwrap();
+        // the text's content up to the index: ω, the raised 2, the index's run
+        let content = &s[start + s[start..].find('>').unwrap() + 1..end];
+        let runs: Vec<&str> = content.split("<tspan").collect();
+        assert_eq!(runs.len(), 3, "ω, the square, the index: {content}");
+        assert_eq!(runs[0], "ω", "{content}");
+        assert!(
+            runs[1].ends_with(">2</tspan>") && dy(runs[1]) < 0.0,
+            "the square raised after ω: {content}"
+        );
+        assert!(dy(runs[2]) > 0.0, "the index lowered after the square: {content}");
+    }
+}
