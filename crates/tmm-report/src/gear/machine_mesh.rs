@@ -47,7 +47,9 @@ type Pt = (f64, f64);
 
 /// Room above the drawing for its title, mm.
 const TITLE_H: f64 = 14.0;
-/// Room left of the drawing for the dimension of x·m, mm.
+/// Room left of the drawing for the dimension of x·m at least, mm; more
+/// when its text needs it (the text's ink, the 9.5 mm from the tool's end
+/// to the text and a margin).
 const LEFT: f64 = 26.0;
 /// The margin on the other sides, mm.
 const MARGIN: f64 = 4.0;
@@ -154,7 +156,10 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     let wy0 = y_ref - (ha + c) * m - 1.6 * m;
     let wy1 = ((ha + c - x) * m + 2.5 * m).max(n_pt.1 + m).max(y_ref + (ha + c) * m + 1.5 * m);
     let (pw, ph) = slot_mm(Slot::Small, sheet);
-    let room = (pw - LEFT - MARGIN - NAME_ENDS, ph - TITLE_H - MARGIN - NAME_ROWS);
+    let xm_text = format!("x·m = {} {}", num(x * m, 3, lang), word(lang, "gear.mm"));
+    let xm_ink = name_ink(&xm_text);
+    let left = LEFT.max(9.5 + (xm_ink.x1 - xm_ink.x0) + MARGIN);
+    let room = (pw - left - MARGIN - NAME_ENDS, ph - TITLE_H - MARGIN - NAME_ROWS);
     let scale = match (standard_scale(wx1 - wx0, room.0), standard_scale(wy1 - wy0, room.1)) {
         (Some(a), Some(b)) => {
             if a.factor < b.factor {
@@ -168,7 +173,7 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     let f = scale.factor;
     let ph = (TITLE_H + MARGIN + NAME_ROWS + f * (wy1 - wy0)).min(ph);
     let mut cv = Canvas::new(pw, ph);
-    cv.set_transform(f, (LEFT - f * wx0, MARGIN + NAME_ROWS - f * wy0));
+    cv.set_transform(f, (left - f * wx0, MARGIN + NAME_ROWS - f * wy0));
     cv.root_attr("data-scale", scale.text);
     let win = (wx0, wx1, wy0, wy1);
     cv.text_paper(
@@ -275,7 +280,6 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
         cv.line_paper((xe, shelf), (x_text + w.x0 - NAME_CLEAR, shelf), st);
         cv.text_paper((x_text, baseline), name, H_LABEL - 1.0, Anchor::Start, color);
     }
-    let xm_text = format!("x·m = {} {}", num(x * m, 3, lang), word(lang, "gear.mm"));
     let dx = lx - 8.0;
     if (y1p - y0p).abs() > 1e-9 {
         cv.line_paper((lx, y0p), (dx - 2.0, y0p), Style::THIN);

@@ -8,6 +8,7 @@ use crate::svg_read::example;
 use tmm_report::TaskSource;
 use tmm_report::output::Documents;
 use tmm_report::picture::Element;
+use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task};
 
 /// The drawings of `text` on the A1 sheets and on the note's page.
@@ -34,6 +35,37 @@ fn machine_mesh_line_names_clear_every_line() {
             let names = ["станочно-начальная прямая", "делительная прямая инструмента"];
             let f = faults(pic, 1.0, |t| names.contains(&t));
             bad.extend(f.into_iter().map(|f| format!("{what}: {f}")));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// Every text of the machine meshing prints whole on its paper: the
+/// shift's dimension "x·m = 1 мм" left of the tool once lost its "x·" past
+/// the drawing's left edge. Its ink (the same measure as above) lies inside
+/// the paper, 0.5 mm in, on the A1 sheet and the note's page, in ru, uk, en.
+#[test]
+fn machine_mesh_texts_print_inside_the_drawing() {
+    let mut bad = Vec::new();
+    for (name, text) in [
+        ("default", DEFAULT_TASK.to_string()),
+        ("gear-seed003.toml", example("gear-seed003.toml")),
+        ("gear-internal.toml", example("gear-internal.toml")),
+    ] {
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let t = TaskSource::new(name, text.clone()).with_lang(lang);
+            let runs = [("A1", run_task(&t).unwrap().docs), ("A4", note_figures(&t, None).unwrap())];
+            for (what, docs) in runs {
+                let pic = docs.picture("gear/machine-mesh.svg").unwrap();
+                for b in crate::label_ink::texts(pic) {
+                    if b.x0 < 0.5 || b.y0 < 0.5 || b.x1 > pic.width - 0.5 || b.y1 > pic.height - 0.5 {
+                        bad.push(format!(
+                            "{name} {lang:?} {what}: \"{}\" at x {:.1}…{:.1}, y {:.1}…{:.1} on {:.1} × {:.1} mm",
+                            b.text, b.x0, b.x1, b.y0, b.y1, pic.width, pic.height
+                        ));
+                    }
+                }
+            }
         }
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
