@@ -296,14 +296,20 @@ impl Picture {
 
 /// Drops the vertices of a polyline, polygon or path run that lie within
 /// [`tmm_draw::simplify::TOLERANCE_MM`] of the line through the others
-/// (its ends, and a polygon's first vertex, stay).
+/// (its ends, and a polygon's first vertex, stay), its vertices taken at
+/// the 0.001 mm the files print.
 fn simplify_element(e: &mut Element) {
     use tmm_draw::simplify::{TOLERANCE_MM, simplify, simplify_closed};
     let run = |pts: &[P], closed: bool| -> Option<Vec<P>> {
         if pts.len() < 3 {
             return None;
         }
-        let v: Vec<Point> = pts.iter().map(|&(x, y)| Point::new(x, y)).collect();
+        // the vertices at the files' 0.001 mm first: the kept ones print
+        // the same, and which are kept no longer hangs on the last bits of
+        // a coordinate, which WebAssembly's libm and the machine's may set
+        // apart (the page and the CLI then keep the same vertices)
+        let grid = |v: f64| (v * 1000.0).round() / 1000.0;
+        let v: Vec<Point> = pts.iter().map(|&(x, y)| Point::new(grid(x), grid(y))).collect();
         let s = if closed {
             simplify_closed(&v, TOLERANCE_MM)
         } else {
