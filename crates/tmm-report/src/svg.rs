@@ -1225,14 +1225,14 @@ pub fn plot_with_impulses_in(
         let (x0p, yp) = map(xt0, y);
         let (x1p, _) = map(xt1, y);
         c.line_paper((x0p, yp), (x1p, yp), grid);
-        c.text_paper((x0p - 1.5, yp + 1.0), &comma(&yt.label(i), lang), 2.6, Anchor::End, "#000");
+        c.text_paper((x0p - 1.5, yp + 1.0), &yt.printed(i, lang), 2.6, Anchor::End, "#000");
     }
     for i in xt.first..=xt.last {
         let x = xt.value(i);
         let (xp, y0p) = map(x, yt0);
         let (_, y1p) = map(x, yt1);
         c.line_paper((xp, y0p), (xp, y1p), grid);
-        c.text_paper((xp, y0p + 4.0), &comma(&xt.label(i), lang), 2.6, Anchor::Middle, "#000");
+        c.text_paper((xp, y0p + 4.0), &xt.printed(i, lang), 2.6, Anchor::Middle, "#000");
     }
     // axes through zero
     let (ax0, ay0) = map(xt0, 0.0f64.clamp(yt0, yt1));
@@ -1382,6 +1382,21 @@ impl Ticks {
     /// The value of tick `i`.
     pub fn value(&self, i: i64) -> f64 {
         (i * self.k) as f64 * 10f64.powi(self.e)
+    }
+
+    /// The label of tick `i` as a drawing prints it in `lang`: the decimal
+    /// comma of ru/uk and the minus sign − (U+2212, GOST 2.304's sign, not
+    /// the hyphen-minus of [`Ticks::label`]).
+    ///
+    /// ```
+    /// use tmm_report::{project::Language, svg::Ticks};
+    /// let t = Ticks::new(-0.6, 1.6, 8);
+    /// let all: Vec<String> = (t.first..=t.last).map(|i| t.printed(i, Language::Ru)).collect();
+    /// assert!(all.contains(&"\u{2212}0,2".to_string()) && all.contains(&"1,4".to_string()), "{all:?}");
+    /// assert!(all.iter().all(|l| !l.contains('-')));
+    /// ```
+    pub fn printed(&self, i: i64, lang: crate::project::Language) -> String {
+        comma(&self.label(i), lang).replacen('-', "\u{2212}", 1)
     }
 
     /// The label of tick `i`, exact: `2.5`, `0.75`, `-40`, `1.2e6`.

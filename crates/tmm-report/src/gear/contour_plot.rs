@@ -160,7 +160,7 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
             cv.line((x, c.x2.0), (x, c.x2.1), grid);
             if (i - tx.first) % stride == 0 {
                 let p = cv.to_paper(x, c.x2.0);
-                lab.put((p.0, p.1 + 0.9 * hs + 0.5), &tx.label(i).replace('.', dot(lang)), hs, "#000");
+                lab.put((p.0, p.1 + 0.9 * hs + 0.5), &tx.printed(i, lang), hs, "#000");
             }
         }
     }
@@ -171,7 +171,7 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
         if y >= c.x2.0 - 1e-9 && y <= c.x2.1 + 1e-9 {
             cv.line((c.x1.0, y), (c.x1.1, y), grid);
             let p = cv.to_paper(c.x1.0, y);
-            let t = ty.label(i).replace('.', dot(lang));
+            let t = ty.printed(i, lang);
             let w = CHAR_WIDTH * hs * t.chars().count() as f64;
             widest = widest.max(w);
             lab.put((p.0 - 1.0 - 0.5 * w, p.1), &t, hs, "#000");
@@ -237,11 +237,4 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
         let _ = plain(&t);
     }
     finish(cv.finish(), &lab, None)
-}
-
-fn dot(lang: Language) -> &'static str {
-    match lang {
-        Language::En => ".",
-        _ => ",",
-    }
 }

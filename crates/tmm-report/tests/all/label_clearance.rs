@@ -110,3 +110,31 @@ fn cam_diagram_labels_clear_every_line_and_each_other() {
     }
     assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
 }
+
+/// The numbers of the gear section's plots (the blocking contour's x₁, x₂
+/// and the specific sliding's ϑ) print a negative value with the minus sign
+/// − (U+2212), as GOST 2.304's characters have it, never the hyphen-minus:
+/// the blocking contour's x₂ axis runs down to −0,6 in the default project.
+#[test]
+fn plot_numbers_print_the_minus_sign() {
+    let mut negatives = 0;
+    let mut bad = Vec::new();
+    for lang in [Language::Ru, Language::En] {
+        let t = TaskSource::new("default", DEFAULT_TASK).with_lang(lang);
+        let docs = run_task(&t).unwrap().docs;
+        for file in ["gear/contour.svg", "gear/sliding.svg"] {
+            let pic = docs.picture(file).unwrap();
+            for b in crate::label_ink::texts(pic) {
+                let s = b.text.trim();
+                if s.starts_with('\u{2212}') && s[3..].starts_with(|c: char| c.is_ascii_digit()) {
+                    negatives += 1;
+                }
+                if s.starts_with('-') {
+                    bad.push(format!("{lang:?} {file}: \"{s}\""));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    assert!(negatives >= 4, "the plots' negative numbers were found: {negatives}");
+}
