@@ -1048,6 +1048,18 @@ pub fn num(x: f64, decimals: usize, lang: crate::project::Language) -> String {
     comma(&t, lang)
 }
 
+/// [`num`] as a diagram's tick prints it: a negative value with the minus
+/// sign − (U+2212, GOST 2.304), not the hyphen-minus.
+///
+/// ```
+/// use tmm_report::{project::Language, svg::tick_num};
+/// assert_eq!(tick_num(-40.0, 0, Language::Ru), "\u{2212}40");
+/// assert_eq!(tick_num(2.5, 1, Language::Ru), "2,5");
+/// ```
+pub fn tick_num(x: f64, decimals: usize, lang: crate::project::Language) -> String {
+    num(x, decimals, lang).replacen('-', "\u{2212}", 1)
+}
+
 /// A round scale factor μ as printed: its shortest exact decimal form.
 ///
 /// ```

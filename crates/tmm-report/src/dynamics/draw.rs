@@ -231,7 +231,13 @@ impl Chart {
             let v = y.grid(k);
             let (_, py) = ch.map(0.0, v);
             grid.push(((fx, py), (x1, py)));
-            ch.c.rich_paper((fx - 1.2, py + 0.9), &num(v, y.decimals(), lang), H_SMALL, Anchor::End, "#000");
+            ch.c.rich_paper(
+                (fx - 1.2, py + 0.9),
+                &crate::svg::tick_num(v, y.decimals(), lang),
+                H_SMALL,
+                Anchor::End,
+                "#000",
+            );
         }
         match &xk {
             XKind::Phi(marks) => {
@@ -251,7 +257,13 @@ impl Chart {
                     // every second tick; not the frame's corner, where the
                     // lowest y number stands
                     if k % 2 == 0 && k > 0 {
-                        ch.c.rich_paper((px, y1 + X_TICKS), &num(v, x.decimals(), lang), H_SMALL, Anchor::Middle, "#000");
+                        ch.c.rich_paper(
+                            (px, y1 + X_TICKS),
+                            &crate::svg::tick_num(v, x.decimals(), lang),
+                            H_SMALL,
+                            Anchor::Middle,
+                            "#000",
+                        );
                     }
                 }
                 ch.c.rich_paper((x1, y1 + X_TICKS + 4.8), &format!("{s}, {u}"), H_SMALL + 0.5, Anchor::End, "#000");
