@@ -440,6 +440,13 @@ impl Canvas {
         self.segs.segments()
     }
 
+    /// How many straight pieces drawn so far cut the paper box `r` (mm,
+    /// y down), and how many kept boxes it overlaps: 0 when a text whose
+    /// ink is `r` crosses no line and no kept place.
+    pub fn occupied(&self, r: Rect) -> usize {
+        self.segs.count((r.x0, r.y0, r.x1, r.y1), |s| r.cuts(s.0, s.1)) + self.boxes.iter().filter(|b| b.overlaps(&r)).count()
+    }
+
     /// Keep a paper box free of labels placed later.
     pub fn reserve(&mut self, r: Rect) {
         self.boxes.push(r);

@@ -398,7 +398,10 @@ impl Chart {
         let ink = tmm_draw::face::ink(&crate::labels::plain(name), tmm_draw::TextHeight::H2_5);
         let (x, at, anchor) = match self.level_name_outside(py, &ink) {
             Some(at) => (x1 + LEVEL_CLEAR - ink.left.min(0.0), at, Anchor::Start),
-            None => (x1 - 1.0, self.level_name_baseline(py), Anchor::End),
+            None => {
+                let (x, at) = self.level_name_inside(py, &ink);
+                (x, at, Anchor::End)
+            }
         };
         self.levels_outside.push(anchor == Anchor::Start);
         self.levels.push(at);
@@ -420,6 +423,48 @@ impl Chart {
         let step = cap + drop + 0.8;
         let apart = self.levels.iter().all(|l| (at - l).abs() >= step);
         (wide <= LEGEND_X - 2.0 * LEVEL_CLEAR && at - cap >= 0.0 && apart).then_some(at)
+    }
+
+    /// The right end and the baseline of a level's name written inside the
+    /// frame: on [`Chart::level_name_baseline`]'s baseline at the frame's
+    /// right end, or moved left a millimetre at a time until its ink, grown
+    /// by [`LEVEL_CLEAR`], crosses no curve nor line drawn so far and no
+    /// kept place (the curve may pass right where the level's line ends);
+    /// where no place on that baseline is clear, a printed line farther
+    /// from its level's line (twice at most); where none is, the right end.
+    fn level_name_inside(&self, py: f64, ink: &tmm_draw::face::Ink) -> (f64, f64) {
+        let (x1, y1) = self.corner();
+        let (cap, drop) = level_name_ink();
+        let wide = ink.right - ink.left.min(0.0);
+        // a hair less than LEVEL_CLEAR up and down, so that the level's own
+        // line, LEVEL_CLEAR from the ink, does not count; 0.5 mm sideways,
+        // so that the frame 1 mm right of the name does not
+        let (v, h) = (LEVEL_CLEAR - 0.05, 0.5);
+        let clear_at = |x: f64, at: f64| {
+            self.c.occupied(crate::svg::Rect {
+                x0: x - wide - h,
+                y0: at - cap - v,
+                x1: x + h,
+                y1: at + drop + v,
+            }) == 0
+        };
+        let base = self.level_name_baseline(py);
+        let away = if base < py { -1.0 } else { 1.0 };
+        let step = cap + drop + 0.8;
+        for k in 0..3 {
+            let at = base + away * step * f64::from(k);
+            if at - cap < self.fy + 0.3 || at + drop > y1 - 0.3 {
+                break;
+            }
+            let mut x = x1 - 1.0;
+            while x - wide >= self.fx + 1.0 {
+                if clear_at(x, at) {
+                    return (x, at);
+                }
+                x -= 1.0;
+            }
+        }
+        (x1 - 1.0, base)
     }
 
     /// The baseline of a level's name inside the frame at its right end,
@@ -528,9 +573,8 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     let yr = range(mk.energy_constant.iter().copied().chain([mk.energy_max, mk.energy_min]));
     let mut ch = chart(&wd("title_mertsalov"), ("T_I", &u_j), yr, true);
     ch.curve(&xy(&mk.energy_constant), GREEN, "T_I", None);
-    ch.level(mk.energy_max, GREY, "T_{I max}", &format!("{} {u_j}", n3(mk.energy_max)));
-    ch.level(mk.energy_min, GREY, "T_{I min}", &format!("{} {u_j}", n3(mk.energy_min)));
     // the double arrow of ΔT_I where the curve is farthest from mid-height
+    // (before the levels' names, which keep off it and its label)
     let mid = 0.5 * (mk.energy_max + mk.energy_min);
     let xa = deg
         .iter()
@@ -541,7 +585,19 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     let (a, b) = (ch.map(xa, mk.energy_min), ch.map(xa, mk.energy_max));
     ch.c.arrow_paper(a, b, Style::THIN.colored(RED), 2.5);
     ch.c.arrow_paper(b, a, Style::THIN.colored(RED), 2.5);
-    ch.c.label_paper((a.0, 0.5 * (a.1 + b.1)), "ΔT_I", H_SMALL, RED);
+    let dt = ch.c.label_paper((a.0, 0.5 * (a.1 + b.1)), "ΔT_I", H_SMALL, RED);
+    ch.c.reserve(dt);
+    // the arrowheads (filled, not seen as lines): 2.5 mm long, 1 mm wide
+    for p in [a, b] {
+        ch.c.reserve(crate::svg::Rect {
+            x0: p.0 - 1.0,
+            y0: p.1 - 2.6,
+            x1: p.0 + 1.0,
+            y1: p.1 + 2.6,
+        });
+    }
+    ch.level(mk.energy_max, GREY, "T_{I max}", &format!("{} {u_j}", n3(mk.energy_max)));
+    ch.level(mk.energy_min, GREY, "T_{I min}", &format!("{} {u_j}", n3(mk.energy_min)));
     ch.note(&format!("ΔT_I = {} {u_j}", n3(mk.energy_swing)));
     ch.note(&format!("I_I = {} {u_i}", num(mk.inertia, 5, lang)));
     for p in [mk.phi_max, mk.phi_min] {

@@ -6,7 +6,7 @@
 use tmm_planetary::scheme::Mesh;
 
 use super::analysis::Analysis;
-use super::text::{fraction_text, teeth_text};
+use super::text::{fraction_text, teeth_text, willis_text};
 use crate::labels::{H_LABEL, Placer, finish, num};
 use crate::paper::{Slot, round_mu, slot_mm, standard_scale};
 use crate::picture::Picture;
@@ -140,7 +140,8 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         }
         c.line((-0.1 * big, 0.0), (xw, 0.0), Style::THICK.colored(BLUE));
     }
-    c.text_colored((-0.1 * big, 0.04 * big), "1 (ω1)", 3.5, Anchor::Start, BLUE);
+    let p1 = c.to_paper(-0.1 * big, 0.04 * big);
+    c.rich_paper(p1, "1 (ω_1)", 3.5, Anchor::Start, BLUE);
     c.text_colored(
         (x1 + 0.5 * w + 0.02 * big, 0.5 * r1.min(aw - r2).max(0.05 * big)),
         "1",
@@ -182,7 +183,8 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     }
     c.line((xh, -aw), (xh, aw), Style::THICK.colored(RED));
     c.line((xh, 0.0), (xh + 0.3 * big, 0.0), Style::THICK.colored(RED));
-    c.text_colored((xh + 0.3 * big, 0.04 * big), "H (ωH)", 3.5, Anchor::End, RED);
+    let ph = c.to_paper(xh + 0.3 * big, 0.04 * big);
+    c.rich_paper(ph, "H (ω_H)", 3.5, Anchor::End, RED);
     c.end_group();
 
     // --- the velocity picture, same radius scale, levels projected across ---
@@ -215,10 +217,15 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         "#000",
     );
     lab.put_left((fits_at(scheme_right + 15.0, &mu_line), 28.0), &mu_line, H_LABEL, "#000");
-    c.line((0.0, 0.0), (0.0, 1.08 * rmax), Style::THIN);
+    // the radius axis reaches 8 mm past the highest point; its name stands
+    // left of its end, its box kept free of the points' labels
+    let r_top = rmax + 8.0 / sr;
+    c.line((0.0, 0.0), (0.0, r_top), Style::THIN);
     c.line((vlo * k, 0.0), (vhi * k, 0.0), Style::THIN);
     c.text((vhi * k, -0.04 * big), "v", 3.0, Anchor::End);
-    c.text((0.02 * big, 1.08 * rmax), "r", 3.0, Anchor::Start);
+    let r_at = c.to_paper(0.0, r_top);
+    c.text_paper((r_at.0 - 1.2, r_at.1 + 2.0), "r", 3.0, Anchor::End, "#000");
+    lab.reserve(crate::labels::label_box((r_at.0 - 2.2, r_at.1 + 1.0), 1, 3.0));
     let x_of = |v: f64| v * k;
     let mut pts: Vec<((f64, f64), &str)> = Vec::new();
     for (name, rr, v) in [("a", p.a.r, p.a.v), ("b", p.b.r, p.b.v), ("c", p.c.r, p.c.v)] {
@@ -300,16 +307,30 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     c.line_paper((dx0, ax_y), (dx0, pl_y), Style::DASHED);
     c.text_paper((dx0 + 1.0, pl_y + 4.0), "P", 3.2, Anchor::Start, "#000");
     c.text_paper((dx0 + 37.0, ax_y + 1.0), "ω", 3.2, Anchor::Start, "#000");
-    let mut cut = |tanv: f64, name: &str, color: &'static str, up: f64| {
+    // the point 0 (where the fixed wheel 3's ray meets the axis: ω_3 = 0),
+    // written "0; 3" (a comma would read as a decimal one)
+    let zero = "0; 3";
+    let zero_w = crate::labels::CHAR_WIDTH * 3.0 * zero.chars().count() as f64;
+    let mut taken: Vec<(f64, f64, f64)> = vec![(dx0 - 0.5 * zero_w, dx0 + 0.5 * zero_w, 0.0)];
+    c.text_paper((dx0, ax_y - 2.0), zero, 3.0, Anchor::Middle, "#000");
+    let mut cut = |tanv: f64, name: &str, color: &'static str| {
         let x = dx0 + hh * tanv;
         c.line_paper((dx0, pl_y), (x, ax_y), Style::THIN.colored(color).widened(0.35));
+        // a name over its ray's foot, lifted by 3.5 mm steps only where a
+        // name already stands within 1 mm of it
+        let half = 0.5 * crate::labels::CHAR_WIDTH * 3.2 * name.chars().count() as f64;
+        let (lo, hi) = (x - half - 1.0, x + half + 1.0);
+        let up = (0..4)
+            .map(|i| 3.5 * f64::from(i))
+            .find(|u| !taken.iter().any(|t| t.2 == *u && t.0 < hi && lo < t.1))
+            .unwrap_or(14.0);
+        taken.push((lo + 1.0, hi - 1.0, up));
         c.text_paper((x, ax_y - 2.0 - up), name, 3.2, Anchor::Middle, color);
         x - dx0
     };
-    let x1d = cut(tan1, "1", BLUE, 0.0);
-    let xhd = cut(tanh, "H", RED, 3.5);
-    let _x2d = cut(tan2, "2", GREEN, 7.0);
-    c.text_paper((dx0 - 2.0, ax_y - 2.0), "0,3", 3.0, Anchor::End, "#000");
+    let x1d = cut(tan1, "1", BLUE);
+    let xhd = cut(tanh, "H", RED);
+    let _x2d = cut(tan2, "2", GREEN);
     c.end_group();
     let ratio_diagram = x1d / xhd;
 
@@ -317,15 +338,21 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let mm = word(lang, "planetary.mm");
     let lines = [
         format!(
-            "{}: {} = {}",
+            "{}: {}{} = {}",
             word(lang, "planetary.willis"),
-            fraction_text(b),
+            willis_text(sc, &b.teeth),
+            if b.ratio.den == 1 {
+                String::new()
+            } else {
+                format!(" = {}", fraction_text(b))
+            },
             num(lang, b.ratio.value(), 6)
         ),
         format!("{} = {}", word(lang, "planetary.read_picture"), num(lang, ratio_picture, 6)),
         format!("{} = {}", word(lang, "planetary.read_diagram"), num(lang, ratio_diagram, 6)),
         format!(
-            "k = {}; {} {}; a_w = {} {mm}; m = {} {mm}; η = {} ({})",
+            // no-break spaces hold each "name = value unit" on one line
+            "k\u{a0}=\u{a0}{}; {}\u{a0}{}; a_w\u{a0}=\u{a0}{}\u{a0}{mm}; m\u{a0}=\u{a0}{}\u{a0}{mm}; η\u{a0}=\u{a0}{} ({})",
             r.planets,
             word(lang, "planetary.radial"),
             num(lang, b.radial_size, 1),

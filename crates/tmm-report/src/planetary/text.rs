@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use std::fmt::Write as _;
 
 use tmm_planetary::scheme::span_row1;
-use tmm_planetary::{Candidate, Driver, Scheme};
+use tmm_planetary::{Candidate, Driver, Scheme, Teeth};
 
 use super::analysis::Analysis;
 
@@ -20,6 +20,33 @@ pub fn teeth_text(scheme: Scheme, c: &Candidate) -> String {
         .map(|(n, z)| format!("{n} = {z}"))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// Willis' formula for the set, in the drawings' index markup, with its
+/// numbers: `1 + z_3/z_1 = 1 + 85/17` for one planet per row,
+/// `1 − z_2·z_3/(z_1·z_2′) = 1 − 99·101/(100·100)` for a double planet.
+///
+/// Source: `u_1H = 1 − u_13^H`, `u_13^H = (−1)^n_ext·(z2·z3)/(z1·z2′)`
+/// (Artobolevsky, ТММ, 1988; `tmm_planetary::scheme::willis_ratio`, whose
+/// sign this takes); with one planet z2′ = z2 cancels.
+///
+/// ```
+/// use tmm_planetary::{Scheme, Teeth};
+/// use tmm_report::planetary::text::willis_text;
+/// assert_eq!(willis_text(Scheme::SunPlanetRing, &Teeth::single(17, 34, 85)), "1 + z_3/z_1 = 1 + 85/17");
+/// assert_eq!(
+///     willis_text(Scheme::ExtExt, &Teeth::double(100, 99, 100, 101)),
+///     "1 − z_2·z_3/(z_1·z_{2′}) = 1 − 99·101/(100·100)"
+/// );
+/// ```
+pub fn willis_text(scheme: Scheme, t: &Teeth) -> String {
+    let sign = if scheme.willis_sign() > 0 { '+' } else { '−' };
+    let Teeth { z1, z2, z2p, z3 } = *t;
+    if scheme.double_planet() {
+        format!("1 {sign} z_2·z_3/(z_1·z_{{2′}}) = 1 {sign} {z2}·{z3}/({z1}·{z2p})")
+    } else {
+        format!("1 {sign} z_3/z_1 = 1 {sign} {z3}/{z1}")
+    }
 }
 
 /// The ratio as a fraction, or a whole number.
@@ -105,8 +132,13 @@ pub fn report(a: &Analysis) -> String {
     );
     let _ = writeln!(
         s,
-        "  u_1H by Willis               = {} = {}   (error {} %)",
-        fraction_text(b),
+        "  u_1H by Willis               = {}{} = {}   (error {} %)",
+        willis_text(sc, &b.teeth).replace(['_', '{', '}'], ""),
+        if b.ratio.den == 1 {
+            String::new()
+        } else {
+            format!(" = {}", fraction_text(b))
+        },
         g(b.ratio.value()),
         g(b.error * 100.0)
     );

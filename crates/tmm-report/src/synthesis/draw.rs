@@ -200,15 +200,18 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     // the legend under the drawing: each entry broken into lines that stay
     // on the paper at the printed letter size, its sample by the first
     let function = y.kind == Kind::FunctionGeneration;
-    let mut leg = vec![
-        (BLUE, if function { wd("first_position") } else { wd("extreme_first") }),
-        (RED, if function { wd("last_position") } else { wd("extreme_second") }),
+    // the extreme positions named by their point (B′, B″) and the chosen
+    // pivot by its letter, so the legend reads without its colours
+    let extreme = |key: &str| wd(key).replace("{1}", &k.point);
+    let mut leg: Vec<(Option<&str>, String)> = vec![
+        (Some(BLUE), if function { wd("first_position") } else { extreme("extreme_first") }),
+        (Some(RED), if function { wd("last_position") } else { extreme("extreme_second") }),
     ];
     if k.locus.is_some() {
-        leg.push((GREEN, wd("locus")));
+        leg.push((Some(GREEN), wd("locus")));
     }
-    if !function {
-        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot"));
+    if !function && let Some((name, _)) = y.frame.iter().find(|(_, p)| (*p - k.pivot).hypot() <= 1e-9 * size) {
+        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot").replace("{1}", name));
     }
     let side = 6.0;
     let rows: Vec<(Option<&str>, String)> = leg
@@ -217,7 +220,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
             crate::labels::wrap_text(t, H_SMALL, w - side - 10.0 - 0.5)
                 .into_iter()
                 .enumerate()
-                .map(move |(i, l)| (if i == 0 { Some(*col) } else { None }, l))
+                .map(move |(i, l)| (if i == 0 { *col } else { None }, l))
         })
         .collect();
     // rows as far apart as the lettering printed (its floor, picture::em)
@@ -257,7 +260,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         )
     } else {
         format!(
-            "{} {},   μ_l = {} {},   K = {},   θ = {}°",
+            "{} {},   μ_l = {} {},   K_v = {},   θ = {}°",
             word(lang, "common.scale"),
             crate::svg::scale_text(scale.text, lang),
             mu_text(0.001 / scale.factor, lang),

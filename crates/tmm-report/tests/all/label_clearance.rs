@@ -138,3 +138,49 @@ fn plot_numbers_print_the_minus_sign() {
     assert!(bad.is_empty(), "{}", bad.join("\n"));
     assert!(negatives >= 4, "the plots' negative numbers were found: {negatives}");
 }
+
+/// The names of the dynamics diagrams' levels (T_I max and min of
+/// Mertsalov's diagram, ω_max, ω_m, ω_min) keep their ink 0.5 mm off every
+/// curve and line of the diagram but its grid (which lettering may cross):
+/// seed 003's T_I max, written inside the frame at its line's right end,
+/// stood on the curve where the curve rises to meet its level there.
+#[test]
+fn level_names_keep_off_the_curves() {
+    let mut tasks = vec![("default".to_string(), DEFAULT_TASK.to_string())];
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    for sub in ["", "textbook"] {
+        let mut files: Vec<_> = std::fs::read_dir(dir.join(sub))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+            .collect();
+        files.sort();
+        for f in files {
+            tasks.push((f.display().to_string(), std::fs::read_to_string(&f).unwrap()));
+        }
+    }
+    // as read back: the indices' markup gone
+    let names = ["TI max", "TI min", "ωmax", "ωm", "ωmin"];
+    let (mut bad, mut seen) = (Vec::new(), 0);
+    for (name, text) in &tasks {
+        if !text.contains("[dynamics") && name != "default" {
+            continue;
+        }
+        for (what, docs) in both(name, text) {
+            for file in ["dynamics/energy-constant.svg", "dynamics/omega.svg"] {
+                let Some(pic) = docs.picture(file) else { continue };
+                let mut kept = pic.clone();
+                kept.elements
+                    .retain(|e| !matches!(e, Element::Path { class: Some(c), .. } if c == "grid"));
+                seen += crate::label_ink::texts(&kept)
+                    .iter()
+                    .filter(|t| names.contains(&t.text.as_str()))
+                    .count();
+                let f = faults(&kept, 0.1, |t| names.contains(&t));
+                bad.extend(f.into_iter().map(|f| format!("{what} {file}: {f}")));
+            }
+        }
+    }
+    assert!(seen >= 20, "only {seen} level names read");
+    assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
+}

@@ -9,6 +9,7 @@ mod drawings_gear_cam;
 mod drawings_linkage;
 mod drawings_structure;
 mod dynamics_drawings;
+mod figure_words;
 mod flywheel_period;
 mod force_polygons;
 mod gear_indices;
