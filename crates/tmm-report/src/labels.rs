@@ -265,30 +265,68 @@ const HALF_MAIN: f64 = 0.35;
 /// assert!(r.y0 < 20.0 && r.y1 > 21.5);
 /// ```
 pub fn ink_rect(c: (f64, f64), text: &str, h: f64, start: bool) -> Rect {
-    let e = crate::picture::em(h);
-    let ie = crate::picture::index_em(h);
-    let k = |em: f64| em * CAP_PER_EM / 2.5;
-    let parts = parts(text);
-    let all: String = parts.iter().map(|p| p.0.as_str()).collect();
-    let i = tmm_draw::face::ink(&all, tmm_draw::TextHeight::H2_5);
-    let kk = k(e.max(ie));
-    let (left, right) = (kk * i.left, kk * i.right.max(i.width));
-    let (mut above, mut below) = (kk * i.above, kk * i.below);
-    for (t, lvl) in &parts {
-        let j = tmm_draw::face::ink(t, tmm_draw::TextHeight::H2_5);
-        match lvl.signum() {
-            1 => above = above.max(k(ie) * j.above + 0.35 * e),
-            -1 => below = below.max(k(ie) * j.below + 0.35 * e),
-            _ => {}
+    InkShape::of(text, h).at(c, start)
+}
+
+/// What [`ink_rect`] measures of a label's text, wherever it stands: the
+/// text is read and measured once, and each place tried ([`InkShape::at`])
+/// only adds the position, in the same order of operations, so the
+/// rectangle is the same to the last bit.
+#[derive(Debug, Clone, Copy)]
+struct InkShape {
+    /// Half the text's advance at its size (a centred label starts there).
+    half_width: f64,
+    /// 0.35 of the lettering's em: the baseline below the label's middle.
+    drop: f64,
+    left: f64,
+    right: f64,
+    above: f64,
+    below: f64,
+    /// The visible characters ([`text_label_box`]).
+    chars: usize,
+}
+
+impl InkShape {
+    fn of(text: &str, h: f64) -> InkShape {
+        let e = crate::picture::em(h);
+        let ie = crate::picture::index_em(h);
+        let k = |em: f64| em * CAP_PER_EM / 2.5;
+        let parts = parts(text);
+        let all: String = parts.iter().map(|p| p.0.as_str()).collect();
+        let i = tmm_draw::face::ink(&all, tmm_draw::TextHeight::H2_5);
+        let kk = k(e.max(ie));
+        let (left, right) = (kk * i.left, kk * i.right.max(i.width));
+        let (mut above, mut below) = (kk * i.above, kk * i.below);
+        for (t, lvl) in &parts {
+            let j = tmm_draw::face::ink(t, tmm_draw::TextHeight::H2_5);
+            match lvl.signum() {
+                1 => above = above.max(k(ie) * j.above + 0.35 * e),
+                -1 => below = below.max(k(ie) * j.below + 0.35 * e),
+                _ => {}
+            }
+        }
+        InkShape {
+            half_width: 0.5 * kk * i.width,
+            drop: 0.35 * e,
+            left,
+            right,
+            above,
+            below,
+            chars: all.chars().count(),
         }
     }
-    let x = if start { c.0 } else { c.0 - 0.5 * kk * i.width };
-    let base = c.1 + 0.35 * e;
-    Rect {
-        x0: x + left.min(0.0),
-        y0: base - above,
-        x1: x + right,
-        y1: base + below,
+
+    /// The ink's rectangle with the label centred at `c` (or starting at
+    /// `c.0` when `start`).
+    fn at(&self, c: (f64, f64), start: bool) -> Rect {
+        let x = if start { c.0 } else { c.0 - self.half_width };
+        let base = c.1 + self.drop;
+        Rect {
+            x0: x + self.left.min(0.0),
+            y0: base - self.above,
+            x1: x + self.right,
+            y1: base + self.below,
+        }
     }
 }
 
@@ -356,7 +394,9 @@ impl Placer {
     /// another label and which the later labels keep off. `None` when no
     /// place within 45 mm fits (nothing is written).
     pub fn place_near(&mut self, anchors: &[(f64, f64)], text: &str, h: f64, color: &str) -> Option<Near> {
-        let n = plain(text).chars().count();
+        // the text measured once for all the places tried
+        let shape = InkShape::of(text, h);
+        let n = shape.chars;
         let e = crate::picture::em(h);
         let (w, hh) = (CHAR_WIDTH * e * n as f64, 1.2 * e);
         for d in NEAR_MM {
@@ -367,7 +407,7 @@ impl Placer {
                     // the centre so that the box's nearest edge is `d` from the point
                     let t = (0.5 * w / c.abs().max(1e-9)).min(0.5 * hh / s.abs().max(1e-9));
                     let centre = (p.0 + c * (d + t), p.1 + s * (d + t));
-                    if !self.fits(centre, text, h) {
+                    if !self.fits_shaped(centre, &shape, h) {
                         continue;
                     }
                     let leader = if d > NO_LEADER_MM {
@@ -414,9 +454,14 @@ impl Placer {
 
     /// Would a label of `text` at `h` fit centred at `c`?
     pub fn fits(&self, c: (f64, f64), text: &str, h: f64) -> bool {
-        let b = text_label_box(c, plain(text).chars().count(), h);
+        self.fits_shaped(c, &InkShape::of(text, h), h)
+    }
+
+    /// [`Placer::fits`] of a text already measured.
+    fn fits_shaped(&self, c: (f64, f64), shape: &InkShape, h: f64) -> bool {
+        let b = text_label_box(c, shape.chars, h);
         if let Some(gap) = self.clear {
-            let i = ink_rect(c, text, h, false);
+            let i = shape.at(c, false);
             let grown = Rect {
                 x0: i.x0 - gap - HALF_MAIN,
                 y0: i.y0 - gap - HALF_MAIN,
@@ -437,10 +482,11 @@ impl Placer {
     /// fits; returns the centre used, `None` when none fits (then nothing is
     /// written).
     pub fn place(&mut self, candidates: &[(f64, f64)], text: &str, h: f64, color: &str) -> Option<(f64, f64)> {
+        let shape = InkShape::of(text, h);
         let c = candidates
             .iter()
             .copied()
-            .find(|&c| c.0.is_finite() && c.1.is_finite() && self.fits(c, text, h))?;
+            .find(|&c| c.0.is_finite() && c.1.is_finite() && self.fits_shaped(c, &shape, h))?;
         self.put(c, text, h, color);
         Some(c)
     }

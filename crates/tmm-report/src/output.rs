@@ -316,6 +316,12 @@ pub fn check_finite_in(d: &Document, excused: &[String]) -> Result<(), Error> {
 /// word that is not part of the user's text `excused`.
 #[doc(hidden)]
 pub fn find_nonfinite_in(text: &str, excused: &[String]) -> Option<usize> {
+    // Both markers hold "NaN"; a text without any of the three words has
+    // neither a marker nor a word, and `str::contains` reads it in wide
+    // steps (most outputs are megabytes of numbers with none of them).
+    if !["NaN", "inf", "Infinity"].iter().any(|w| text.contains(w)) {
+        return None;
+    }
     let marker = [NONFINITE, NONFINITE_JSON].iter().filter_map(|m| text.find(m)).min();
     let mut from = 0;
     let mut word = None;
