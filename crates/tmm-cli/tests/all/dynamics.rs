@@ -11,6 +11,7 @@ use std::process::Output;
 use crate::common::{self, json};
 
 use serde_json::Value;
+use tmm_testkit::examples;
 
 fn tmm(args: &[&str]) -> Output {
     common::tmm_in(&common::repo(), args)
@@ -26,10 +27,6 @@ fn f(v: &Value) -> f64 {
 
 fn arr(v: &Value) -> Vec<f64> {
     v.as_array().unwrap_or_else(|| panic!("not an array: {v}")).iter().map(f).collect()
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
 }
 
 fn seed001() -> Value {
@@ -185,7 +182,7 @@ fn flywheel_size_from_its_inertia() {
 #[test]
 fn exact_inertia_against_the_core_on_another_grid() {
     let d = seed001();
-    let src = tmm_report::TaskSource::new("seed-001.toml", example("seed-001-fourbar.toml"));
+    let src = tmm_report::TaskSource::new("seed-001.toml", examples::text("seed-001-fourbar.toml"));
     let (l, ft, mut dt) = tmm_report::dynamics::load(&src).unwrap().unwrap();
     dt.spec.points = 720;
     let core = tmm_linkage::dynamics::Dynamics::compute(&l.mech, &ft.loads, &dt.spec).unwrap();
@@ -208,7 +205,7 @@ fn exact_inertia_against_the_core_on_another_grid() {
 /// masses on the shaft other than the crank: M_b = M_d − (I_I − I_crank)·ε₁.
 #[test]
 fn kinetostatics_with_the_true_crank_motion() {
-    let text = example("seed-001-fourbar.toml").replace(
+    let text = examples::text("seed-001-fourbar.toml").replace(
         "at = \"15 deg\"\n\n[[forces.resistance]]",
         "at = \"15 deg\"\ncrank_motion = \"dynamics\"\n\n[[forces.resistance]]",
     );
@@ -296,7 +293,7 @@ fn tmm_run_on_the_default_task_writes_dynamics() {
 /// A task from seed 001 with its `[dynamics]` replaced by `dynamics`; the
 /// error message of `tmm dynamics`.
 fn bad(name: &str, dynamics: &str) -> String {
-    let base = example("seed-001-fourbar.toml");
+    let base = examples::text("seed-001-fourbar.toml");
     let cut = base.find("\n[dynamics]").unwrap();
     bad_text(name, &format!("{}\n{dynamics}", &base[..cut]), "dynamics")
 }
@@ -341,13 +338,13 @@ fn bad_inputs_exit_2_naming_the_field() {
     let e = bad("place", "[dynamics]\ndelta = 0.02\n[dynamics.flywheel]\nplace = \"motor\"\n");
     assert!(e.contains("dynamics.flywheel.place"), "{e}");
     // the place in the file: line and column of the value
-    let base = example("seed-001-fourbar.toml");
+    let base = examples::text("seed-001-fourbar.toml");
     let cut = base.find("\n[dynamics]").unwrap();
     let line = base[..cut].matches('\n').count() + 3;
     let e = bad("located", "[dynamics]\ndelta = -0.5\n");
     assert!(e.contains(&format!("task.toml:{line}:9: dynamics.delta")), "{e}");
     // no [forces]: the loads are missing
-    let base = example("seed-001-fourbar.toml");
+    let base = examples::text("seed-001-fourbar.toml");
     let (a, b) = (base.find("\n[forces]").unwrap(), base.find("\n[dynamics]").unwrap());
     let e = bad_text("no-forces", &format!("{}{}", &base[..a], &base[b..]), "dynamics");
     assert!(e.contains("[forces]") && e.contains("dynamics"), "{e}");
@@ -403,7 +400,7 @@ fn extreme_inputs_exit_2_or_finite_results() {
         );
     }
     // [forces] without the useful resistance: no loads to drive
-    let base = example("seed-001-fourbar.toml");
+    let base = examples::text("seed-001-fourbar.toml");
     let (a, b) = (base.find("[[forces.resistance]]").unwrap(), base.find("[forces.strength]").unwrap());
     let e = bad_text("no-loads", &format!("{}{}", &base[..a], &base[b..]), "dynamics");
     assert!(e.contains("forces") && e.contains("no resisting work"), "{e}");

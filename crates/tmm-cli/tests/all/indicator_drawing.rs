@@ -6,6 +6,9 @@
 //! text, the stroke from the design rule H = 2·l_OA of a slider-crank whose
 //! guide passes through the crank's pivot (both examples).
 
+use tmm_testkit::plane::point_segment;
+use tmm_testkit::svg::{attr, points, shown};
+
 use crate::common::{repo, tmm_in, tmp};
 
 /// A number list `[a, b, …]` after `key = ` on a line.
@@ -88,24 +91,9 @@ fn cylinders(text: &str) -> (Vec<Cylinder>, f64) {
     (out, crank.unwrap())
 }
 
-/// The text shown on the drawing (its tags taken out).
-fn shown_text(svg: &str) -> String {
-    let mut out = String::new();
-    let mut tag = false;
-    for c in svg.chars() {
-        match c {
-            '<' => tag = true,
-            '>' => tag = false,
-            _ if !tag => out.push(c),
-            _ => {}
-        }
-    }
-    out
-}
-
 /// The number printed after `μ{sym} = ` (a decimal comma read as a point).
 fn printed_mu(svg: &str, sym: &str) -> f64 {
-    let t = shown_text(svg);
+    let t = shown(svg);
     let key = format!("μ{sym} = ");
     let at = t.find(&key).unwrap_or_else(|| panic!("no {key} on the drawing")) + key.len();
     let n: String = t[at..]
@@ -119,15 +107,7 @@ fn printed_mu(svg: &str, sym: &str) -> f64 {
 fn curve(svg: &str, name: &str) -> Vec<(f64, f64)> {
     let g = format!("<g class=\"indicator-table\" data-table=\"{name}\">");
     let at = svg.find(&g).unwrap_or_else(|| panic!("no curve of `{name}`"));
-    let d0 = svg[at..].find(" d=\"").unwrap() + at + 4;
-    let d1 = svg[d0..].find('"').unwrap() + d0;
-    svg[d0..d1]
-        .split_whitespace()
-        .map(|p| {
-            let (x, y) = p.trim_start_matches(['M', 'L']).split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
-        })
-        .collect()
+    points(attr(&svg[at..], "d").unwrap())
 }
 
 fn check(example: &str, name: &str) {
@@ -141,9 +121,7 @@ fn check(example: &str, name: &str) {
     for (k, c) in cyls.iter().enumerate() {
         let svg = std::fs::read_to_string(d.join(format!("out/dynamics/indicator-{}.svg", k + 1))).unwrap();
         let (mu_p, mu_s) = (printed_mu(&svg, "p"), printed_mu(&svg, "s"));
-        let o0 = svg.find("data-origin=\"").unwrap() + 13;
-        let o1 = svg[o0..].find('"').unwrap() + o0;
-        let (ox, oy) = svg[o0..o1].split_once(' ').unwrap();
+        let (ox, oy) = attr(&svg, "data-origin").unwrap().split_once(' ').unwrap();
         let (ox, oy): (f64, f64) = (ox.parse().unwrap(), oy.parse().unwrap());
         assert_eq!(c.tables.len(), svg.matches("class=\"indicator-table\"").count());
         for (tname, travel, pressure) in &c.tables {
@@ -156,17 +134,10 @@ fn check(example: &str, name: &str) {
                 // or a vertex Douglas–Peucker dropped, within its 0.01 mm of the
                 // line drawn instead (tmm_draw::simplify), the path's
                 // coordinates written to 0.001 mm
-                let dist = |a: (f64, f64), b: (f64, f64)| {
-                    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-                    let l2 = dx * dx + dy * dy;
-                    let t = if l2 > 0.0 {
-                        (((want.0 - a.0) * dx + (want.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
-                    } else {
-                        0.0
-                    };
-                    (want.0 - a.0 - t * dx).hypot(want.1 - a.1 - t * dy)
-                };
-                let got = pts.windows(2).map(|w| dist(w[0], w[1])).fold(f64::INFINITY, f64::min);
+                let got = pts
+                    .windows(2)
+                    .map(|w| point_segment(want, w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min);
                 assert!(
                     got < 0.01 + 2e-3,
                     "{example} cylinder {} `{tname}` at travel {x}: the curve passes {got} mm from the table's point {want:?}",

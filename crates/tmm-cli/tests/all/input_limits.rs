@@ -6,11 +6,8 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::common::{self, repo, run, tmm_in};
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(repo().join("examples").join(name)).unwrap()
-}
+use crate::common::{self, run, tmm_in};
+use tmm_testkit::examples;
 
 /// A task file `name` with `text` in a fresh folder; (folder, file).
 fn task(tag: &str, name: &str, text: &[u8]) -> (PathBuf, String) {
@@ -54,7 +51,7 @@ fn long_title_is_refused_at_its_place() {
 /// now every name is limited like the `[project]` fields.
 #[test]
 fn long_names_are_refused_at_their_place() {
-    let src = example("seed-001-fourbar.toml");
+    let src = examples::text("seed-001-fourbar.toml");
     let joint = src.replacen("\"B\"", &format!("\"{}\"", "a".repeat(100_000)), 1);
     let (d, f) = task("long-joint", "task.toml", joint.as_bytes());
     let (code, _, err) = run_in(&d, &["run", &f, "--out", "o"]);
@@ -106,7 +103,7 @@ fn words_like_infinity_are_printed_as_given() {
             .unwrap()
             .contains("Infinity")
     );
-    let src = example("class3-triad.toml");
+    let src = examples::text("class3-triad.toml");
     for name in ["inf", "NaN", "Infinity"] {
         let t = src.replacen("name = \"5\"", &format!("name = \"{name}\""), 1);
         assert_ne!(t, src);
@@ -136,7 +133,7 @@ fn control_characters_are_refused() {
         assert!(!d.join("o").exists());
     }
     // in a name too
-    let src = example("seed-001-fourbar.toml").replacen("name = \"2\"", "name = \"2\\u0007\"", 1);
+    let src = examples::text("seed-001-fourbar.toml").replacen("name = \"2\"", "name = \"2\\u0007\"", 1);
     let (d, f) = task("control-name", "task.toml", src.as_bytes());
     let (code, _, err) = run_in(&d, &["linkage", &f]);
     assert_eq!(code, 2);
@@ -147,7 +144,7 @@ fn control_characters_are_refused() {
 /// ρ = ∞; now the stroke is range-checked like the linkage's lengths.
 #[test]
 fn cam_stroke_is_range_checked() {
-    let src = example("cam-seed-001-flat.toml");
+    let src = examples::text("cam-seed-001-flat.toml");
     for (stroke, ok) in [("1e12 m", false), ("99999999999999999999 mm", false), ("13 mm", true)] {
         let t = src.replacen("stroke = \"13 mm\"", &format!("stroke = \"{stroke}\""), 1);
         let (d, f) = task("cam", "task.toml", t.as_bytes());
@@ -199,7 +196,7 @@ fn unbounded_sliding_is_said_in_words() {
 /// and column; the other file-level messages carry a place too.
 #[test]
 fn file_level_messages_are_located() {
-    let src = example("seed-001-fourbar.toml");
+    let src = examples::text("seed-001-fourbar.toml");
     let at = src.find("length = \"120 mm\"").unwrap() + "length = \"1".len();
     let mut bytes = src.into_bytes();
     bytes[at] = 0xff;
@@ -301,7 +298,7 @@ fn synthesis_refusals_name_the_option() {
             assert!(!err.contains(bad), "{args:?}: {err}");
         }
     }
-    let src = example("synth-seed-002-ex3-shaper.toml");
+    let src = examples::text("synth-seed-002-ex3-shaper.toml");
     let line = src.lines().position(|l| l.starts_with("coupler_ratio")).unwrap() + 1;
     let t = src
         .lines()

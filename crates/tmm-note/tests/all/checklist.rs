@@ -32,6 +32,7 @@ use tmm_note::{Block, Note, Section, compose, typeset_with_warnings};
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_testkit::examples::text as example;
 
 use super::pdf_read::{MM_PER_PT, read_doc};
 
@@ -539,11 +540,6 @@ fn blank_figures(note: &mut Note) {
     for s in note.introduction.iter_mut().chain(note.conclusion.iter_mut()) {
         sections(std::slice::from_mut(s));
     }
-}
-
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 #[test]

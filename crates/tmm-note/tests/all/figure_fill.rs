@@ -20,6 +20,9 @@
 use tmm_note::Block;
 use tmm_report::run::run_task;
 
+use tmm_testkit::examples;
+use tmm_testkit::svg::{attr, num, points, view_box};
+
 use super::figure_fit::text_boxes;
 use super::fixtures::{note_figures, task};
 
@@ -27,66 +30,6 @@ use super::fixtures::{note_figures, task};
 const SHARE: f64 = 0.6;
 /// The tallest empty band across a figure, as a share of its height.
 const BAND: f64 = 0.25;
-
-/// The value of attribute `name` in the tag `tag`.
-fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(&tag[i..i + tag[i..].find('"')?])
-}
-
-fn num(tag: &str, name: &str) -> Option<f64> {
-    attr(tag, name).and_then(|v| v.trim_end_matches("mm").parse().ok())
-}
-
-/// The numbers of a `points` list or a path's `d` (M, L, H, V only: the
-/// drawings write no curves), as points; H and V take the other
-/// coordinate from the pen.
-fn path_points(d: &str) -> Vec<(f64, f64)> {
-    let mut out = Vec::new();
-    let (mut pen, mut cmd) = ((0.0, 0.0), 'M');
-    let mut nums: Vec<f64> = Vec::new();
-    let flush = |cmd: char, nums: &mut Vec<f64>, pen: &mut (f64, f64), out: &mut Vec<(f64, f64)>| {
-        match cmd {
-            'H' => nums.iter().for_each(|&x| {
-                pen.0 = x;
-                out.push(*pen);
-            }),
-            'V' => nums.iter().for_each(|&y| {
-                pen.1 = y;
-                out.push(*pen);
-            }),
-            _ => nums.chunks_exact(2).for_each(|c| {
-                *pen = (c[0], c[1]);
-                out.push(*pen);
-            }),
-        }
-        nums.clear();
-    };
-    let mut token = String::new();
-    for c in d.chars().chain([' ']) {
-        if c.is_ascii_alphabetic() && c != 'e' {
-            if let Ok(v) = token.parse() {
-                nums.push(v);
-            }
-            token.clear();
-            flush(cmd, &mut nums, &mut pen, &mut out);
-            cmd = c.to_ascii_uppercase();
-        } else if c == ',' || c.is_whitespace() || (c == '-' && !token.is_empty() && !token.ends_with('e')) {
-            if let Ok(v) = token.parse() {
-                nums.push(v);
-            }
-            token.clear();
-            if c == '-' {
-                token.push(c);
-            }
-        } else {
-            token.push(c);
-        }
-    }
-    flush(cmd, &mut nums, &mut pen, &mut out);
-    out
-}
 
 /// The boxes (x0, y0, x1, y1) of everything drawn in `svg`, the white
 /// sheet under it left out.
@@ -104,8 +47,8 @@ fn ink(svg: &str) -> Vec<[f64; 4]> {
                 (Some(a), Some(b), Some(c), Some(d)) => vec![(a, b), (c, d)],
                 _ => vec![],
             },
-            "polyline" | "polygon" => path_points(attr(tag, "points").unwrap_or("")),
-            "path" => path_points(attr(tag, "d").unwrap_or("")),
+            "polyline" | "polygon" => points(attr(tag, "points").unwrap_or("")),
+            "path" => points(attr(tag, "d").unwrap_or("")),
             "circle" => match (num(tag, "cx"), num(tag, "cy"), num(tag, "r")) {
                 (Some(x), Some(y), Some(r)) => vec![(x - r, y - r), (x + r, y + r)],
                 _ => vec![],
@@ -127,23 +70,10 @@ fn ink(svg: &str) -> Vec<[f64; 4]> {
     out
 }
 
-/// The figure's viewBox (x, y, w, h).
-fn view_box(svg: &str) -> [f64; 4] {
-    let root = &svg[svg.find("<svg").unwrap_or(0)..];
-    let root = &root[..root.find('>').unwrap_or(root.len())];
-    let v: Vec<f64> = attr(root, "viewBox")
-        .unwrap_or("")
-        .split_whitespace()
-        .filter_map(|x| x.parse().ok())
-        .collect();
-    assert_eq!(v.len(), 4, "a figure without its viewBox");
-    [v[0], v[1], v[2], v[3]]
-}
-
 /// How a figure fills its box: the ink's box as shares of the width and
 /// the height, and the tallest empty band across it as a share of the height.
 fn fill(svg: &str) -> (f64, f64, f64) {
-    let v = view_box(svg);
+    let v = view_box(svg).expect("a figure without its viewBox");
     let boxes = ink(svg);
     let Some(first) = boxes.first() else { return (0.0, 0.0, 1.0) };
     let b = boxes
@@ -176,10 +106,8 @@ fn the_fill_finder_finds_what_it_must() {
         "{w} {h} {band}"
     );
     // a path with H and V, a polygon, a circle
-    assert_eq!(
-        path_points("M10,20H30V5L1,2"),
-        vec![(10.0, 20.0), (30.0, 20.0), (30.0, 5.0), (1.0, 2.0)]
-    );
+    let (w, h, _) = fill(&svg("<path d=\"M10,20H90V5L10,80\"/>"));
+    assert!((w - 0.8).abs() < 1e-9 && (h - 0.75).abs() < 1e-9, "{w} {h}");
     let (w, h, _) = fill(&svg("<polygon points=\"0,0 100,0 50,10\"/><circle cx=\"50\" cy=\"90\" r=\"10\"/>"));
     assert!((w - 1.0).abs() < 1e-9 && (h - 1.0).abs() < 1e-9);
     // a title 60 mm above its drawing: an empty band of 0.6
@@ -191,19 +119,8 @@ fn the_fill_finder_finds_what_it_must() {
 
 /// The default project and every example under examples/.
 fn names() -> Vec<String> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
     let mut out = vec!["default".to_string()];
-    for sub in ["", "textbook/"] {
-        let mut files: Vec<String> = std::fs::read_dir(dir.join(sub))
-            .unwrap()
-            .filter_map(|e| e.ok())
-            .map(|e| e.file_name().to_string_lossy().into_owned())
-            .filter(|n| n.ends_with(".toml"))
-            .map(|n| format!("{sub}{n}"))
-            .collect();
-        files.sort();
-        out.extend(files);
-    }
+    out.extend(examples::names());
     out
 }
 

@@ -14,38 +14,24 @@
 //! the depth below it at the left; 0.85 of the font size above the
 //! baseline and 0.35 below; rotated texts (the axes' names) are left out.
 
-use tmm_note::{Block, Note, Section, compose};
+use tmm_note::{Block, compose};
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_testkit::examples;
+use tmm_testkit::svg::{attr, num, unescape, view_box};
 
-/// The value of attribute `name` in the tag `tag`.
-fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(&tag[i..i + tag[i..].find('"')?])
-}
+use super::fixtures::note_figures;
 
 /// The advance of `c` in ems in the drawing face (0.6 em if it lacks it).
 fn advance(c: char) -> f64 {
     tmm_draw::face::advance_em(c).unwrap_or(0.6)
 }
 
-/// A number attribute (a trailing `mm` allowed).
-fn num_attr(tag: &str, name: &str) -> Option<f64> {
-    attr(tag, name).and_then(|v| v.trim_end_matches("mm").parse::<f64>().ok())
-}
-
 /// The shown width of a text's body at font size `size`: its runs, each
 /// its `textLength` or its characters' advances at its font size, and
 /// each `tspan`'s `dx`; and the largest font size shown.
 fn body_width(body: &str, size: f64) -> (String, f64, f64) {
-    let unescape = |s: &str| {
-        s.replace("&amp;", "&")
-            .replace("&lt;", "<")
-            .replace("&gt;", ">")
-            .replace("&quot;", "\"")
-    };
     let (mut shown, mut width, mut largest) = (String::new(), 0.0, 0.0_f64);
     // (font size, text length) of the element the characters belong to
     let mut stack: Vec<(f64, Option<f64>)> = vec![(size, None)];
@@ -70,10 +56,10 @@ fn body_width(body: &str, size: f64) -> (String, f64, f64) {
                 }
             } else {
                 let parent = stack.last().map_or(size, |t| t.0);
-                let s = num_attr(tag, "font-size").unwrap_or(parent);
-                width += num_attr(tag, "dx").unwrap_or(0.0);
+                let s = num(tag, "font-size").unwrap_or(parent);
+                width += num(tag, "dx").unwrap_or(0.0);
                 if !tag.ends_with("/>") {
-                    stack.push((s, num_attr(tag, "textLength")));
+                    stack.push((s, num(tag, "textLength")));
                 }
             }
             rest = &rest[tag.len()..];
@@ -106,9 +92,9 @@ pub(super) fn text_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
             .and_then(|t| t.split("translate(").nth(1))
             .and_then(|t| t.split(')').next())
             .map(|t| t.split([' ', ',']).filter_map(|v| v.parse::<f64>().ok()).collect::<Vec<_>>());
-        let x = num_attr(tag, "x").or_else(|| translate.as_ref().and_then(|t| t.first().copied()));
-        let y = num_attr(tag, "y").or_else(|| translate.as_ref().and_then(|t| t.get(1).copied()));
-        let (Some(x), Some(y), Some(s)) = (x, y, num_attr(tag, "font-size")) else {
+        let x = num(tag, "x").or_else(|| translate.as_ref().and_then(|t| t.first().copied()));
+        let y = num(tag, "y").or_else(|| translate.as_ref().and_then(|t| t.get(1).copied()));
+        let (Some(x), Some(y), Some(s)) = (x, y, num(tag, "font-size")) else {
             continue;
         };
         let (shown, w, largest) = body_width(body, s);
@@ -133,14 +119,7 @@ pub(super) fn text_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
 /// The texts of `svg` whose box leaves the `viewBox` by more than `slack`
 /// mm, with how far.
 fn outside(svg: &str, slack: f64) -> Vec<(String, f64)> {
-    let root = &svg[svg.find("<svg").unwrap_or(0)..];
-    let root = &root[..root.find('>').unwrap_or(root.len())];
-    let v: Vec<f64> = attr(root, "viewBox")
-        .unwrap_or("")
-        .split_whitespace()
-        .filter_map(|x| x.parse().ok())
-        .collect();
-    assert_eq!(v.len(), 4, "a figure without its viewBox");
+    let v = view_box(svg).expect("a figure without its viewBox");
     text_boxes(svg)
         .into_iter()
         .filter_map(|(t, b)| {
@@ -148,28 +127,6 @@ fn outside(svg: &str, slack: f64) -> Vec<(String, f64)> {
             (out > slack).then_some((t, out))
         })
         .collect()
-}
-
-fn figures(note: &Note) -> Vec<(String, String)> {
-    fn walk(ss: &[Section], out: &mut Vec<(String, String)>) {
-        for s in ss {
-            for b in &s.blocks {
-                if let Block::Figure { caption, svg, .. } = b {
-                    out.push((caption.clone(), svg.clone()));
-                }
-            }
-            walk(&s.subsections, out);
-        }
-    }
-    let mut out = Vec::new();
-    walk(&note.sections, &mut out);
-    walk(&note.appendices, &mut out);
-    out
-}
-
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 #[test]
@@ -209,17 +166,17 @@ fn the_fit_finder_finds_what_it_must() {
 fn no_text_of_a_note_figure_leaves_its_drawing() {
     let tasks: Vec<(&str, String)> = vec![
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("cam-oscillating-roller.toml", example("cam-oscillating-roller.toml")),
-        ("cam-seed-001-roller.toml", example("cam-seed-001-roller.toml")),
-        ("cam-seed-001-flat.toml", example("cam-seed-001-flat.toml")),
-        ("gear-seed001.toml", example("gear-seed001.toml")),
-        ("planetary-ext-int.toml", example("planetary-ext-int.toml")),
-        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
-        ("synth-seed-003-six-bar.toml", example("synth-seed-003-six-bar.toml")),
-        ("textbook/p2-engine.toml", example("textbook/p2-engine.toml")),
+        ("cam-oscillating-roller.toml", examples::text("cam-oscillating-roller.toml")),
+        ("cam-seed-001-roller.toml", examples::text("cam-seed-001-roller.toml")),
+        ("cam-seed-001-flat.toml", examples::text("cam-seed-001-flat.toml")),
+        ("gear-seed001.toml", examples::text("gear-seed001.toml")),
+        ("planetary-ext-int.toml", examples::text("planetary-ext-int.toml")),
+        ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
+        ("synth-seed-003-six-bar.toml", examples::text("synth-seed-003-six-bar.toml")),
+        ("textbook/p2-engine.toml", examples::text("textbook/p2-engine.toml")),
         (
             "textbook/p5-pneumatic-cylinder.toml",
-            example("textbook/p5-pneumatic-cylinder.toml"),
+            examples::text("textbook/p5-pneumatic-cylinder.toml"),
         ),
     ];
     let mut faults = Vec::new();
@@ -229,10 +186,11 @@ fn no_text_of_a_note_figure_leaves_its_drawing() {
             let task = TaskSource::new(*name, text.as_str());
             let run = run_task_in(&task, Some(lang)).unwrap();
             let note = compose(&run, &task).unwrap();
-            for (caption, svg) in figures(&note) {
+            for b in note_figures(&note) {
+                let Block::Figure { caption, svg, .. } = b else { continue };
                 drawn += 1;
-                lettering += text_boxes(&svg).len();
-                for (t, by) in outside(&svg, 0.5) {
+                lettering += text_boxes(svg).len();
+                for (t, by) in outside(svg, 0.5) {
                     faults.push(format!("{name} {lang:?}, \"{caption}\": \"{t}\" {by:.1} mm outside"));
                 }
             }

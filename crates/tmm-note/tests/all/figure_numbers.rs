@@ -31,6 +31,7 @@ use tmm_note::{Block, Cell, Note, Section, Span, Text, compose};
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_testkit::examples;
 
 /// A printed number: its value, half a unit of its last digit, and whether
 /// a sign was written.
@@ -410,11 +411,6 @@ fn check(name: &str, note: &Note, faults: &mut Vec<String>) -> Counts {
     counts
 }
 
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
-
 fn svg(texts: &[&str]) -> String {
     let mut s = String::from(r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50">"#);
     for t in texts {
@@ -540,15 +536,15 @@ const DEFAULT_PAIRED: [&str; 8] = [
 fn the_numbers_of_each_figure_equal_its_tables() {
     let tasks: Vec<(&str, String)> = vec![
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
-        ("synth-seed-003-six-bar.toml", example("synth-seed-003-six-bar.toml")),
-        ("gear-seed001.toml", example("gear-seed001.toml")),
-        ("planetary-ext-int.toml", example("planetary-ext-int.toml")),
-        ("cam-oscillating-roller.toml", example("cam-oscillating-roller.toml")),
-        ("textbook/p2-engine.toml", example("textbook/p2-engine.toml")),
+        ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
+        ("synth-seed-003-six-bar.toml", examples::text("synth-seed-003-six-bar.toml")),
+        ("gear-seed001.toml", examples::text("gear-seed001.toml")),
+        ("planetary-ext-int.toml", examples::text("planetary-ext-int.toml")),
+        ("cam-oscillating-roller.toml", examples::text("cam-oscillating-roller.toml")),
+        ("textbook/p2-engine.toml", examples::text("textbook/p2-engine.toml")),
         (
             "textbook/p5-pneumatic-cylinder.toml",
-            example("textbook/p5-pneumatic-cylinder.toml"),
+            examples::text("textbook/p5-pneumatic-cylinder.toml"),
         ),
     ];
     let langs = [Language::Ru, Language::Uk, Language::En];

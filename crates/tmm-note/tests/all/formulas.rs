@@ -14,6 +14,7 @@ use tmm_note::{Block, Lang, Note, Section, compose, typeset_with_warnings};
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_testkit::examples;
 
 fn calculations(note: &Note) -> Vec<Calculation> {
     fn walk(ss: &[Section], out: &mut Vec<Calculation>) {
@@ -41,11 +42,6 @@ fn note_of(name: &str, text: &str, lang: Language) -> Note {
     let task = TaskSource::new(name, text);
     let run = run_task_in(&task, Some(lang)).unwrap();
     compose(&run, &task).unwrap()
-}
-
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 /// Checks every calculation, requires at least the `expected` symbols, and
@@ -130,7 +126,7 @@ fn the_engine_and_six_bar_examples_formulas_check() {
         ("compressor-two-stage.toml", &["W", "v_(A)"][..]),
         ("seed-003-sixbar.toml", &["W", "v_(A)"][..]),
     ] {
-        let note = note_of(file, &example(file), Language::Ru);
+        let note = note_of(file, &examples::text(file), Language::Ru);
         check_all(&note, expected);
         assert!(!calculations(&note).is_empty(), "{file}");
     }
@@ -150,7 +146,7 @@ fn the_cam_sections_worked_speed_and_acceleration_check() {
     // against the report's speed and acceleration at their largest
     for (file, text) in [
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("cam-seed-001-roller.toml", example("cam-seed-001-roller.toml")),
+        ("cam-seed-001-roller.toml", examples::text("cam-seed-001-roller.toml")),
     ] {
         for lang in [Language::Ru, Language::En] {
             let note = note_of(file, &text, lang);

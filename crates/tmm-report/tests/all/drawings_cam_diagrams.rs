@@ -7,10 +7,11 @@
 
 use serde_json::Value;
 
-use crate::svg_read::{attr_s, run_example as run, shown};
+use crate::svg_read::{attr_s, paper, run_example as run, shown};
 use tmm_report::paper::{Slot, slot_mm};
 use tmm_report::project::SheetFormat;
 use tmm_report::run::Run;
+use tmm_testkit::svg::num;
 
 const FILES: [&str; 4] = ["cam-analogs.svg", "cam-motion.svg", "cam-pressure.svg", "cam-sizing.svg"];
 const EXAMPLES: [&str; 3] = ["cam-seed-001-roller.toml", "cam-seed-001-flat.toml", "cam-oscillating-roller.toml"];
@@ -22,18 +23,6 @@ fn svg<'a>(r: &'a Run, file: &str) -> &'a str {
 
 fn json(r: &Run) -> Value {
     serde_json::from_str(r.docs.get("cam/cam.json").unwrap().as_text().unwrap()).unwrap()
-}
-
-fn attr(el: &str, name: &str) -> Option<f64> {
-    attr_s(el, name)?.parse().ok()
-}
-
-/// The paper size (mm) from the root's width and height.
-fn paper(s: &str) -> (f64, f64) {
-    let root = &s[s.find("<svg").unwrap()..];
-    let root = &root[..root.find('>').unwrap()];
-    let mm = |k: &str| attr_s(root, k).unwrap().trim_end_matches("mm").parse::<f64>().unwrap();
-    (mm("width"), mm("height"))
 }
 
 /// The elements starting with `tag` (`<g class="diagram"`), each up to its `>`.
@@ -85,7 +74,7 @@ fn every_diagram_fits_its_slot_on_a1_and_a2() {
             let r = run(ex, sheet, "ru");
             for file in FILES {
                 let s = svg(&r, file);
-                let (w, h) = paper(s);
+                let (w, h, _) = paper(s);
                 if file == "cam-sizing.svg" {
                     assert!(w <= pw + 1e-9 && h <= ph + 1e-9, "{ex} {sheet} {file}: {w}×{h}");
                 } else {
@@ -120,8 +109,8 @@ fn stroke_and_velocity_analogue_are_drawn_at_their_round_scale() {
             assert_eq!(ps.len(), 3);
             for (k, want) in [(0usize, stroke_mm), (1, v_max)] {
                 let (g, pts) = &ps[k];
-                let mu = attr(g, "data-mu-y").unwrap();
-                let yz = attr(g, "data-y-zero").unwrap();
+                let mu = num(g, "data-mu-y").unwrap();
+                let yz = num(g, "data-y-zero").unwrap();
                 let got = pts.iter().map(|p| (yz - p.1).abs()).fold(0.0f64, f64::max);
                 assert!(
                     (got - want / mu).abs() < 0.05,
@@ -134,8 +123,8 @@ fn stroke_and_velocity_analogue_are_drawn_at_their_round_scale() {
             }
             // the displacement over time: the same stroke
             let (g, pts) = &panels(svg(&r, "cam-motion.svg"))[0];
-            let mu = attr(g, "data-mu-y").unwrap();
-            let yz = attr(g, "data-y-zero").unwrap();
+            let mu = num(g, "data-mu-y").unwrap();
+            let yz = num(g, "data-y-zero").unwrap();
             let got = pts.iter().map(|p| yz - p.1).fold(0.0f64, f64::max);
             assert!((got - stroke_mm / mu).abs() < 0.05, "{ex} motion: {got}");
         }
@@ -151,8 +140,8 @@ fn phase_marks_stand_at_the_task_angles() {
         for file in ["cam-analogs.svg", "cam-motion.svg", "cam-pressure.svg"] {
             let s = svg(&r, file);
             for (g, pts) in panels(s) {
-                let mu_phi = attr(g, "data-mu-phi").unwrap();
-                let x0 = attr(g, "data-x0").unwrap();
+                let mu_phi = num(g, "data-mu-phi").unwrap();
+                let x0 = num(g, "data-x0").unwrap();
                 // the curve spans exactly 0 … 360°
                 let xmin = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
                 let xmax = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
@@ -162,17 +151,17 @@ fn phase_marks_stand_at_the_task_angles() {
             let lines = elements(s, "<g class=\"phase-mark\"");
             assert_eq!(marks.len() % want.len(), 0, "{file}");
             for (i, m) in marks.iter().enumerate() {
-                assert!((attr(m, "data-phi").unwrap() - want[i % want.len()]).abs() < 1e-9, "{file} {m}");
+                assert!((num(m, "data-phi").unwrap() - want[i % want.len()]).abs() < 1e-9, "{file} {m}");
             }
             // the mark's line at x0 + φ/μ_φ
             for (k, (g, _)) in panels(s).iter().enumerate() {
-                let mu_phi = attr(g, "data-mu-phi").unwrap();
-                let x0 = attr(g, "data-x0").unwrap();
+                let mu_phi = num(g, "data-mu-phi").unwrap();
+                let x0 = num(g, "data-x0").unwrap();
                 for (i, &phi) in want.iter().enumerate() {
                     let m = lines[k * want.len() + i];
                     let at = s.find(m).unwrap();
                     let line = elements(&s[at..], "<line")[0];
-                    let x = attr(line, "x1").unwrap();
+                    let x = num(line, "x1").unwrap();
                     assert!((x - (x0 + phi / mu_phi)).abs() < 1e-3, "{file} φ = {phi}: {x}");
                 }
             }
@@ -211,15 +200,15 @@ fn labels_do_not_overlap() {
             let r = run(ex, sheet, lang);
             for file in ["cam-analogs.svg", "cam-motion.svg", "cam-pressure.svg"] {
                 let s = svg(&r, file);
-                let (w, h) = paper(s);
+                let (w, h, _) = paper(s);
                 let boxes: Vec<(f64, f64, f64, f64, &str)> = elements(s, "<text class=\"label\"")
                     .into_iter()
                     .map(|e| {
                         let (x, y, fs, n) = (
-                            attr(e, "x").unwrap(),
-                            attr(e, "y").unwrap(),
-                            attr(e, "font-size").unwrap(),
-                            attr(e, "data-chars").unwrap(),
+                            num(e, "x").unwrap(),
+                            num(e, "y").unwrap(),
+                            num(e, "font-size").unwrap(),
+                            num(e, "data-chars").unwrap(),
                         );
                         // tmm's lettering box: 0.62 h per character, 1.2 h tall
                         let bw = 0.62 * fs * n;

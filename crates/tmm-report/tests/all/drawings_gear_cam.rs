@@ -3,23 +3,13 @@
 //! task's data, GOST 2.302 scales, GOST 2.304 lettering, the slots of the
 //! A1 and A2 sheets.
 
-use crate::svg_read::{attr_s, run_example as run};
+use crate::svg_read::{attr_s, paper, run_example as run};
 use tmm_report::run::Run;
+use tmm_testkit::plane::Rect;
+use tmm_testkit::svg::num;
 
 fn svg<'a>(r: &'a Run, path: &str) -> &'a str {
     r.docs.get(path).unwrap_or_else(|| panic!("{path}")).as_text().unwrap()
-}
-
-fn attr(el: &str, name: &str) -> Option<f64> {
-    attr_s(el, name)?.parse().ok()
-}
-
-/// The paper size (mm) from the root's width and height.
-fn paper(s: &str) -> (f64, f64) {
-    let root = &s[s.find("<svg").unwrap()..];
-    let root = &root[..root.find('>').unwrap()];
-    let mm = |n: &str| attr_s(root, n).unwrap().trim_end_matches("mm").parse::<f64>().unwrap();
-    (mm("width"), mm("height"))
 }
 
 /// The scale written on the root: `2,5:1` → 2.5, `1:2` → 0.5.
@@ -48,15 +38,9 @@ fn group<'a>(s: &'a str, id: &str) -> Vec<&'a str> {
     s[i..j].lines().filter(|l| !l.trim().is_empty()).collect()
 }
 
+/// The vertices of a `<polyline>` or `<polygon>`.
 fn points(el: &str) -> Vec<(f64, f64)> {
-    attr_s(el, "points")
-        .unwrap()
-        .split_whitespace()
-        .map(|p| {
-            let (x, y) = p.split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
-        })
-        .collect()
+    tmm_testkit::svg::points(attr_s(el, "points").unwrap())
 }
 
 /// A label's box: font size × visible characters (with the lettering's
@@ -74,7 +58,7 @@ fn label_boxes(s: &str) -> Vec<(Boxed, String)> {
     s.lines()
         .filter(|l| l.starts_with("<text class=\"label\""))
         .map(|l| {
-            let (x, y, h) = (attr(l, "x").unwrap(), attr(l, "y").unwrap(), attr(l, "font-size").unwrap());
+            let (x, y, h) = (num(l, "x").unwrap(), num(l, "y").unwrap(), num(l, "font-size").unwrap());
             let mut text = String::new();
             let mut inside = false;
             for ch in l[l.find('>').unwrap() + 1..].chars() {
@@ -108,7 +92,7 @@ fn label_boxes(s: &str) -> Vec<(Boxed, String)> {
 }
 
 fn labels_apart_and_inside(s: &str, what: &str) {
-    let (w, h) = paper(s);
+    let (w, h, _) = paper(s);
     let b = label_boxes(s);
     assert!(!b.is_empty(), "{what}: no labels");
     for (i, (bi, ti)) in b.iter().enumerate() {
@@ -131,10 +115,10 @@ fn drawn_segments(s: &str) -> Vec<[f64; 4]> {
     for l in s.lines() {
         if l.starts_with("<line") {
             out.push([
-                attr(l, "x1").unwrap(),
-                attr(l, "y1").unwrap(),
-                attr(l, "x2").unwrap(),
-                attr(l, "y2").unwrap(),
+                num(l, "x1").unwrap(),
+                num(l, "y1").unwrap(),
+                num(l, "x2").unwrap(),
+                num(l, "y2").unwrap(),
             ]);
         } else if l.starts_with("<polyline") || l.starts_with("<polygon") {
             let p = points(l);
@@ -150,28 +134,6 @@ fn drawn_segments(s: &str) -> Vec<[f64; 4]> {
     out
 }
 
-/// Whether the segment passes through the inside of the box (clipped
-/// against the four sides, Liang–Barsky).
-fn cuts(s: &[f64; 4], b: &Boxed) -> bool {
-    let (dx, dy) = (s[2] - s[0], s[3] - s[1]);
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [(-dx, s[0] - b.x0), (dx, b.x1 - s[0]), (-dy, s[1] - b.y0), (dy, b.y1 - s[1])] {
-        if p == 0.0 {
-            if q <= 0.0 {
-                return false;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-        }
-    }
-    t0 < t1
-}
-
 /// No label's box is crossed by a drawn line (a teacher marks a label that
 /// touches a line).
 fn labels_off_the_lines(s: &str, what: &str) {
@@ -179,18 +141,21 @@ fn labels_off_the_lines(s: &str, what: &str) {
     assert!(segs.len() > 100, "{what}: {} segments", segs.len());
     for (b, t) in label_boxes(s) {
         for g in &segs {
-            assert!(!cuts(g, &b), "{what}: «{t}» {b:?} touches the line {g:?}");
+            assert!(
+                !Rect::from([b.x0, b.y0, b.x1, b.y1]).enters((g[0], g[1]), (g[2], g[3])),
+                "{what}: «{t}» {b:?} touches the line {g:?}"
+            );
         }
     }
 }
 
 /// Every coordinate of every element lies inside the viewBox.
 fn everything_inside(s: &str, what: &str) {
-    let (w, h) = paper(s);
+    let (w, h, _) = paper(s);
     let inside = |x: f64, y: f64| (-0.01..=w + 0.01).contains(&x) && (-0.01..=h + 0.01).contains(&y);
     for l in s.lines() {
         for (xa, ya) in [("x1", "y1"), ("x2", "y2"), ("cx", "cy"), ("x", "y")] {
-            if let (Some(x), Some(y)) = (attr(l, xa), attr(l, ya)) {
+            if let (Some(x), Some(y)) = (num(l, xa), num(l, ya)) {
                 assert!(inside(x, y), "{what}: {l}");
             }
         }
@@ -205,7 +170,7 @@ fn everything_inside(s: &str, what: &str) {
 fn dot_centre(s: &str, id: &str) -> (f64, f64) {
     let g = group(s, id);
     let c = g.iter().find(|l| l.starts_with("<circle")).unwrap();
-    (attr(c, "cx").unwrap(), attr(c, "cy").unwrap())
+    (num(c, "cx").unwrap(), num(c, "cy").unwrap())
 }
 
 fn json_mm(r: &Run, key: &str) -> f64 {
@@ -227,7 +192,7 @@ fn meshing_drawing_at_a_standard_scale_with_both_centres_and_true_circles() {
         assert!(is_standard(k), "{what}: scale {k} is not GOST 2.302");
         // the scale is written on the drawing too
         assert!(s.contains(&format!("Масштаб {}", attr_s(s, "data-scale").unwrap())), "{what}");
-        let (w, h) = paper(s);
+        let (w, h, _) = paper(s);
         let o1 = dot_centre(s, "centre-O1");
         let o2 = dot_centre(s, "centre-O2");
         for o in [o1, o2] {
@@ -302,7 +267,7 @@ fn drawings_fit_their_slots_on_a1_and_a2() {
             (&p, "planetary/planetary.svg", scheme),
             (&c, "cam/cam.svg", scheme),
         ] {
-            let (w, h) = paper(svg(r, path));
+            let (w, h, _) = paper(svg(r, path));
             let (sw, sh) = slot(box_, sheet);
             assert!(w <= sw + 1e-9 && h <= sh + 1e-9, "{sheet} {path}: {w}×{h} > slot {sw}×{sh}");
         }
@@ -349,7 +314,7 @@ fn contour_lines_each_have_their_own_style_and_the_legend_matches() {
     // the legend's sample lines are 9 mm long, in the same order and styles
     let legend: Vec<_> = s
         .lines()
-        .filter(|l| l.starts_with("<line") && (attr(l, "x2").unwrap() - attr(l, "x1").unwrap() - 9.0).abs() < 1e-6)
+        .filter(|l| l.starts_with("<line") && (num(l, "x2").unwrap() - num(l, "x1").unwrap() - 9.0).abs() < 1e-6)
         .map(style)
         .collect();
     assert_eq!(legend, drawn);
@@ -377,17 +342,17 @@ fn cam_profile_has_the_rotation_arrow_and_rays_at_the_phase_boundaries() {
         assert_eq!(rays.len(), 4);
         // the rays start at O; the first passes through the follower's
         // contact point at φ = 0 (B0, the roller's centre on the pitch profile)
-        let o = (attr(rays[0], "x1").unwrap(), attr(rays[0], "y1").unwrap());
+        let o = (num(rays[0], "x1").unwrap(), num(rays[0], "y1").unwrap());
         let ang = |l: &str| {
-            let (x, y) = (attr(l, "x2").unwrap(), attr(l, "y2").unwrap());
+            let (x, y) = (num(l, "x2").unwrap(), num(l, "y2").unwrap());
             (-(y - o.1)).atan2(x - o.0)
         };
         let theta0 = ang(rays[0]);
         // B0: the white joint of radius 0.8 that is not O
         let b0 = s
             .lines()
-            .filter(|l| l.starts_with("<circle") && attr(l, "r") == Some(0.8) && l.contains("#ffffff"))
-            .map(|l| (attr(l, "cx").unwrap(), attr(l, "cy").unwrap()))
+            .filter(|l| l.starts_with("<circle") && num(l, "r") == Some(0.8) && l.contains("#ffffff"))
+            .map(|l| (num(l, "cx").unwrap(), num(l, "cy").unwrap()))
             .next()
             .unwrap();
         let tb = (-(b0.1 - o.1)).atan2(b0.0 - o.0);
@@ -401,7 +366,7 @@ fn cam_profile_has_the_rotation_arrow_and_rays_at_the_phase_boundaries() {
             assert!(wrap(ang(rays[k]) - want).abs() < 1e-3, "ray {k}: {} vs {want}", ang(rays[k]));
         }
         for l in &rays {
-            assert!((attr(l, "x1").unwrap() - o.0).abs() < 1e-9 && (attr(l, "y1").unwrap() - o.1).abs() < 1e-9);
+            assert!((num(l, "x1").unwrap() - o.0).abs() < 1e-9 && (num(l, "y1").unwrap() - o.1).abs() < 1e-9);
         }
     }
 }

@@ -7,13 +7,10 @@
 use tmm_report::TaskSource;
 use tmm_report::output::Documents;
 use tmm_report::project::{Language, SheetFormat};
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
-}
+use tmm_testkit::examples;
 
 fn docs(name: &str) -> Documents {
-    let task = TaskSource::new(name, example(name))
+    let task = TaskSource::new(name, examples::text(name))
         .with_lang(Language::En)
         .with_sheet(SheetFormat::A1);
     tmm_report::dynamics::run_section(&task).unwrap().unwrap().docs

@@ -12,6 +12,7 @@ use tmm_report::TaskSource;
 use tmm_report::output::Documents;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task_in};
+use tmm_testkit::examples;
 
 /// The words of `s` that are a diameter's symbol written flat: `d`, one of
 /// w b a f, then nothing or digits.
@@ -43,11 +44,6 @@ fn faults(name: &str, docs: &Documents, out: &mut Vec<String>, runs: &mut usize)
     }
 }
 
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
-
 #[test]
 fn the_flat_index_finder_finds_what_it_must() {
     assert_eq!(flat_diameters("начальные окружности dw"), vec!["dw"]);
@@ -59,9 +55,9 @@ fn the_flat_index_finder_finds_what_it_must() {
 fn no_drawing_writes_a_diameter_index_flat() {
     let tasks = [
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("gear-seed001.toml", example("gear-seed001.toml")),
-        ("gear-internal.toml", example("gear-internal.toml")),
-        ("gear-seed003.toml", example("gear-seed003.toml")),
+        ("gear-seed001.toml", examples::text("gear-seed001.toml")),
+        ("gear-internal.toml", examples::text("gear-internal.toml")),
+        ("gear-seed003.toml", examples::text("gear-seed003.toml")),
     ];
     let (mut out, mut runs) = (Vec::new(), 0);
     for (name, text) in &tasks {

@@ -4,12 +4,12 @@
 //! note's A4 page: the default project, and one cam example per motion law.
 
 use crate::label_ink::faults;
-use crate::svg_read::example;
 use tmm_report::TaskSource;
 use tmm_report::output::Documents;
 use tmm_report::picture::Element;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task};
+use tmm_testkit::examples;
 
 /// The drawings of `text` on the A1 sheets and on the note's page.
 fn both(name: &str, text: &str) -> [(String, Documents); 2] {
@@ -27,8 +27,8 @@ fn machine_mesh_line_names_clear_every_line() {
     let mut bad = Vec::new();
     for (name, text) in [
         ("default", DEFAULT_TASK.to_string()),
-        ("gear-seed003.toml", example("gear-seed003.toml")),
-        ("gear-internal.toml", example("gear-internal.toml")),
+        ("gear-seed003.toml", examples::text("gear-seed003.toml")),
+        ("gear-internal.toml", examples::text("gear-internal.toml")),
     ] {
         for (what, docs) in both(name, &text) {
             let pic = docs.picture("gear/machine-mesh.svg").unwrap();
@@ -49,8 +49,8 @@ fn machine_mesh_texts_print_inside_the_drawing() {
     let mut bad = Vec::new();
     for (name, text) in [
         ("default", DEFAULT_TASK.to_string()),
-        ("gear-seed003.toml", example("gear-seed003.toml")),
-        ("gear-internal.toml", example("gear-internal.toml")),
+        ("gear-seed003.toml", examples::text("gear-seed003.toml")),
+        ("gear-internal.toml", examples::text("gear-internal.toml")),
     ] {
         for lang in [Language::Ru, Language::Uk, Language::En] {
             let t = TaskSource::new(name, text.clone()).with_lang(lang);
@@ -81,9 +81,12 @@ fn cam_diagram_labels_clear_every_line_and_each_other() {
     let mut bad = Vec::new();
     for (name, text) in [
         ("default", DEFAULT_TASK.to_string()),
-        ("cam-seed-001-roller.toml", example("cam-seed-001-roller.toml")),
-        ("cam-oscillating-roller.toml", example("cam-oscillating-roller.toml")),
-        ("textbook/p6-cam-translating.toml", example("textbook/p6-cam-translating.toml")),
+        ("cam-seed-001-roller.toml", examples::text("cam-seed-001-roller.toml")),
+        ("cam-oscillating-roller.toml", examples::text("cam-oscillating-roller.toml")),
+        (
+            "textbook/p6-cam-translating.toml",
+            examples::text("textbook/p6-cam-translating.toml"),
+        ),
     ] {
         for (what, docs) in both(name, &text) {
             for file in ["cam/cam-motion.svg", "cam/cam-analogs.svg", "cam/cam-pressure.svg"] {

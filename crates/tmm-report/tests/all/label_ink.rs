@@ -4,9 +4,11 @@
 //! included), scaled to the letter size the SVG writes, and every straight
 //! piece the drawing strokes (lines, polylines, polygons, paths, circles,
 //! arrowheads), all read from the drawing's elements, not from the code
-//! that placed the labels.
+//! that placed the labels; the distances are `tmm_testkit::plane`'s,
+//! written apart from the placement code.
 
 use tmm_report::picture::{Element, PathData, Picture, em, index_em};
+use tmm_testkit::plane::Rect;
 
 /// A text's printed ink on the paper, mm, y down.
 #[derive(Debug, Clone)]
@@ -19,65 +21,20 @@ pub struct InkBox {
 }
 
 impl InkBox {
+    /// The box without its words.
+    pub fn rect(&self) -> Rect {
+        Rect::from([self.x0, self.y0, self.x1, self.y1])
+    }
+
     /// The gap between two boxes (0 when they touch or overlap).
     pub fn gap(&self, o: &InkBox) -> f64 {
-        let dx = (o.x0 - self.x1).max(self.x0 - o.x1).max(0.0);
-        let dy = (o.y0 - self.y1).max(self.y0 - o.y1).max(0.0);
-        if dx > 0.0 && dy > 0.0 { dx.hypot(dy) } else { dx.max(dy) }
+        self.rect().gap(&o.rect())
     }
 
-    /// The distance from the box to the segment `a`–`b` (0 when it cuts it).
+    /// The distance from the box to the segment `a`–`b` (0 when it meets it).
     pub fn distance(&self, a: (f64, f64), b: (f64, f64)) -> f64 {
-        if self.cuts(a, b) {
-            return 0.0;
-        }
-        let corners = [(self.x0, self.y0), (self.x1, self.y0), (self.x1, self.y1), (self.x0, self.y1)];
-        let mut d = f64::INFINITY;
-        for i in 0..4 {
-            let (p, q) = (corners[i], corners[(i + 1) % 4]);
-            d = d.min(seg_seg(p, q, a, b));
-        }
-        d
+        self.rect().segment_distance(a, b)
     }
-
-    fn cuts(&self, a: (f64, f64), b: (f64, f64)) -> bool {
-        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-        let (mut t0, mut t1) = (0.0f64, 1.0f64);
-        for (p, q) in [(-dx, a.0 - self.x0), (dx, self.x1 - a.0), (-dy, a.1 - self.y0), (dy, self.y1 - a.1)] {
-            if p == 0.0 {
-                if q < 0.0 {
-                    return false;
-                }
-            } else {
-                let r = q / p;
-                if p < 0.0 {
-                    t0 = t0.max(r);
-                } else {
-                    t1 = t1.min(r);
-                }
-            }
-        }
-        t0 <= t1
-    }
-}
-
-fn point_seg(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
-
-/// The distance between two segments that do not cross.
-fn seg_seg(p: (f64, f64), q: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    point_seg(p, a, b)
-        .min(point_seg(q, a, b))
-        .min(point_seg(a, p, q))
-        .min(point_seg(b, p, q))
 }
 
 /// The ink of `plain` at the em size `em_mm` (mm), about the start of its

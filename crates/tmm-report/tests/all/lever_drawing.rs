@@ -19,26 +19,19 @@ use serde_json::Value;
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task_in};
+use tmm_testkit::examples;
+use tmm_testkit::plane::Rect;
+use tmm_testkit::svg::{attr, num, points, unescape};
 
 /// The least gap between a text and anything else drawn, mm (less a
 /// rounding of the coordinates written to 0.001 mm).
 const CLEAR: f64 = 1.0 - 2e-3;
 
-fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(&tag[i..i + tag[i..].find('"')?])
-}
-
-fn num(tag: &str, name: &str) -> Option<f64> {
-    attr(tag, name).and_then(|v| v.trim_end_matches("mm").parse().ok())
-}
-
 /// A text of the drawing: what it shows and its ink's box (x0, y0, x1, y1).
 #[derive(Debug)]
 struct Ink {
     text: String,
-    b: [f64; 4],
+    b: Rect,
 }
 
 /// Every text's ink: the runs (the text's own characters and each
@@ -47,12 +40,6 @@ struct Ink {
 /// of a run's size above its baseline and 0.35 below; the slant leaning the
 /// top right and the foot left by tan 15°.
 fn texts(svg: &str) -> Vec<Ink> {
-    let unescape = |s: &str| {
-        s.replace("&amp;", "&")
-            .replace("&lt;", "<")
-            .replace("&gt;", ">")
-            .replace("&quot;", "\"")
-    };
     let lean = 15f64.to_radians().tan();
     let mut out = Vec::new();
     let mut rest = svg;
@@ -100,19 +87,19 @@ fn texts(svg: &str) -> Vec<Ink> {
         };
         out.push(Ink {
             text: shown,
-            b: [x0 - lean * (foot - y), top, x0 + w + lean * (y - top), foot],
+            b: Rect::from([x0 - lean * (foot - y), top, x0 + w + lean * (y - top), foot]),
         });
     }
     out
 }
 
-/// Every straight piece drawn (lines, polylines, polygons' sides) with its
-/// half width, and every circle (centre, radius).
 /// A straight piece: its ends and half width, mm.
 type Seg = ((f64, f64), (f64, f64), f64);
 /// A circle: its centre and radius (its half width added), mm.
 type Circle = ((f64, f64), f64);
 
+/// Every straight piece drawn (lines, polylines, polygons' sides) with its
+/// half width, and every circle (centre, radius).
 fn strokes(svg: &str) -> (Vec<Seg>, Vec<Circle>) {
     let (mut segs, mut circles) = (Vec::new(), Vec::new());
     let mut rest = svg;
@@ -129,12 +116,7 @@ fn strokes(svg: &str) -> (Vec<Seg>, Vec<Circle>) {
                 half,
             )),
             name @ ("polyline" | "polygon") => {
-                let v: Vec<f64> = attr(tag, "points")
-                    .unwrap()
-                    .split([' ', ','])
-                    .filter_map(|t| t.parse().ok())
-                    .collect();
-                let pts: Vec<(f64, f64)> = v.chunks_exact(2).map(|c| (c[0], c[1])).collect();
+                let pts = points(attr(tag, "points").unwrap());
                 for w in pts.windows(2) {
                     segs.push((w[0], w[1], half));
                 }
@@ -149,51 +131,6 @@ fn strokes(svg: &str) -> (Vec<Seg>, Vec<Circle>) {
     (segs, circles)
 }
 
-/// The distance from a point to a box (0 inside).
-fn point_box(p: (f64, f64), b: &[f64; 4]) -> f64 {
-    let dx = (b[0] - p.0).max(p.0 - b[2]).max(0.0);
-    let dy = (b[1] - p.1).max(p.1 - b[3]).max(0.0);
-    dx.hypot(dy)
-}
-
-/// The distance from a point to a segment.
-fn point_seg(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
-
-/// The distance from a segment to a box: 0 when it enters the box, else
-/// the least of its ends' distances to the box and the box's corners'
-/// distances to it.
-fn seg_box(a: (f64, f64), b: (f64, f64), r: &[f64; 4]) -> f64 {
-    // sampled entry test: the segment cut into 200 steps
-    let enters = (0..=200).any(|k| {
-        let t = k as f64 / 200.0;
-        point_box((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)), r) == 0.0
-    });
-    if enters {
-        return 0.0;
-    }
-    let corners = [(r[0], r[1]), (r[2], r[1]), (r[0], r[3]), (r[2], r[3])];
-    corners
-        .iter()
-        .map(|&c| point_seg(c, a, b))
-        .chain([point_box(a, r), point_box(b, r)])
-        .fold(f64::MAX, f64::min)
-}
-
-fn box_box(a: &[f64; 4], b: &[f64; 4]) -> f64 {
-    let dx = (a[0] - b[2]).max(b[0] - a[2]).max(0.0);
-    let dy = (a[1] - b[3]).max(b[1] - a[3]).max(0.0);
-    dx.hypot(dy)
-}
-
 /// The texts closer than 1 mm to another text or to a line or point.
 fn crowded(svg: &str) -> Vec<String> {
     let inks = texts(svg);
@@ -201,19 +138,19 @@ fn crowded(svg: &str) -> Vec<String> {
     let mut out = Vec::new();
     for (i, t) in inks.iter().enumerate() {
         for u in &inks[i + 1..] {
-            let d = box_box(&t.b, &u.b);
+            let d = t.b.gap(&u.b);
             if d < CLEAR {
                 out.push(format!("\"{}\" and \"{}\": {d:.2} mm apart", t.text, u.text));
             }
         }
         for (a, b, half) in &segs {
-            let d = seg_box(*a, *b, &t.b) - half;
+            let d = t.b.segment_distance(*a, *b) - half;
             if d < CLEAR {
                 out.push(format!("\"{}\" {d:.2} mm from the line {a:?}–{b:?}", t.text));
             }
         }
         for (c, r) in &circles {
-            let d = point_box(*c, &t.b) - r;
+            let d = t.b.point_distance(*c) - r;
             if d < CLEAR {
                 out.push(format!("\"{}\" {d:.2} mm from the point {c:?}", t.text));
             }
@@ -231,17 +168,17 @@ fn the_clearance_finder_finds_what_it_must() {
     };
     // the subscript's foot 45 + 1.25 + 0.35·3.5 = 47.475, the line's edge at 49.75
     let t = &texts(&svg(50.0))[0];
-    assert!((t.b[3] - 47.475).abs() < 1e-9, "{:?}", t.b);
+    assert!((t.b.y1 - 47.475).abs() < 1e-9, "{:?}", t.b);
     assert!(crowded(&svg(50.0)).is_empty());
     let close = svg(50.0).replace("y=\"45\"", "y=\"47\"");
     assert_eq!(crowded(&close).len(), 1, "{:?}", crowded(&close));
-    assert!(seg_box((0.0, 0.0), (10.0, 10.0), &[4.0, 4.0, 6.0, 6.0]) == 0.0);
-    assert!((seg_box((0.0, 0.0), (0.0, 10.0), &[2.0, 4.0, 6.0, 6.0]) - 2.0).abs() < 1e-12);
-}
-
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+    // a line through the text's box
+    let across = svg(50.0).replace("x1=\"0\" y1=\"50\" x2=\"100\" y2=\"50\"", "x1=\"50\" y1=\"0\" x2=\"50\" y2=\"100\"");
+    assert!(
+        crowded(&across).iter().any(|f| f.contains("-0.25 mm from the line")),
+        "{:?}",
+        crowded(&across)
+    );
 }
 
 /// A printed number ("12,3", "−4") at the start of `s`.
@@ -258,7 +195,7 @@ fn printed(s: &str) -> Option<f64> {
 fn zhukovsky_lever_labels_clear_and_arms_drawn() {
     let tasks = [
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
+        ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
     ];
     let mut faults = Vec::new();
     let mut arms_checked = 0;

@@ -12,15 +12,11 @@
 use serde_json::Value;
 use tmm_report::TaskSource;
 use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_testkit::examples;
 
 fn report(name: &str, text: &str) -> Value {
     let run = run_task_in(&TaskSource::new(name, text), None).unwrap();
     run.report.clone()
-}
-
-fn example(file: &str) -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(file);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 fn xy(v: &Value, key: &str) -> (f64, f64) {
@@ -50,8 +46,8 @@ fn moments(r: &Value) -> (f64, f64, f64, Vec<String>) {
 #[test]
 fn lever_virtual_power() {
     for (name, text, gas) in [
-        ("textbook/p2-engine.toml", example("textbook/p2-engine.toml"), 2),
-        ("compressor-two-stage.toml", example("compressor-two-stage.toml"), 2),
+        ("textbook/p2-engine.toml", examples::text("textbook/p2-engine.toml"), 2),
+        ("compressor-two-stage.toml", examples::text("compressor-two-stage.toml"), 2),
         ("default.toml", DEFAULT_TASK.to_string(), 0),
     ] {
         let r = report(name, &text);

@@ -31,7 +31,7 @@ fn runs() -> Vec<(String, Run)> {
         "planetary-ext-int.toml",
         "cam-seed-001-roller.toml",
     ] {
-        let text = crate::svg_read::example(name);
+        let text = tmm_testkit::examples::text(name);
         v.push((name.to_string(), run_task(&TaskSource::new(name, text)).unwrap()));
     }
     v

@@ -1,19 +1,13 @@
 //! Reading a drawing back for the tests: attributes and numbers of an SVG
-//! element, the paper's size, and each text's shown characters with a box
-//! estimated independently of the drawing code; and running an example with
-//! the sheet and language asked.
-
-use std::path::Path;
+//! element (`tmm_testkit::svg`'s, a missing number failing the test), the
+//! paper's size, and each text's shown characters with a box estimated
+//! independently of the drawing code; and running an example with the sheet
+//! and language asked.
 
 use tmm_report::TaskSource;
 use tmm_report::run::{Run, run_task};
-
-/// The value of the attribute `name` of the element `tag`, if it has one.
-pub fn attr_s<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = tag.find(&key)? + key.len();
-    Some(&tag[i..i + tag[i..].find('"')?])
-}
+use tmm_testkit::examples;
+pub use tmm_testkit::svg::{attr as attr_s, shown};
 
 /// [`attr_s`] as an owned string.
 pub fn attr(tag: &str, name: &str) -> Option<String> {
@@ -22,29 +16,13 @@ pub fn attr(tag: &str, name: &str) -> Option<String> {
 
 /// A numeric attribute (a trailing `mm` dropped); panics if it is missing.
 pub fn num(tag: &str, name: &str) -> f64 {
-    attr(tag, name).unwrap().trim_end_matches("mm").parse().unwrap()
+    tmm_testkit::svg::num(tag, name).unwrap_or_else(|| panic!("no number {name} in {tag}"))
 }
 
 /// The paper's width and height, mm, and the root element.
 pub fn paper(svg: &str) -> (f64, f64, String) {
     let root = svg.lines().find(|l| l.starts_with("<svg")).unwrap();
     (num(root, "width"), num(root, "height"), root.to_string())
-}
-
-/// The characters of a text's content as shown: the markup inside it (the
-/// tspans of subscripts) dropped, entities left as written.
-pub fn shown(inner: &str) -> String {
-    let mut out = String::new();
-    let mut in_tag = false;
-    for ch in inner.chars() {
-        match ch {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            c if !in_tag => out.push(c),
-            _ => {}
-        }
-    }
-    out
 }
 
 /// Each text's shown characters (the tspans' markup dropped) and its box:
@@ -70,14 +48,8 @@ pub fn texts(svg: &str, skip_rotated: bool) -> Vec<(String, [f64; 4])> {
     out
 }
 
-/// The text of `examples/<name>`.
-pub fn example(name: &str) -> String {
-    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name);
-    std::fs::read_to_string(p).unwrap()
-}
-
 /// `tmm run` in memory on an example, on the sheet and in the language given.
 pub fn run_example(name: &str, sheet: &str, lang: &str) -> Run {
-    let text = format!("{}\n[project]\nsheet = \"{sheet}\"\nlang = \"{lang}\"\n", example(name));
+    let text = format!("{}\n[project]\nsheet = \"{sheet}\"\nlang = \"{lang}\"\n", examples::text(name));
     run_task(&TaskSource::new(name, text)).unwrap()
 }
