@@ -46,7 +46,7 @@ use crate::words::word;
 type Pt = (f64, f64);
 
 /// Room above the drawing for its title, mm.
-const TITLE_H: f64 = 14.0;
+const TITLE_H: f64 = 17.0;
 /// Room left of the drawing for the dimension of x·m at least, mm; more
 /// when its text needs it (the text's ink, the 9.5 mm from the tool's end
 /// to the text and a margin).
@@ -176,14 +176,12 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     cv.set_transform(f, (left - f * wx0, MARGIN + NAME_ROWS - f * wy0));
     cv.root_attr("data-scale", scale.text);
     let win = (wx0, wx1, wy0, wy1);
+    // the name, and under it the scale (the note keeps the scale only)
+    cv.title((0.5 * pw, 7.0), word(lang, "gear.machine_mesh_title"), H_HEAD, Anchor::Middle);
     cv.text_paper(
-        (0.5 * pw, 7.0),
-        &format!(
-            "{} {}",
-            word(lang, "gear.machine_mesh_title"),
-            crate::svg::scale_text(scale.text, lang)
-        ),
-        H_HEAD,
+        (0.5 * pw, 13.0),
+        &format!("{} {}", word(lang, "common.scale"), crate::svg::scale_text(scale.text, lang)),
+        H_LABEL,
         Anchor::Middle,
         "#000",
     );
