@@ -496,6 +496,30 @@ impl Placer {
         self.write(c, text, h, color, false);
     }
 
+    /// Write the drawing's name (see [`crate::svg::Canvas::title`]) with
+    /// its box's middle at `c`, whatever is there, in a group of class
+    /// [`crate::picture::TITLE`].
+    pub fn put_title(&mut self, c: (f64, f64), text: &str, h: f64) {
+        self.begin_title();
+        self.write(c, text, h, "#000", false);
+        self.end_title();
+    }
+
+    /// Open the group of the drawing's name (a name of several lines);
+    /// close it with [`Placer::end_title`].
+    pub fn begin_title(&mut self) {
+        self.items.push(crate::picture::Element::GroupOpen {
+            id: None,
+            class: Some(crate::picture::TITLE.to_string()),
+            data: Vec::new(),
+        });
+    }
+
+    /// Close the group [`Placer::begin_title`] opened.
+    pub fn end_title(&mut self) {
+        self.items.push(crate::picture::Element::GroupClose);
+    }
+
     /// Write `text` starting at `x`, its box's middle at height `y` (a
     /// table row), whatever is there.
     pub fn put_left(&mut self, (x, y): (f64, f64), text: &str, h: f64, color: &str) {

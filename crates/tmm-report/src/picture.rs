@@ -197,6 +197,9 @@ impl Picture {
     pub fn new(width: f64, height: f64, root: Vec<(String, String)>, mut elements: Vec<Element>) -> Picture {
         for e in &mut elements {
             simplify_element(e);
+            if let Element::Text { text, .. } | Element::Label { text, .. } | Element::Upward { text, .. } = e {
+                minus_signs(text);
+            }
         }
         let mut p = Picture {
             width,
@@ -242,6 +245,60 @@ impl Picture {
     /// A root attribute's value.
     pub fn attr(&self, name: &str) -> Option<&str> {
         self.root.iter().find(|(k, _)| k == name).map(|(_, v)| v.as_str())
+    }
+
+    /// The drawing's name (наименование изображения) as it prints: the
+    /// words of every text inside a [`TITLE`] group (see
+    /// [`Canvas::title`](crate::svg::Canvas::title)), lines joined by a
+    /// space; `None` when the drawing has no name.
+    ///
+    /// ```
+    /// use tmm_report::svg::{Anchor, Canvas};
+    /// let mut c = Canvas::new(100.0, 50.0);
+    /// c.title((50.0, 8.0), "Plan of velocities", 5.0, Anchor::Middle);
+    /// c.rich_paper((50.0, 14.0), "μ_v = 0,1 (m/s)/mm", 3.5, Anchor::Middle, "#000");
+    /// let p = c.finish();
+    /// assert_eq!(p.title().as_deref(), Some("Plan of velocities"));
+    /// assert!(p.svg().contains("<g class=\"title\">"));
+    /// ```
+    pub fn title(&self) -> Option<String> {
+        let words: Vec<&str> = self
+            .elements
+            .iter()
+            .zip(in_title(&self.elements))
+            .filter(|(_, t)| *t)
+            .filter_map(|(e, _)| match e {
+                Element::Text { text, .. } | Element::Label { text, .. } | Element::Upward { text, .. } => Some(text.as_str()),
+                _ => None,
+            })
+            .collect();
+        (!words.is_empty()).then(|| words.join(" "))
+    }
+
+    /// The drawing without its name: every element inside a [`TITLE`]
+    /// group left out, the rest (the scale, μ and the drawing's parameters
+    /// printed under the name) where it was. The note's figures are set
+    /// so ([`crate::run::note_figures`]): GOST 2.105, 6.5 puts the name in
+    /// the caption under the figure, and one title per figure.
+    ///
+    /// ```
+    /// use tmm_report::svg::{Anchor, Canvas};
+    /// let mut c = Canvas::new(100.0, 50.0);
+    /// c.title((50.0, 8.0), "Plan of velocities", 5.0, Anchor::Middle);
+    /// c.rich_paper((50.0, 14.0), "μ_v = 0,1 (m/s)/mm", 3.5, Anchor::Middle, "#000");
+    /// let p = c.finish().without_title();
+    /// assert!(p.title().is_none());
+    /// assert!(!p.svg().contains("Plan of") && p.svg().contains("(m/s)/mm"));
+    /// ```
+    pub fn without_title(&self) -> Picture {
+        let keep: Vec<Element> = self
+            .elements
+            .iter()
+            .zip(in_title(&self.elements))
+            .filter(|(_, t)| !*t)
+            .map(|(e, _)| e.clone())
+            .collect();
+        Picture::new(self.width, self.height, self.root.clone(), keep)
     }
 
     /// The drawing's GOST 2.302 scale (`data-scale`), when it is drawn to one.
@@ -292,6 +349,77 @@ impl Picture {
         }
         sc
     }
+}
+
+/// The class of the group that holds a drawing's name
+/// ([`Canvas::title`](crate::svg::Canvas::title)).
+pub const TITLE: &str = "title";
+
+/// For each element, whether it lies in a [`TITLE`] group (the group's
+/// own marks included).
+fn in_title(elements: &[Element]) -> Vec<bool> {
+    let mut depth = 0usize;
+    let mut title_at: Option<usize> = None;
+    elements
+        .iter()
+        .map(|e| match e {
+            Element::GroupOpen { class, .. } => {
+                depth += 1;
+                if title_at.is_none() && class.as_deref() == Some(TITLE) {
+                    title_at = Some(depth);
+                }
+                title_at.is_some()
+            }
+            Element::GroupClose => {
+                let inside = title_at.is_some();
+                if title_at == Some(depth) {
+                    title_at = None;
+                }
+                depth = depth.saturating_sub(1);
+                inside
+            }
+            _ => title_at.is_some(),
+        })
+        .collect()
+}
+
+/// A negative number's sign as GOST 2.304 writes it: the minus sign −
+/// (U+2212), not the hyphen-minus, in every text of every drawing (a
+/// legend's "T_I max = −49,302 Дж", a level's value, a tick). A hyphen is
+/// a sign where a digit (or a decimal point and a digit) follows it and
+/// it opens the text or follows a space, a bracket, `=`, `;`, `:`, `…`,
+/// `/`, `·` or an index mark; a hyphen between words or digits ("0-1",
+/// "двух-") stays.
+///
+/// ```
+/// use tmm_report::svg::{Anchor, Canvas};
+/// let mut c = Canvas::new(50.0, 20.0);
+/// c.rich_paper((5.0, 5.0), "T_I max = -49,302 Дж; (-1; -0.5) 0-1 a-b", 3.5, Anchor::Start, "#000");
+/// let p = c.finish();
+/// let tmm_report::picture::Element::Text { text, .. } = &p.elements[0] else { panic!() };
+/// assert_eq!(text, "T_I max = \u{2212}49,302 Дж; (\u{2212}1; \u{2212}0.5) 0-1 a-b");
+/// ```
+fn minus_signs(text: &mut String) {
+    if !text.contains('-') {
+        return;
+    }
+    let chars: Vec<char> = text.chars().collect();
+    let is_sign = |i: usize| {
+        let next = chars.get(i + 1).copied();
+        let digit_next = next.is_some_and(|c| c.is_ascii_digit())
+            || (matches!(next, Some('.' | ',')) && chars.get(i + 2).is_some_and(char::is_ascii_digit));
+        let opens = i == 0
+            || matches!(
+                chars[i - 1],
+                ' ' | '(' | '[' | '{' | '=' | ';' | ':' | '…' | '/' | '·' | '_' | '^' | '\u{a0}' | '\u{2009}'
+            );
+        digit_next && opens
+    };
+    *text = chars
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| if c == '-' && is_sign(i) { '\u{2212}' } else { c })
+        .collect();
 }
 
 /// Drops the vertices of a polyline, polygon or path run that lie within

@@ -110,11 +110,14 @@ pub fn note_figures(task: &TaskSource, lang: Option<crate::project::Language>) -
         for run in RUNNERS {
             if let Some(o) = run(&task)? {
                 for d in o.docs.iter().filter(|d| d.path.ends_with(".svg")) {
-                    // cut to its content: the page holds no empty paper
+                    // the name left out (the caption under the figure
+                    // names it: GOST 2.105, one title per figure), the
+                    // scale and parameters kept, then cut to its content:
+                    // the page holds no empty paper
                     match o.docs.picture(&d.path) {
                         Some(p) => out.add_text(
                             d.path.clone(),
-                            crate::crop::cropped(p.clone(), crate::crop::MARGIN_MM, crate::crop::GAP_MM),
+                            crate::crop::cropped(p.without_title(), crate::crop::MARGIN_MM, crate::crop::GAP_MM),
                         )?,
                         None => out.add_copy(&o.docs, d),
                     }

@@ -328,6 +328,20 @@ impl Canvas {
         self.reserve(text_box(at, size_mm, anchor, text.chars().count()));
     }
 
+    /// The drawing's name (наименование изображения: "План скоростей"),
+    /// typeset (see [`rich`]) at a paper point in a group of class
+    /// [`TITLE`](crate::picture::TITLE), its box kept free. The name alone:
+    /// the scale, μ and the drawing's parameters go on a line of their own
+    /// under it, so that the note, which names a figure in its caption
+    /// (GOST 2.105), leaves the name out
+    /// ([`Picture::without_title`](crate::picture::Picture::without_title))
+    /// and keeps them; the sheets and the loose files print both.
+    pub fn title(&mut self, at: (f64, f64), name: &str, size_mm: f64, anchor: Anchor) {
+        self.begin_group_data(crate::picture::TITLE, &[]);
+        self.rich_paper(at, name, size_mm, anchor, "#000");
+        self.end_group();
+    }
+
     /// A line on paper coordinates (mm from the top-left corner).
     pub fn line_paper(&mut self, a: (f64, f64), b: (f64, f64), s: Style) {
         self.segs.push((a, b));
@@ -1231,7 +1245,7 @@ pub fn plot_with_impulses_in(
     let sx = pw / (xt1 - xt0);
     let sy = ph / (yt1 - yt0);
     let map = |x: f64, y: f64| (left + (x - xt0) * sx, height - (bottom + (y - yt0) * sy));
-    c.text_paper((width / 2.0, 7.0), title, 4.0, Anchor::Middle, "#000");
+    c.title((width / 2.0, 7.0), title, 4.0, Anchor::Middle);
     // grid and ticks
     let grid = Style {
         width: 0.1,

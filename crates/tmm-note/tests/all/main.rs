@@ -10,6 +10,7 @@ mod compose;
 mod figure_fill;
 mod figure_fit;
 mod figure_numbers;
+mod figure_titles;
 mod figures_pdf;
 mod fixtures;
 mod fonts_pdf;

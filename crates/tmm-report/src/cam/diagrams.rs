@@ -246,7 +246,13 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
         let map = |x: f64, y: f64| f.map(mu_p, x, y);
         let y_off = f.y_off;
         // the title and, under it, the scale factors
-        lab.put((0.5 * w, y_off + 6.0), &p.title, H_TITLE - 2.0, "#000");
+        // a drawing of one panel: its title is the drawing's name; of
+        // several, each panel's title names that panel and stays
+        if panels.len() == 1 {
+            lab.put_title((0.5 * w, y_off + 6.0), &p.title, H_TITLE - 2.0);
+        } else {
+            lab.put((0.5 * w, y_off + 6.0), &p.title, H_TITLE - 2.0, "#000");
+        }
         let unit_per = if p.unit.contains('/') {
             format!("({}){per_mm}", p.unit)
         } else {

@@ -339,7 +339,7 @@ pub fn sizing_diagram(task: &CamTask, d: &CamDesign, lang: Language, sheet: Shee
     c.text_colored((centre.0, centre.1), "  O", 3.5, Anchor::Start, "#c62828");
     c.dot(b0, 0.8, "#000000");
     c.text((b0.0, b0.1), "  B₀", 3.5, Anchor::Start);
-    c.rich_paper((0.5 * pw, 7.0), title, H_LABEL + 1.5, Anchor::Middle, "#000");
+    c.title((0.5 * pw, 7.0), title, H_LABEL + 1.5, Anchor::Middle);
     c.rich_paper(
         (0.5 * pw, 13.5),
         &format!(

@@ -75,7 +75,7 @@ pub fn mechanism(a: &Analysis, lang: Language, sheet: SheetFormat) -> crate::pic
     c.root_attr("data-scale", scale.text);
     c.root_attr("data-mu-l", &format!("{}", 0.001 / scale.factor));
     let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
-    c.rich_paper((0.5 * w, 6.0), &wd("title_mechanism"), h_title, Anchor::Middle, "#000");
+    c.title((0.5 * w, 6.0), &wd("title_mechanism"), h_title, Anchor::Middle);
     c.rich_paper(
         (0.5 * w, 12.0),
         &format!(

@@ -195,7 +195,7 @@ impl Chart {
         // the paper as high as the frame needs, within the slot
         let mut c = Canvas::new(w, (TOP + y.len + BOTTOM).min(h));
         let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
-        c.rich_paper((0.5 * w, 6.0), title, h_title, Anchor::Middle, "#000");
+        c.title((0.5 * w, 6.0), title, h_title, Anchor::Middle);
         let (xsym, xunit) = match &xk {
             XKind::Phi(_) => ("φ".to_string(), "°".to_string()),
             XKind::Other(s, u) => (s.clone(), u.clone()),
@@ -611,13 +611,10 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     // the true speed
     let mo = &d.motion;
     let yr = range(mo.omega.iter().copied().chain([mo.omega_max, mo.omega_min]));
-    let mut ch = chart(
-        &format!("{}, δ = {}", wd("title_omega"), num(mo.delta, 5, lang)),
-        ("ω_1", &u_w),
-        yr,
-        false,
-    );
+    let mut ch = chart(&wd("title_omega"), ("ω_1", &u_w), yr, false);
     ch.curve(&xy(&mo.omega), GREEN, "ω_1", None);
+    // the coefficient of unevenness, a parameter of the curve: in the legend
+    ch.note(&format!("δ = {}", num(mo.delta, 5, lang)));
     ch.level(mo.omega_max, RED, "ω_{max}", &format!("{} {u_w}", num(mo.omega_max, 4, lang)));
     ch.level(mo.omega_mean, GREY, "ω_m", &format!("{} {u_w}", num(mo.omega_mean, 4, lang)));
     ch.level(mo.omega_min, BLUE, "ω_{min}", &format!("{} {u_w}", num(mo.omega_min, 4, lang)));

@@ -70,7 +70,10 @@ struct Arrow {
 /// forces are the core's polygon number `which` (the groups in order, then
 /// the input link with the balancing force), so the drawn polygon is the one
 /// whose closure the core guarantees.
-fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, task: &TaskSource) -> Picture {
+///
+/// `title` is the drawing's name; `value` (the input link's balancing
+/// force) opens the line of the angle and the scales under it.
+fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, value: Option<&str>, task: &TaskSource) -> Picture {
     let lang = task.lang;
     let m = &l.mech;
     let f = &r.fs;
@@ -187,12 +190,13 @@ fn free_body(l: &Loaded, r: &Row, links: &[usize], which: usize, title: &str, ta
         poly.push(last + a.f * mup);
     }
     c.root_attr("data-mu-f", &format!("{mu_poly}"));
-    c.rich_paper((w / 2.0, 8.0), title, H_TITLE, Anchor::Middle, "#000000");
-    // the angle and both scale factors in two lines under the title
+    c.title((w / 2.0, 8.0), title, H_TITLE, Anchor::Middle);
+    // the angle and both scale factors in two lines under the name
     c.rich_paper(
         (w / 2.0, 14.0),
         &format!(
-            "φ = {}°;  μ_F = {} {u} ({}),",
+            "{}φ = {}°;  μ_F = {} {u} ({}),",
+            value.map(|v| format!("{v};  ")).unwrap_or_default(),
             num(r.phi.to_degrees(), 1, lang),
             mu_text(mu_body, lang),
             word(lang, "forces.on_body"),
@@ -333,17 +337,13 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         ),
     );
     c.root_attr("data-mu", &format!("{mu_v}"));
-    c.rich_paper(
-        (w / 2.0, 8.0),
-        &format!("{}, φ = {}°", word(lang, "forces.lever"), num(r.phi.to_degrees(), 1, lang)),
-        H_TITLE,
-        Anchor::Middle,
-        "#000000",
-    );
+    // the name; the angle opens the line of μ under it
+    c.title((w / 2.0, 8.0), word(lang, "forces.lever"), H_TITLE, Anchor::Middle);
     c.rich_paper(
         (w / 2.0, 15.5),
         &format!(
-            "μ_v = {} {};  M_{{{zh}}} = P_{{{b}}}·l_1 = {} {}",
+            "φ = {}°;  μ_v = {} {};  M_{{{zh}}} = P_{{{b}}}·l_1 = {} {}",
+            num(r.phi.to_degrees(), 1, lang),
             mu_text(mu_v, lang),
             word(lang, "forces.mu_v_unit"),
             num(r.fs.zhukovsky_moment, 3, lang),
@@ -549,20 +549,19 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
         );
         docs.add_text(
             format!("{dir}group-{}.svg", g + 1),
-            free_body(l, &a.detail, &grp.info.link_ids, g, &title, task),
+            free_body(l, &a.detail, &grp.info.link_ids, g, &title, None, task),
         )?;
     }
-    let title = format!(
-        "{} {}, P_{{{}}} = {} {}",
-        word(lang, "forces.input_link"),
-        m.link_names[m.crank.link],
+    let title = format!("{} {}", word(lang, "forces.input_link"), m.link_names[m.crank.link]);
+    let value = format!(
+        "P_{{{}}} = {} {}",
         word(lang, "forces.balancing_sub"),
         num(a.detail.fs.balancing_force, 1, lang),
         word(lang, "forces.unit_n")
     );
     docs.add_text(
         format!("{dir}input-link.svg"),
-        free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title, task),
+        free_body(l, &a.detail, &[m.crank.link], m.groups.len(), &title, Some(&value), task),
     )?;
     docs.add_text(format!("{dir}zhukovsky-lever.svg"), lever(l, a, task))?;
     // the balancing torque over the cycle: by kinetostatics as the curve, by

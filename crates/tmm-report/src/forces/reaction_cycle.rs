@@ -420,7 +420,7 @@ impl ReactionCycle {
                 String::new()
             }
         );
-        c.text_paper((w / 2.0, 8.0), &title, 4.0, Anchor::Middle, "#000000");
+        c.title((w / 2.0, 8.0), &title, 4.0, Anchor::Middle);
         let unit = word(lang, "forces.unit_n");
         if polar {
             // circles of |R| at round values, rays every 30° of the angle

@@ -57,6 +57,12 @@ fn line_name(b: &Boundary, lang: Language) -> String {
     }
 }
 
+/// The width a label's box takes for `text` at size `h` (mm), as the
+/// placer counts it.
+fn plain_width(text: &str, h: f64) -> f64 {
+    CHAR_WIDTH * crate::picture::em(h) * plain(text).chars().count() as f64
+}
+
 /// The paper of the contour drawing for `sheet` with the contour's
 /// (x1, x2) box fitted into its plot area: the map from (x1, x2) to the
 /// drawing's coordinates (mm, y down) is `canvas.to_paper(x1, x2)`. The
@@ -103,9 +109,16 @@ pub fn contour_svg(c: &Contour, chosen: Option<((f64, f64), String)>, lang: Lang
     // the legend's column: wider on the small paper of A2, where its
     // names wrap at the printed letter size
     let legend_w = if pw >= 190.0 { 0.34 } else { 0.42 } * pw;
+    // the name at the left of the top row; the pair's tooth numbers over
+    // the legend's column (the note keeps these only)
+    lab.put_title(
+        (2.0 + 0.5 * plain_width(word(lang, "gear.contour_title"), h), 1.0 + 0.6 * h),
+        word(lang, "gear.contour_title"),
+        h,
+    );
     lab.put_left(
-        (2.0, 1.0 + 0.6 * h),
-        &format!("{}: z_1 = {}, z_2 = {}", word(lang, "gear.contour_title"), c.base.z1, c.base.z2),
+        (pw - legend_w + 2.0, 1.0 + 0.6 * h),
+        &format!("z_1 = {}, z_2 = {}", c.base.z1, c.base.z2),
         h,
         "#000",
     );

@@ -45,8 +45,9 @@ use crate::words::word;
 
 type Pt = (f64, f64);
 
-/// Room above the drawing for its title, mm.
-const TITLE_H: f64 = 14.0;
+/// Room above the drawing for its name and the scale's line, mm (the
+/// circles' names stand above the drawing's top, clear of the scale).
+const TITLE_H: f64 = 21.0;
 /// Room left of the drawing for the dimension of x·m at least, mm; more
 /// when its text needs it (the text's ink, the 9.5 mm from the tool's end
 /// to the text and a margin).
@@ -176,14 +177,12 @@ pub fn machine_mesh_svg(pair: &Pair, t1: &ToothProfile, lang: Language, sheet: S
     cv.set_transform(f, (left - f * wx0, MARGIN + NAME_ROWS - f * wy0));
     cv.root_attr("data-scale", scale.text);
     let win = (wx0, wx1, wy0, wy1);
+    // the name, and under it the scale (the note keeps the scale only)
+    cv.title((0.5 * pw, 7.0), word(lang, "gear.machine_mesh_title"), H_HEAD, Anchor::Middle);
     cv.text_paper(
-        (0.5 * pw, 7.0),
-        &format!(
-            "{} {}",
-            word(lang, "gear.machine_mesh_title"),
-            crate::svg::scale_text(scale.text, lang)
-        ),
-        H_HEAD,
+        (0.5 * pw, 12.5),
+        &format!("{} {}", word(lang, "common.scale"), crate::svg::scale_text(scale.text, lang)),
+        H_LABEL,
         Anchor::Middle,
         "#000",
     );

@@ -230,8 +230,8 @@ pub struct MeshLayout {
 
 /// Width of the parameter table and legend on the right, mm.
 const TABLE_W: f64 = 92.0;
-/// Room for the title above the wheels, mm.
-const TITLE_H: f64 = 14.0;
+/// Room for the name and the scale's line above the wheels, mm.
+const TITLE_H: f64 = 17.0;
 
 /// The largest standard scale at which both centres O1, O2, the pole, the
 /// ends N1, N2 of the line of action and three pitches either side of the
@@ -309,15 +309,22 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     let paper = |q: Pt| c_to_paper(&lay, q, ph);
     // the title over the drawing; one wider than the drawing's part (the
     // note's A4 page) over the whole paper, the table moved under it
-    let title = format!("{} {}", word(lang, "gear.mesh_title"), crate::svg::scale_text(lay.scale.text, lang));
-    let title_w = CHAR_WIDTH * H_HEAD * plain(&title).chars().count() as f64;
+    let title = word(lang, "gear.mesh_title");
+    let title_w = CHAR_WIDTH * H_HEAD * plain(title).chars().count() as f64;
     let title_wide = title_w > lay.table_x - 6.0;
     let title_x = if title_wide {
         (0.5 * pw).min(pw - 1.0 - 0.5 * title_w).max(1.0 + 0.5 * title_w)
     } else {
         0.5 * (lay.table_x - 2.0)
     };
-    lab.put((title_x, 7.0), &title, H_HEAD, "#000");
+    // the name, and under it the scale (the note keeps the scale only)
+    lab.put_title((title_x, 7.0), title, H_HEAD);
+    lab.put(
+        (title_x, 12.5),
+        &format!("{} {}", word(lang, "common.scale"), crate::svg::scale_text(lay.scale.text, lang)),
+        H_LABEL,
+        "#000",
+    );
     let k_line = Style::THICK.widened(0.6);
     c.begin_group("teeth");
     for (t, rot, cen) in [(t1, sc.rot1, sc.o1), (t2, sc.rot2, sc.o2)] {
@@ -515,7 +522,7 @@ pub fn mesh_svg(pair: &Pair, t1: &ToothProfile, t2: &ToothProfile, lang: Languag
     }
     let mut side = Placer::new(pw, ph);
     let left = |p: &mut Placer, y: f64, text: &str, h: f64| p.put_left((tx, y), text, h, "#000");
-    let mut y = if title_wide { 15.0 } else { 8.0 };
+    let mut y = if title_wide { 20.0 } else { 8.0 };
     left(&mut side, y, word(lang, "gear.parameters"), H_LABEL);
     y += 2.0;
     for row in table_rows(pair, lang) {

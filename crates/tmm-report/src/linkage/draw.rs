@@ -230,15 +230,16 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     c.set_transform(s, (cx, cy));
     c.root_attr("data-scale", scale.text);
     c.root_attr("data-mu-l", &format!("{}", 1.0 / s));
-    let title = format!(
-        "{}, {} {},  μ_l = {} {}",
-        word(lang, "linkage.scheme"),
+    // the name, and under it the scale and μ (the note keeps these only)
+    c.title((0.5 * w, 8.0), word(lang, "linkage.scheme"), H_TITLE, Anchor::Middle);
+    let scale_line = format!(
+        "{} {},  μ_l = {} {}",
         word(lang, "linkage.scale_short"),
         crate::svg::scale_text(scale.text, lang),
         mu_text(1.0 / s, lang),
         word(lang, "linkage.m_per_mm")
     );
-    c.rich_paper((0.5 * w, 9.0), &title, H_TITLE, Anchor::Middle, "#000");
+    c.rich_paper((0.5 * w, 14.0), &scale_line, H_LABEL, Anchor::Middle, "#000");
     c.begin_group("paths");
     for p in &paths {
         c.polyline(p, Style::THIN);
@@ -581,7 +582,7 @@ pub(crate) fn cycle_diagram(
     let used = (ymax - ymin) / mu_y;
     let y_zero = top + 0.5 * (avail - used) + ymax / mu_y; // paper y of value 0
     let map = |x: f64, y: f64| (left + x / mu_phi, y_zero - y / mu_y);
-    c.rich_paper((0.5 * w, 7.0), title, H_TITLE, Anchor::Middle, "#000");
+    c.title((0.5 * w, 7.0), title, H_TITLE, Anchor::Middle);
     let deg = word(lang, "linkage.unit_deg_per_mm");
     let mu_t = mu_phi.to_radians() / omega;
     let scales = format!(
@@ -739,16 +740,11 @@ fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> Pict
     } else {
         position_text(lang, position)
     };
-    c.rich_paper(
-        (0.5 * w, 8.0),
-        &format!("{}, {pos_text}", word(lang, title_key)),
-        H_TITLE,
-        Anchor::Middle,
-        "#000",
-    );
+    // the name; under it the position and μ (the note keeps these only)
+    c.title((0.5 * w, 8.0), word(lang, title_key), H_TITLE, Anchor::Middle);
     c.rich_paper(
         (0.5 * w, 15.0),
-        &format!("{sym} = {} {}", mu_text(mu, lang), word(lang, unit_key)),
+        &format!("{pos_text},  {sym} = {} {}", mu_text(mu, lang), word(lang, unit_key)),
         H_LABEL,
         Anchor::Middle,
         "#000",

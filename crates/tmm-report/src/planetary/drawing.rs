@@ -99,21 +99,44 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
     let sr = scale.factor * 1e3; // paper mm per metre
     let axis_y = 0.533 * H; // paper mm from the bottom
     c.set_transform(sr, (22.0 + 0.1 * big * sr, axis_y));
+    // the name, then the tooth numbers (z with its index: z1 → z_1,
+    // z2' → z_{2}') and the scale: the note keeps these only
     let title = format!(
-        "{} {} — {}. {} {}",
+        "{} {}",
         word(lang, "planetary.title"),
         word(lang, &format!("planetary.scheme_{}", sc.name().replace('-', "_"))),
-        teeth_text(sc, b),
+    );
+    let teeth = teeth_text(sc, b)
+        .split(", ")
+        .map(|t| match t.strip_prefix('z') {
+            Some(rest) => match rest.split_once(' ') {
+                Some((i, v)) => format!("z_{{{}}}{} {v}", i.trim_end_matches('\''), if i.ends_with('\'') { "'" } else { "" }),
+                None => t.to_string(),
+            },
+            None => t.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
+    let params = format!(
+        "{teeth}. {} {}",
         word(lang, "common.scale"),
         crate::svg::scale_text(scale.text, lang)
     );
     // in lines that stay on the paper (the labels' boxes are CHAR_WIDTH =
     // 0.62 of the size a letter, the wrapping's 0.6: 4 % narrower room)
-    for (i, l) in crate::labels::wrap_text(&title, H_LABEL, 0.96 * (W - 10.0 - 0.6))
-        .iter()
-        .enumerate()
-    {
-        lab.put_left((10.0, 10.0 + 1.25 * crate::picture::em(H_LABEL) * i as f64), l, H_LABEL, "#000");
+    let room = 0.96 * (W - 10.0 - 0.6);
+    let (names, rest) = (
+        crate::labels::wrap_text(&title, H_LABEL, room),
+        crate::labels::wrap_text(&params, H_LABEL, room),
+    );
+    let line_y = |i: usize| 10.0 + 1.25 * crate::picture::em(H_LABEL) * i as f64;
+    lab.begin_title();
+    for (i, l) in names.iter().enumerate() {
+        lab.put_left((10.0, line_y(i)), l, H_LABEL, "#000");
+    }
+    lab.end_title();
+    for (i, l) in rest.iter().enumerate() {
+        lab.put_left((10.0, line_y(names.len() + i)), l, H_LABEL, "#000");
     }
 
     // --- the scheme ---

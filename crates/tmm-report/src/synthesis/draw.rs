@@ -249,7 +249,7 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     c.root_attr("data-mu-l", &format!("{}", 0.001 / scale.factor));
     let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
     let title = if function { wd("title_function") } else { wd("title") };
-    c.rich_paper((0.5 * w, 6.0), &title, h_title, Anchor::Middle, "#000");
+    c.title((0.5 * w, 6.0), &title, h_title, Anchor::Middle);
     let sub = if function {
         format!(
             "{} {},   μ_l = {} {}",

@@ -113,12 +113,8 @@ fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: S
         .collect();
     let fold = |f: fn(f64, f64) -> f64, init: f64, y: bool| curves.iter().flatten().map(|p| if y { p.1 } else { p.0 }).fold(init, f);
     let yr = (fold(f64::min, f64::INFINITY, true), fold(f64::max, f64::NEG_INFINITY, true));
-    let title = format!(
-        "{} {link}, d = {} {}",
-        wd("title_indicator"),
-        num(bore * 1000.0, 1, lang),
-        wd("unit_mm")
-    );
+    // the name; the bore, a parameter, goes in the legend
+    let title = format!("{} {link}", wd("title_indicator"));
     let mut ch = Chart::new(
         lang,
         sheet,
@@ -161,5 +157,6 @@ fn draw(ind: &Indicator, h: f64, bore: f64, link: &str, lang: Language, sheet: S
         }
     }
     ch.note(&format!("H = {} {}", num(h, 4, lang), wd("unit_m")));
+    ch.note(&format!("d = {} {}", num(bore * 1000.0, 1, lang), wd("unit_mm")));
     ch.finish()
 }
