@@ -18,7 +18,7 @@ use crate::translation::Translation;
 
 /// A table of at most this many rows is kept on one page: a row of 12 pt
 /// text with its insets is about 6.6 mm high, so 16 rows with the header
-/// and the caption take about 125 mm, under half the text area (252 mm
+/// and the caption take about 125 mm, under half the text area (243 mm
 /// with the frame, 257 mm without), and moving such a table whole to the
 /// next page leaves no page half empty. Only a longer table is split, and
 /// its continuation is then most of a page of table (GOST 2.105-95, 4.4.9:

@@ -382,7 +382,7 @@ fn check(name: &str, note: &Note, words: Words, faults: &mut Vec<String>) -> Cou
     if !t.warnings.is_empty() {
         faults.push(format!("{name}: typst warnings {:?}", t.warnings));
     }
-    let (top, bottom) = if note.frame { (15.0, 267.0) } else { (20.0, 277.0) };
+    let (top, bottom) = if note.frame { (24.0, 267.0) } else { (20.0, 277.0) };
     let left = if note.frame { 25.0 } else { 30.0 };
     let doc = pdf_extract::Document::load_mem(&t.pdf).unwrap();
     let pages = pages(&doc, top, bottom);

@@ -4,8 +4,10 @@
 //! from the others (GOST 2.104); title block form 2 (185 × 40 mm) on the
 //! first framed page, form 2a (185 × 15 mm) on the following ones; the
 //! designation in its field and the page's number in the sheet cell, found
-//! by the glyphs' positions, not by the text alone. Checked on the sample
-//! note and on the note composed from a run of the default task.
+//! by the glyphs' positions, not by the text alone; graph 26 (70 × 14 mm,
+//! the designation turned by 180°) in the frame's top-left corner. Checked
+//! on the sample note and on the note composed from a run of the default
+//! task.
 
 use crate::common;
 
@@ -19,10 +21,13 @@ use tmm_report::run::{DEFAULT_TASK, run_task};
 const PT: f64 = 72.0 / 25.4;
 
 /// One page read back: glyphs (origin in mm from the page's bottom-left
-/// corner, the character) and stroked straight pieces (mm, y up).
+/// corner, the character), apart the glyphs turned upside down (their
+/// text matrix's both diagonal terms negative), and stroked straight
+/// pieces (mm, y up).
 #[derive(Debug, Default)]
 struct Page {
     glyphs: Vec<(f64, f64, String)>,
+    turned: Vec<(f64, f64, String)>,
     segments: Vec<[f64; 4]>,
 }
 
@@ -45,7 +50,12 @@ impl OutputDev for Reader {
     }
     fn output_character(&mut self, trm: &Transform, _: f64, _: f64, _: f64, ch: &str) -> Result<(), OutputError> {
         if let Some(p) = self.pages.last_mut() {
-            p.glyphs.push((trm.m31 / PT, trm.m32 / PT, ch.to_string()));
+            let g = (trm.m31 / PT, trm.m32 / PT, ch.to_string());
+            if trm.m11 < 0.0 && trm.m22 < 0.0 {
+                p.turned.push(g);
+            } else {
+                p.glyphs.push(g);
+            }
         }
         Ok(())
     }
@@ -159,6 +169,39 @@ impl Page {
     }
 }
 
+/// Graph 26 of GOST 2.104-2006 on a framed A4 page: 70 × 14 mm in the
+/// frame's top-left corner (x 20 … 90, y 278 … 292 mm, y up), its right
+/// and bottom sides drawn; every glyph of the designation turned by 180°
+/// inside it (read from the right, as it stands upside down), none of the
+/// page's upright text in it or within 3 mm under it; no turned glyph
+/// anywhere else. `want`: the designation without spaces.
+fn check_graph_26(page: &Page, want: &str, what: &str) {
+    assert!(page.has_line(90.0, 278.0, 90.0, 292.0), "{what}: no right side of graph 26");
+    assert!(page.has_line(20.0, 278.0, 90.0, 278.0), "{what}: no bottom of graph 26");
+    // a turned glyph's origin is its baseline's right end, its letter
+    // hanging below it on the paper: every origin inside the box, 1 mm clear
+    let inside = |g: &(f64, f64, String)| (21.0..=89.0).contains(&g.0) && (279.0..=291.0).contains(&g.1);
+    assert!(
+        page.turned.iter().all(inside),
+        "{what}: a turned glyph outside graph 26: {:?}",
+        page.turned
+    );
+    let mut g: Vec<&(f64, f64, String)> = page.turned.iter().collect();
+    g.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let read: String = g.iter().flat_map(|c| c.2.chars()).filter(|c| !c.is_whitespace()).collect();
+    assert_eq!(read, want, "{what}: graph 26");
+    // one baseline: the glyphs' origins within 0.5 mm in height
+    let (lo, hi) = g
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| (lo.min(c.1), hi.max(c.1)));
+    assert!(hi - lo < 0.5, "{what}: graph 26's baseline from {lo} to {hi} mm");
+    assert!(
+        page.text_in(20.0, 90.0, 275.0, 297.0).is_empty(),
+        "{what}: upright text in or under graph 26: {}",
+        page.text_in(20.0, 90.0, 275.0, 297.0)
+    );
+}
+
 /// Checks a framed note: returns the number of the first framed page.
 fn check_framed(pdf: &[u8], pages: usize, designation: &str, student: &str, what: &str) -> usize {
     let p = read(pdf);
@@ -223,6 +266,7 @@ fn check_framed(pdf: &[u8], pages: usize, designation: &str, student: &str, what
             page.text_in(20.0, 205.0, top + 0.5, top + 5.0).is_empty(),
             "{what}: page {n}: text on the title block"
         );
+        check_graph_26(page, &want, &format!("{what}: page {n}"));
     }
     first
 }

@@ -435,12 +435,15 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         };
         c.label_clear(t(*p), &n, H_LABEL, "#000", LEVER_CLEAR_MM);
     }
+    // each force numbered as its arm is (h_k for the force (k)), so the
+    // pairs read without the colours
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
         c.label_clear(
             t(x.image + x.force * mu),
             &format!(
-                "{} {} {}",
+                "({}) {} {} {}",
+                i + 1,
                 force_label(&x.label, lang),
                 num(x.force.hypot(), 1, lang),
                 word(lang, "forces.unit_n")
@@ -450,13 +453,19 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             LEVER_CLEAR_MM,
         );
     }
-    for (k, arm) in arms.iter().enumerate() {
+    for arm in &arms {
         let col = COLORS[arm.force % COLORS.len()];
-        // by the middle of the arm, else nearer one of its ends
-        let along: Vec<(f64, f64)> = [0.5, 0.35, 0.65, 0.2, 0.8].iter().map(|f| t(arm.foot * *f)).collect();
+        // at the arm's foot, where its line meets the force's dashed line
+        // of action, else along the arm back towards the pole, else just
+        // past the foot on the arm's line carried on
+        let along: Vec<(f64, f64)> = (0..=18)
+            .map(|k| 1.0 - 0.05 * k as f64)
+            .chain([1.08, 1.16])
+            .map(|f| t(arm.foot * f))
+            .collect();
         c.label_clear_near(
             &along,
-            &format!("h_{} = {} {}", k + 1, num(arm.mm, 1, lang), word(lang, "forces.unit_mm")),
+            &format!("h_{} = {} {}", arm.force + 1, num(arm.mm, 1, lang), word(lang, "forces.unit_mm")),
             H_LABEL - 0.5,
             col,
             LEVER_CLEAR_MM,

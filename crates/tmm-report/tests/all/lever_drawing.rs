@@ -257,3 +257,142 @@ fn zhukovsky_lever_labels_clear_and_arms_drawn() {
     assert!(arms_checked > 10, "{arms_checked}");
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
 }
+
+/// The `<line>` tags of the group `id` of an SVG (up to its first `</g>`).
+fn group_lines<'a>(svg: &'a str, id: &str) -> Vec<&'a str> {
+    let open = format!("<g id=\"{id}\">");
+    let Some(i) = svg.find(&open) else { return Vec::new() };
+    let body = &svg[i + open.len()..];
+    let body = &body[..body.find("</g>").unwrap_or(body.len())];
+    body.split('<')
+        .filter(|t| t.starts_with("line "))
+        .map(|t| t.trim_end_matches(['/', '>', '\n']))
+        .collect()
+}
+
+/// Zhukovsky's lever reads in black and white (issue 22, point 4): each
+/// force of the report's lever is numbered "(k) …" and the arm of force k
+/// labelled "h_k = … мм" with that force's own arm, h = |k × F| / |F| over
+/// the printed μ_v, recomputed here from `report.json` (so a colour is
+/// never the only tie between a force and its arm); the arm's label stands
+/// at its arm (its ink within [`NEAR_ARM_MM`] of the arm's line, the line
+/// from the pole found by its length); arm lines are thin and solid, the
+/// lines of action carried to the arms' feet thin and dashed (GOST 2.303:
+/// s/3 … s/2 of the plan's 0.7 mm main line, here ≤ 0.35 mm).
+#[test]
+fn zhukovsky_lever_pairs_each_force_with_its_arm_by_number() {
+    /// How far an arm's label may stand from its arm's line, mm: seed 003's
+    /// h_11 stands 18 mm off, its arm running along the plan's line pc
+    /// with h_5's (two forces at c on one line of action), where no label
+    /// finds room.
+    const NEAR_ARM_MM: f64 = 20.0;
+    let tasks = [
+        ("default.toml", DEFAULT_TASK.to_string()),
+        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
+    ];
+    let mut faults = Vec::new();
+    let (mut pairs, mut farthest) = (0, 0.0f64);
+    for (name, text) in &tasks {
+        for lang in [Language::Ru, Language::En] {
+            let task = TaskSource::new(*name, text.as_str());
+            let report: Value = run_task_in(&task, Some(lang)).unwrap().report.clone();
+            let figs = note_figures(&task, Some(lang)).unwrap();
+            let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
+            let svg = pic.svg();
+            let mu_v: f64 = pic.attr("data-mu").and_then(|v| v.parse().ok()).expect("data-mu");
+            let inks = texts(svg);
+            // the arms' group: solid lines from the pole, dashed carried lines
+            let lines: Vec<((f64, f64), (f64, f64), f64, bool)> = group_lines(svg, "arms")
+                .iter()
+                .map(|t| {
+                    (
+                        (num(t, "x1").unwrap(), num(t, "y1").unwrap()),
+                        (num(t, "x2").unwrap(), num(t, "y2").unwrap()),
+                        num(t, "stroke-width").unwrap(),
+                        attr(t, "stroke-dasharray").is_some(),
+                    )
+                })
+                .collect();
+            for (a, b, w, dashed) in &lines {
+                if *w > 0.35 + 1e-9 {
+                    faults.push(format!("{name} {lang:?}: arm line {a:?}–{b:?} {w} mm wide (dashed {dashed})"));
+                }
+            }
+            // the pole: the end most of the solid arm lines share
+            let solid: Vec<_> = lines.iter().filter(|l| !l.3).collect();
+            let ends: Vec<(f64, f64)> = solid.iter().flat_map(|l| [l.0, l.1]).collect();
+            let shared = |p: (f64, f64)| ends.iter().filter(|q| (q.0 - p.0).hypot(q.1 - p.1) < 1e-3).count();
+            let Some(pole) = ends.iter().copied().max_by_key(|p| shared(*p)) else {
+                faults.push(format!("{name} {lang:?}: no arm drawn"));
+                continue;
+            };
+            for (i, e) in report["forces"]["lever"].as_array().unwrap().iter().enumerate() {
+                let k = i + 1;
+                if !inks.iter().any(|t| t.text.starts_with(&format!("({k}) "))) {
+                    faults.push(format!("{name} {lang:?}: no force numbered ({k})"));
+                }
+                let v = |p: &Value, j: usize| p[j].as_f64().unwrap();
+                let (img, f) = (&e["image"], &e["force"]);
+                let ff = v(f, 0).hypot(v(f, 1));
+                let h = if ff > 0.0 {
+                    (v(img, 0) * v(f, 1) - v(img, 1) * v(f, 0)).abs() / ff / mu_v
+                } else {
+                    0.0
+                };
+                let label: Vec<&Ink> = inks
+                    .iter()
+                    .filter(|t| {
+                        t.text
+                            .strip_prefix(&format!("h{k}"))
+                            .is_some_and(|r| r.trim_start().starts_with('='))
+                    })
+                    .collect();
+                if h < 0.5 {
+                    if !label.is_empty() {
+                        faults.push(format!("{name} {lang:?}: force {k}'s arm {h:.2} mm is labelled"));
+                    }
+                    continue;
+                }
+                pairs += 1;
+                let [ink] = label.as_slice() else {
+                    faults.push(format!("{name} {lang:?}: {} labels h{k} for the arm {h:.2} mm", label.len()));
+                    continue;
+                };
+                let eq = ink.text.find('=').unwrap();
+                match printed(&ink.text[eq + 1..]) {
+                    Some(p) if (p - h).abs() <= 0.05 + 1e-6 => {}
+                    p => faults.push(format!("{name} {lang:?}: \"{}\" for force {k}'s arm {h:.3} mm ({p:?})", ink.text)),
+                }
+                // its line: from the pole, h long, towards the foot of the
+                // perpendicular on the line of action (r − u (r·u), u along
+                // F; the paper's y down)
+                let (ux, uy) = (v(f, 0) / ff, v(f, 1) / ff);
+                let along = v(img, 0) * ux + v(img, 1) * uy;
+                let (fx, fy) = (v(img, 0) - ux * along, -(v(img, 1) - uy * along));
+                let fl = fx.hypot(fy);
+                let arm = solid.iter().find_map(|(a, b, _, _)| {
+                    let (p, q) = if (a.0 - pole.0).hypot(a.1 - pole.1) < 1e-3 {
+                        (*a, *b)
+                    } else {
+                        (*b, *a)
+                    };
+                    let len = (q.0 - p.0).hypot(q.1 - p.1);
+                    let towards = ((q.0 - p.0) * fx + (q.1 - p.1) * fy) / (len * fl).max(1e-12) > 0.999;
+                    ((p.0 - pole.0).hypot(p.1 - pole.1) < 1e-3 && (len - h).abs() < 0.01 && towards).then_some((p, q))
+                });
+                let Some((p, q)) = arm else {
+                    faults.push(format!("{name} {lang:?}: no solid line {h:.2} mm from the pole for force {k}"));
+                    continue;
+                };
+                let d = seg_box(p, q, &ink.b);
+                farthest = farthest.max(d);
+                if d > NEAR_ARM_MM {
+                    faults.push(format!("{name} {lang:?}: \"{}\" {d:.1} mm from its arm", ink.text));
+                }
+            }
+        }
+    }
+    println!("lever: {pairs} forces paired with their arms, the farthest label {farthest:.1} mm from its arm");
+    assert!(pairs > 10, "{pairs}");
+    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}

@@ -188,3 +188,106 @@ fn the_frame_of_the_mechanism_measures_its_printed_scale() {
         .any(|dist| (dist - want).abs() < 0.01);
     assert!(found, "no two pivots {want} mm apart among {apexes:?}");
 }
+
+/// Graph 26 of GOST 2.104-2006 as a CAD program reads it, on every sheet's
+/// DXF of the default project (A1 and A2) and of seed 003: read back by
+/// ezdxf (when at hand: `TMM_EZDXF_PYTHON`), the cell's right and bottom
+/// sides as FRAME lines (x = 90 from the frame's top down 14 mm, y = top −
+/// 14 from x = 20 to 90) on a layer of the main line (0.5 … 1.4 mm, GOST
+/// 2.303), and the designation as one TEXT turned by 180° whose box, as
+/// ezdxf measures it (its own font metrics, not tmm's), lies inside the
+/// 70 × 14 mm cell (seed 003 names no designation: no turned text). The
+/// cell's numbers are the standard's.
+#[test]
+fn graph_26_reads_back_from_every_sheets_dxf() {
+    let py = std::env::var("TMM_EZDXF_PYTHON").unwrap_or_else(|_| "python3".to_string());
+    let ok = std::process::Command::new(&py)
+        .args(["-c", "import ezdxf"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        eprintln!("graph_26_reads_back_from_every_sheets_dxf: skipped, no python with ezdxf (set TMM_EZDXF_PYTHON)");
+        return;
+    }
+    // every FRAME line, the FRAME layer's weight and every turned FRAME
+    // text with ezdxf's box of it, one record a line
+    const SCRIPT: &str = r#"
+import sys, ezdxf
+from ezdxf import bbox
+doc = ezdxf.readfile(sys.argv[1])
+print("WEIGHT", doc.layers.get("FRAME").dxf.lineweight)
+for e in doc.modelspace():
+    if e.dxf.layer != "FRAME":
+        continue
+    if e.dxftype() == "LINE":
+        s, t = e.dxf.start, e.dxf.end
+        print("LINE", s.x, s.y, t.x, t.y, e.dxf.get("lineweight", -1))
+    elif e.dxftype() == "TEXT" and abs(e.dxf.get("rotation", 0.0) % 360.0 - 180.0) < 1e-6:
+        b = bbox.extents([e])
+        print("TEXT", b.extmin.x, b.extmin.y, b.extmax.x, b.extmax.y, e.dxf.text)
+"#;
+    let dir = std::env::temp_dir().join(format!("tmm-graph-26-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut cases = vec![];
+    for format in ["A1", "A2"] {
+        let kept: Vec<&str> = DEFAULT_TASK.lines().filter(|l| !l.trim_start().starts_with("sheet =")).collect();
+        let text = kept
+            .join("\n")
+            .replacen("[project]", &format!("[project]\nsheet = \"{format}\""), 1);
+        cases.push((format!("default {format}"), run_task(&TaskSource::new("default", text)).unwrap()));
+    }
+    let name = "seed-003-sixbar.toml";
+    cases.push((
+        name.to_string(),
+        run_task(&TaskSource::new(name, crate::svg_read::example(name))).unwrap(),
+    ));
+    let mut checked = 0;
+    for (what, run) in &cases {
+        // seed 003 names no designation: its cell is drawn empty
+        let designation = run.project.designation.clone();
+        for (path, bytes, _) in sheet_dxfs(run) {
+            let f = dir.join(format!("{}-{}", what.replace([' ', '.'], "_"), path.replace('/', "-")));
+            std::fs::write(&f, &bytes).unwrap();
+            let o = std::process::Command::new(&py).args(["-c", SCRIPT]).arg(&f).output().unwrap();
+            assert!(o.status.success(), "{what} {path}: {}", String::from_utf8_lossy(&o.stderr));
+            let out = String::from_utf8_lossy(&o.stdout).to_string();
+            let h = if what.ends_with("A2") { 420.0 } else { 594.0 };
+            let top = h - 5.0;
+            let (mut weight, mut lines, mut texts) = (0.0, vec![], vec![]);
+            for l in out.lines() {
+                let w: Vec<&str> = l.split_whitespace().collect();
+                let n = |i: usize| w[i].parse::<f64>().unwrap();
+                match w[0] {
+                    "WEIGHT" => weight = n(1) / 100.0,
+                    "LINE" => lines.push([n(1), n(2), n(3), n(4)]),
+                    "TEXT" => texts.push(([n(1), n(2), n(3), n(4)], w[5..].join(" "))),
+                    _ => {}
+                }
+            }
+            assert!((0.5..=1.4).contains(&weight), "{what} {path}: FRAME {weight} mm");
+            let has = |a: [f64; 4]| {
+                lines.iter().any(|l| {
+                    let same = |p: [f64; 4]| p.iter().zip(a).all(|(x, y)| (x - y).abs() < 1e-6);
+                    same(*l) || same([l[2], l[3], l[0], l[1]])
+                })
+            };
+            assert!(has([90.0, top, 90.0, top - 14.0]), "{what} {path}: no right side of graph 26");
+            assert!(has([20.0, top - 14.0, 90.0, top - 14.0]), "{what} {path}: no bottom of graph 26");
+            if designation.trim().is_empty() {
+                assert!(texts.is_empty(), "{what} {path}: turned texts {texts:?} with no designation");
+                checked += 1;
+                continue;
+            }
+            assert_eq!(texts.len(), 1, "{what} {path}: turned texts {texts:?}");
+            let ([x0, y0, x1, y1], t) = &texts[0];
+            assert_eq!(t, &designation, "{what} {path}");
+            assert!(
+                *x0 > 20.0 && *x1 < 90.0 && *y0 > top - 14.0 && *y1 < top,
+                "{what} {path}: the designation's box ({x0}, {y0}) … ({x1}, {y1}) leaves graph 26"
+            );
+            checked += 1;
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(checked >= 10, "{checked} sheets");
+}
