@@ -12,6 +12,7 @@ mod figure_fit;
 mod figure_numbers;
 mod figures_pdf;
 mod fixtures;
+mod flywheel_text;
 mod fonts_pdf;
 mod formulas;
 mod frame;
