@@ -135,7 +135,8 @@ pub const ZERO_FLOOR: f64 = 1e-9;
 /// assert_eq!(zero_noise(1.2e-6, 360.0), 0.0);
 /// // a small value of its own column's size is kept
 /// assert_eq!(zero_noise(0.0012, 0.005), 0.0012);
-/// assert_eq!(zero_noise(3e-4, 1000.0), 3e-4);
+/// assert_eq!(zero_noise(3e-4, 100.0), 3e-4);
+/// assert_eq!(zero_noise(3e-4, 1000.0), 0.0);
 /// assert_eq!(zero_noise(3e-12, 0.0), 0.0);
 /// ```
 pub fn zero_noise(value: f64, scale: f64) -> f64 {
