@@ -492,10 +492,8 @@ fn content_markup(s: &str) -> String {
         let rest = &text[head_end..];
         // the characters touching the symbol after
         let tail_start = if glue_after {
-            rest.char_indices()
-                .filter(|(_, c)| c.is_whitespace())
-                .last()
-                .map_or(0, |(j, c)| j + c.len_utf8())
+            rest.rfind(char::is_whitespace)
+                .map_or(0, |j| j + rest[j..].chars().next().map_or(1, char::len_utf8))
         } else {
             rest.len()
         };

@@ -899,10 +899,9 @@ fn a_long_headings_second_line_and_the_sources_start_at_the_indent() {
 #[test]
 fn a_power_of_tens_dot_is_as_narrow_as_a_full_stop() {
     use tmm_note::{Span, Text};
-    let x_after = |spans: Vec<Span>| {
+    let x_after = |mut spans: Vec<Span>| {
         let mut note = Note::default();
         let mut s = Section::new("Раздел");
-        let mut spans = spans;
         spans.push(Span::Math("x".into()));
         s.blocks.push(Block::Paragraph(Text(spans)));
         note.sections.push(s);
