@@ -176,6 +176,33 @@ impl Expr {
         })
     }
 
+    /// Calls `f` on each quantity (not a count) that is a term of the
+    /// expression's sum (`terms`: under sums, differences, negations and
+    /// parentheses only), or on every quantity (`terms` false).
+    fn denoise(&mut self, f: &mut dyn FnMut(&mut Quantity), terms: bool) {
+        match self {
+            Expr::Q(q) => {
+                if q.digits > 0 {
+                    f(q);
+                }
+            }
+            Expr::Exact { .. } => {}
+            Expr::Sum(v) | Expr::Terms { terms: v, .. } => v.iter_mut().for_each(|e| e.denoise(f, terms)),
+            Expr::Sub(a, b) => {
+                a.denoise(f, terms);
+                b.denoise(f, terms);
+            }
+            Expr::Neg(a) | Expr::Paren(a) => a.denoise(f, terms),
+            Expr::Mul(v) if !terms => v.iter_mut().for_each(|e| e.denoise(f, terms)),
+            Expr::Div(a, b) if !terms => {
+                a.denoise(f, terms);
+                b.denoise(f, terms);
+            }
+            Expr::Pow(a, _) | Expr::Func(_, a) if !terms => a.denoise(f, terms),
+            Expr::Mul(_) | Expr::Div(..) | Expr::Pow(..) | Expr::Func(..) => {}
+        }
+    }
+
     /// The quantities in the order [`Expr::eval`] meets them.
     fn quantities<'a>(&'a self, out: &mut Vec<&'a Quantity>) {
         match self {
@@ -299,8 +326,23 @@ pub struct Calculation {
 
 impl Calculation {
     /// A calculation.
+    ///
+    /// A quantity under the computation's resolution relative to the
+    /// largest of the formula ([`crate::number::zero_noise`]) is the noise
+    /// of a zero and is held, printed and checked as 0 (`P = 0 − 30610 + …`,
+    /// not `0,000 − 30610 + …`).
     pub fn new(result: Quantity, rhs: Expr) -> Self {
-        Calculation { result, rhs }
+        let mut c = Calculation { result, rhs };
+        // the scale: the largest of the result and the terms added to it
+        // (quantities of its kind; a factor's own unit is another)
+        let mut scale = c.result.value.abs();
+        c.rhs.denoise(&mut |q| scale = scale.max(q.value.abs()), true);
+        if c.result.digits > 0 {
+            c.result.value = crate::number::zero_noise(c.result.value, scale);
+        }
+        c.rhs.denoise(&mut |q| q.value = crate::number::zero_noise(q.value, scale), true);
+        c.rhs.denoise(&mut |q| q.value = crate::number::zero_noise(q.value, 0.0), false);
+        c
     }
 
     /// The typst math of the whole calculation (without `$`): on one line,
@@ -393,6 +435,11 @@ fn printed_and_half_ulp(value: f64, digits: u8) -> Result<(f64, f64), NoteError>
         return Ok((value.round(), 0.0));
     }
     let f = format_number(value, digits, Lang::En)?;
+    // an exact zero (or the noise of one, made 0 by `Calculation::new`) is
+    // printed "0" and is exact
+    if value == 0.0 {
+        return Ok((0.0, 0.0));
+    }
     let m = f.mantissa.replace('\u{2212}', "-");
     let decimals = m.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
     let exp = f.exponent.unwrap_or(0);

@@ -342,9 +342,19 @@ impl Writer<'_> {
             let _ = write!(self.out, "{}, ", content_arg(&head));
         }
         self.out.push_str("),\n");
+        // a number under the resolution of its column's largest is the
+        // noise of a zero and prints 0 (`number::zero_noise`)
+        let mut scales = vec![0.0_f64; n];
+        for row in rows {
+            for (i, c) in row.iter().enumerate() {
+                if let Cell::Number { value, .. } = c {
+                    scales[i] = scales[i].max(value.abs());
+                }
+            }
+        }
         for row in rows {
             self.out.push_str("  ");
-            for c in row {
+            for (i, c) in row.iter().enumerate() {
                 match c {
                     Cell::Text(t) => {
                         self.out.push('[');
@@ -353,7 +363,7 @@ impl Writer<'_> {
                     }
                     Cell::Number { value, digits } => {
                         self.out.push('[');
-                        self.number(*value, *digits, "")?;
+                        self.number(crate::number::zero_noise(*value, scales[i]), *digits, "")?;
                         self.out.push_str("], ");
                     }
                     Cell::Empty => self.out.push_str("[], "),
@@ -432,32 +442,71 @@ impl Writer<'_> {
 ///
 /// A symbol and the text touching it stay on one line: where a plain run
 /// meets a math run with no space between (`s–ds/dφ`, `R^n,`, `M_ур).`),
-/// a word joiner (U+2060) stands at the seam, so the line never breaks
-/// between a symbol and its punctuation or dash (typst treats an inline
-/// formula as an object a line may break before and after).
+/// the symbol and the characters glued to it (up to the nearest space) are
+/// set in one box, so the line never breaks between a symbol and its
+/// punctuation or dash (typst treats an inline formula as an object a line
+/// may break before and after). A box adds no character to the text, so
+/// the PDF's text copies as written (a word joiner U+2060 at the seam,
+/// which did the same, came out in the copied text).
 fn content_markup(s: &str) -> String {
     let runs = crate::notation::runs(s);
     let math_at = |i: usize| runs.get(i).is_some_and(|(m, r)| *m && check_math(r).is_ok());
     let mut out = String::new();
+    // the pieces glued together, waiting for their box
+    let mut glued: Vec<String> = Vec::new();
+    let flush = |glued: &mut Vec<String>, out: &mut String| {
+        match glued.len() {
+            0 => {}
+            1 => out.push_str(&glued[0]),
+            _ => {
+                let _ = write!(out, "#box[{}]", glued.concat());
+            }
+        }
+        glued.clear();
+    };
     for (i, (_, run)) in runs.iter().enumerate() {
         if math_at(i) {
-            let _ = write!(out, "${run}$");
+            glued.push(format!("${run}$"));
+            continue;
+        }
+        let text = keep_equals(run);
+        let glue_before = i > 0 && math_at(i - 1);
+        let glue_after = math_at(i + 1);
+        // the characters touching the symbol before (no space between)
+        let head_end = if glue_before {
+            text.find(char::is_whitespace).unwrap_or(text.len())
         } else {
-            let mut text = keep_equals(run);
-            if i > 0 && math_at(i - 1) && !text.starts_with(char::is_whitespace) {
-                text.insert(0, WORD_JOINER);
+            0
+        };
+        if head_end > 0 {
+            glued.push(format!("#{}", string_literal(&text[..head_end])));
+        }
+        if head_end == text.len() && glue_before {
+            // the whole run is glued: to the next symbol too, or it closes
+            if !glue_after {
+                flush(&mut glued, &mut out);
             }
-            if math_at(i + 1) && !text.ends_with(char::is_whitespace) {
-                text.push(WORD_JOINER);
-            }
-            let _ = write!(out, "#{}", string_literal(&text));
+            continue;
+        }
+        flush(&mut glued, &mut out);
+        let rest = &text[head_end..];
+        // the characters touching the symbol after
+        let tail_start = if glue_after {
+            rest.rfind(char::is_whitespace)
+                .map_or(0, |j| j + rest[j..].chars().next().map_or(1, char::len_utf8))
+        } else {
+            rest.len()
+        };
+        if tail_start > 0 {
+            let _ = write!(out, "#{}", string_literal(&rest[..tail_start]));
+        }
+        if tail_start < rest.len() {
+            glued.push(format!("#{}", string_literal(&rest[tail_start..])));
         }
     }
+    flush(&mut glued, &mut out);
     out
 }
-
-/// U+2060 WORD JOINER: no line break on either side, no width.
-const WORD_JOINER: char = '\u{2060}';
 
 /// A text whose `=`, `≈` and `≤`, `≥` stay on the line of the symbol before
 /// them: the space before each made a no-break space, so a line never ends
@@ -509,5 +558,22 @@ mod keep_equals_tests {
         assert_eq!(super::keep_equals("a=b"), "a=b");
         // a long value may still go to the next line after the sign
         assert_eq!(super::keep_equals("M = 12345,678901 Н"), "M\u{a0}= 12345,678901 Н");
+    }
+}
+
+#[cfg(test)]
+mod glue_tests {
+    #[test]
+    fn a_symbol_and_the_characters_touching_it_are_one_box() {
+        let marked = |s: &str| crate::notation::notation_with(s, true);
+        let m = super::content_markup(&marked("момент (M_ур). Далее"));
+        assert!(!m.contains('\u{2060}'), "{m}");
+        assert!(m.contains("#box[#\"(\"$M_\"ур\"$#\").\"]"), "{m}");
+        // a symbol between spaces stands alone
+        let m = super::content_markup(&marked("звено K_v и"));
+        assert!(!m.contains("#box"), "{m}");
+        // a chain symbol–text–symbol glued throughout is one box
+        let m = super::content_markup(&marked("a s–ds/dφ b"));
+        assert_eq!(m.matches("#box[").count(), 1, "{m}");
     }
 }

@@ -58,6 +58,9 @@ pub fn notation(text: &str) -> String {
 /// assert_eq!(notation_with("a module m", false), "a module m");
 /// // a letter with a star is a symbol in every language
 /// assert_eq!(notation_with("clearance c*", false), format!("clearance {O}c^*{C}"));
+/// // and a letter set equal to a value (`W = 1`, `D = 426.9 mm`)
+/// assert_eq!(notation_with("freedom W = 1", false), format!("freedom {O}W{C} = 1"));
+/// assert_eq!(notation_with("a = b", false), "a = b");
 /// assert_eq!(notation_with("ΔT —", false), format!("{O}Δ T{C} —"));
 /// ```
 pub fn notation_with(text: &str, lone_latin: bool) -> String {
@@ -164,10 +167,14 @@ fn derivative(s: &[char]) -> Option<(String, usize)> {
 /// A symbol of one letter at the start of `s` standing alone: a Greek
 /// letter (`θ`, `ϑ`), `Δ` with one letter (`ΔT`), with `lone_latin` a
 /// Latin letter other than a Roman numeral; a `*` after it is a
-/// superscript (`c*`).
+/// superscript (`c*`). Without `lone_latin` (English, where `a` and `I`
+/// are words) a Latin letter other than `a`, `A`, `I` followed by ` = `
+/// is a symbol too (`W = 1`, `D = 426.9 mm`), set as in the formulas.
 fn lone(s: &[char], lone_latin: bool) -> Option<(String, usize)> {
     let free = |k: usize| s.get(k).is_none_or(|c| !c.is_alphanumeric() && !matches!(c, '_' | '^'));
     let c = *s.first()?;
+    let equated = !matches!(c, 'a' | 'A' | 'I') && matches!(s.get(1), Some(' ' | '\u{a0}')) && matches!(s.get(2), Some('=' | '≈'));
+    let lone_latin = lone_latin || equated;
     let (math, len) = if c == 'Δ' && s.get(1).is_some_and(|d| d.is_ascii_alphabetic() || is_greek(*d)) && free(2) {
         (format!("Δ {}", s[1]), 2)
     } else if free(1)

@@ -81,6 +81,14 @@ pub fn format_number(value: f64, digits: u8, lang: Lang) -> Result<Formatted, No
     if !(1..=17).contains(&digits) {
         return Err(NoteError::Digits { digits });
     }
+    // a zero is written `0`: four significant digits of nothing ("0,000")
+    // say nothing
+    if value == 0.0 {
+        return Ok(Formatted {
+            mantissa: "0".to_string(),
+            exponent: None,
+        });
+    }
     let sci = format!("{:.*e}", usize::from(digits - 1), value.abs());
     // `sci` is `d.ddddde±x` (or `de±x` for one digit); split it.
     let (mant, exp) = sci.split_once('e').unwrap_or((sci.as_str(), "0"));
@@ -100,6 +108,44 @@ pub fn format_number(value: f64, digits: u8, lang: Lang) -> Result<Formatted, No
     }
     mantissa.push_str(&body);
     Ok(Formatted { mantissa, exponent })
+}
+
+/// The resolution of the run's computations relative to a quantity's
+/// scale: a value whose magnitude is at most `RESOLUTION` times the largest
+/// magnitude of its kind (its table column, the terms of its formula, a
+/// full turn for an angle) is the solver's noise around an exact zero and
+/// is printed `0`. The solvers close their loops to 10⁻⁶ of the
+/// mechanism's size (tmm-linkage's assembly tolerance) or better, so a
+/// value under it carries no digit of its own; four printed significant
+/// digits resolve 5·10⁻⁴ of a value, so nothing printed is lost.
+/// docs/note.md, "Numbers", gives the rule.
+pub const RESOLUTION: f64 = 1e-6;
+
+/// A magnitude under which a value is an exact zero's rounding noise
+/// whatever its scale (a quantity with no scale known, a column of zeros).
+pub const ZERO_FLOOR: f64 = 1e-9;
+
+/// `value`, or 0 where it is under the computation's resolution relative
+/// to `scale`, the largest magnitude of its kind ([`RESOLUTION`]), or under
+/// [`ZERO_FLOOR`].
+///
+/// ```
+/// use tmm_note::number::zero_noise;
+/// // 1,2·10⁻⁶° against a full turn is the solver's noise
+/// assert_eq!(zero_noise(1.2e-6, 360.0), 0.0);
+/// // a small value of its own column's size is kept
+/// assert_eq!(zero_noise(0.0012, 0.005), 0.0012);
+/// assert_eq!(zero_noise(3e-4, 100.0), 3e-4);
+/// assert_eq!(zero_noise(3e-4, 1000.0), 0.0);
+/// assert_eq!(zero_noise(3e-12, 0.0), 0.0);
+/// ```
+pub fn zero_noise(value: f64, scale: f64) -> f64 {
+    let a = value.abs();
+    if a <= RESOLUTION * scale.abs() || a < ZERO_FLOOR {
+        0.0
+    } else {
+        value
+    }
 }
 
 /// Writes the significant digits `sig` (the first one of weight 10^exp) in
@@ -196,7 +242,8 @@ mod tests {
         assert_eq!(ru(100.0, 4), "100,0");
         assert_eq!(ru(123456.0, 3), "123000");
         assert_eq!(ru(0.001, 2), "0,0010");
-        assert_eq!(ru(0.0, 3), "0,00");
+        assert_eq!(ru(0.0, 3), "0");
+        assert_eq!(ru(-0.0, 3), "0");
         assert_eq!(format_number(2.5, 2, Lang::En).unwrap().to_string(), "2.5");
         assert_eq!(format_number(2.5, 2, Lang::Uk).unwrap().to_string(), "2,5");
     }
@@ -212,7 +259,7 @@ mod tests {
     #[test]
     fn sign_uses_the_minus_and_drops_on_a_rounded_zero() {
         assert_eq!(ru(-2.0, 2), "\u{2212}2,0");
-        assert_eq!(ru(-0.0, 2), "0,0");
+        assert_eq!(ru(-0.0, 2), "0");
     }
 
     #[test]

@@ -7,7 +7,7 @@ use tmm_report::output::Documents;
 use super::words::Words;
 use crate::error::NoteError;
 use crate::model::{Block, Cell, Lang, Text};
-use crate::number::format_quantity;
+use crate::number::{format_quantity, zero_noise};
 
 /// Significant digits of every number the note prints (the stated rounding:
 /// four significant digits, the accuracy a course project reports).
@@ -79,10 +79,12 @@ impl Ctx<'_> {
 
     /// A number with the unit of the words key `unit` (empty: none).
     ///
-    /// A zero (or the rounding noise of one, under 10⁻⁹ in the unit
+    /// A zero (or the noise of one: [`crate::number::zero_noise`], an
+    /// angle against a full turn, another value under 10⁻⁹ in the unit
     /// printed) is written `0`, not `0,000`: four significant digits of
     /// nothing say nothing (θ = 0° of a centric crank-slider, an eccentricity
-    /// e = 0 мм).
+    /// e = 0 мм, the largest pressure angle 0° of an oscillating cylinder,
+    /// not the solver's 1,2·10⁻⁶°).
     pub fn q(&self, value: f64, unit: &str) -> Result<String, NoteError> {
         let u = if unit.is_empty() { String::new() } else { self.w(unit)? };
         self.quantity(value, &u)
@@ -90,12 +92,10 @@ impl Ctx<'_> {
 
     /// `value` and the unit text `u`, a zero as `0` (see [`Ctx::q`]).
     fn quantity(&self, value: f64, u: &str) -> Result<String, NoteError> {
-        if value.abs() < 1e-9 {
-            let mut s = String::from("0");
-            crate::number::push_unit(&mut s, u);
-            return Ok(s);
-        }
-        format_quantity(value, DIGITS, u, self.lang)
+        // an angle's scale is a full turn; another value of a sentence
+        // stands alone, only its absolute floor applies
+        let scale = if u.starts_with('°') { 360.0 } else { 0.0 };
+        format_quantity(zero_noise(value, scale), DIGITS, u, self.lang)
     }
 
     /// A relative difference `x` (a ratio) in per cent: `0 %` where it is
@@ -103,13 +103,7 @@ impl Ctx<'_> {
     /// "0,000" four significant digits of zero would print; otherwise its
     /// four significant digits in per cent.
     pub fn relative(&self, x: f64) -> Result<String, NoteError> {
-        if x.abs() < 1e-9 {
-            let mut s = String::from("0");
-            crate::number::push_unit(&mut s, &self.w("u_percent")?);
-            Ok(s)
-        } else {
-            self.q(x * 100.0, "u_percent")
-        }
+        self.q(zero_noise(x, 0.0) * 100.0, "u_percent")
     }
 
     /// A given value at `ptr`, scaled by `scale`, as the task gives it: its
@@ -124,6 +118,27 @@ impl Ctx<'_> {
         let u = if unit.is_empty() { String::new() } else { self.w(unit)? };
         crate::number::push_unit(&mut s, &u);
         Ok(s)
+    }
+
+    /// The significant digits of the given value at `ptr` as [`Ctx::given`]
+    /// prints it (δ = 0,02: one), for a formula that substitutes it.
+    pub fn given_digits(&self, ptr: &str) -> Result<u8, NoteError> {
+        let f = crate::number::format_number(self.v(ptr)?, DIGITS, self.lang)?;
+        if f.exponent.is_some() {
+            return Ok(DIGITS);
+        }
+        let trimmed = f.mantissa.trim_end_matches('0').trim_end_matches([',', '.']);
+        let digits = trimmed
+            .trim_start_matches(['0', ',', '.', '\u{2212}'])
+            .chars()
+            .filter(char::is_ascii_digit);
+        // the integer's trailing zeros (δ = 100) stay significant
+        let whole = if f.mantissa.contains([',', '.']) {
+            0
+        } else {
+            f.mantissa.len() - trimmed.len()
+        };
+        Ok(u8::try_from((digits.count() + whole).clamp(1, usize::from(DIGITS))).unwrap_or(DIGITS))
     }
 
     /// The number at `ptr` with a unit, scaled by `scale` (1000 for mm).
@@ -186,9 +201,11 @@ impl Ctx<'_> {
 /// A number cell with [`DIGITS`] significant digits.
 ///
 /// A value below 10⁻⁹ in magnitude is the rounding noise of an exact zero
-/// (a rocker's speed at its dead position) and prints as 0.
+/// (a rocker's speed at its dead position) and prints as 0; the table
+/// prints 0 also for a value under the resolution of its column's largest
+/// ([`crate::number::zero_noise`], applied where the table is set).
 pub fn num(value: f64) -> Cell {
-    let value = if value.abs() < 1e-9 { 0.0 } else { value };
+    let value = zero_noise(value, 0.0);
     Cell::Number { value, digits: DIGITS }
 }
 

@@ -85,18 +85,24 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             (cx.w("q_i_flywheel")?, cx.qv("/dynamics/flywheel_inertia", 1.0, "u_kgm2")?),
             (cx.w("q_omega_max")?, cx.qv("/dynamics/omega_max", 1.0, "u_rad_s")?),
             (cx.w("q_omega_min")?, cx.qv("/dynamics/omega_min", 1.0, "u_rad_s")?),
-            (cx.w("q_delta_reached")?, cx.qv("/dynamics/delta", 1.0, "")?),
+            // as the given is written (0,02, not 0,02000)
+            (cx.w("q_delta_reached")?, cx.given("/dynamics/delta", 1.0, "")?),
         ],
     )?);
     if cx.opt("/dynamics/flywheel/diameter").is_some() {
-        results.push(cx.quantities(
-            "tab_flywheel",
-            vec![
-                (cx.w("q_fw_diameter")?, cx.qv("/dynamics/flywheel/diameter", 1000.0, "u_mm")?),
-                (cx.w("q_fw_width")?, cx.qv("/dynamics/flywheel/width", 1000.0, "u_mm")?),
-                (cx.w("q_fw_mass")?, cx.qv("/dynamics/flywheel/mass", 1.0, "u_kg")?),
-            ],
-        )?);
+        let mut rows = vec![
+            (cx.w("q_fw_diameter")?, cx.qv("/dynamics/flywheel/diameter", 1000.0, "u_mm")?),
+            (cx.w("q_fw_width")?, cx.qv("/dynamics/flywheel/width", 1000.0, "u_mm")?),
+        ];
+        // a rim's radial thickness (a disc's is its radius)
+        if is_rim(cx) {
+            rows.push((cx.w("q_fw_thickness")?, cx.qv("/dynamics/flywheel/thickness", 1000.0, "u_mm")?));
+        }
+        if cx.opt("/dynamics/flywheel/density").is_some() {
+            rows.push((cx.w("q_fw_density")?, cx.given("/dynamics/flywheel/density", 1.0, "u_kg_m3")?));
+        }
+        rows.push((cx.w("q_fw_mass")?, cx.qv("/dynamics/flywheel/mass", 1.0, "u_kg")?));
+        results.push(cx.quantities("tab_flywheel", rows)?);
     }
     // the indicator diagram of each cylinder, as the task gives its tables
     for k in 1.. {
@@ -140,15 +146,56 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         ],
     )?];
     if cx.opt("/dynamics/flywheel/diameter").is_some() {
-        conclusions.push(cx.para(
-            "dy_conclusion_flywheel",
-            &[
-                cx.qv("/dynamics/flywheel/diameter", 1000.0, "u_mm")?,
-                cx.qv("/dynamics/flywheel/mass", 1.0, "u_kg")?,
-            ],
-        )?);
+        conclusions.push(flywheel_conclusion(cx)?);
     }
     Ok(Some(four_parts(cx, "sec_dynamics", statement, formulas, results, conclusions)?))
+}
+
+/// Whether the task's flywheel is a rim (обод), not a disc (диск).
+fn is_rim(cx: &Ctx) -> bool {
+    cx.s("/dynamics/flywheel/shape") == Some("rim") && cx.opt("/dynamics/flywheel/thickness").is_some()
+}
+
+/// The material a flywheel's density names: steel at 7700 … 7900 kg/m³
+/// (carbon steels 7750 … 7870), grey cast iron at 6800 … 7400 kg/m³
+/// (Анурьев В. И., Справочник конструктора-машиностроителя, т. 1: the
+/// densities of steels and of cast irons СЧ); none for another density,
+/// which the sentence gives alone.
+fn flywheel_material(density: f64) -> &'static str {
+    if (7700.0..=7900.0).contains(&density) {
+        "fw_steel"
+    } else if (6800.0..=7400.0).contains(&density) {
+        "fw_cast_iron"
+    } else {
+        ""
+    }
+}
+
+/// The conclusion's sentence on the flywheel as the task makes it: its
+/// shape (a disc, or a rim with its thickness), its material or density,
+/// its size and mass.
+fn flywheel_conclusion(cx: &Ctx) -> Result<Block, NoteError> {
+    let material = match cx.opt("/dynamics/flywheel/density").map(flywheel_material) {
+        Some(key) if !key.is_empty() => cx.w(key)?,
+        _ => String::new(),
+    };
+    let density = match cx.opt("/dynamics/flywheel/density") {
+        Some(_) => cx.given("/dynamics/flywheel/density", 1.0, "u_kg_m3")?,
+        None => String::new(),
+    };
+    let d = cx.qv("/dynamics/flywheel/diameter", 1000.0, "u_mm")?;
+    let b = cx.qv("/dynamics/flywheel/width", 1000.0, "u_mm")?;
+    let m = cx.qv("/dynamics/flywheel/mass", 1.0, "u_kg")?;
+    let (key, args) = if is_rim(cx) {
+        let h = cx.qv("/dynamics/flywheel/thickness", 1000.0, "u_mm")?;
+        ("dy_conclusion_flywheel_rim", vec![material, density, d, b, h, m])
+    } else {
+        ("dy_conclusion_flywheel_disc", vec![material, density, d, b, m])
+    };
+    let text = cx.fill(key, &args)?;
+    // no material word: the sentence closes up around its place
+    let text = text.split(' ').filter(|w| !w.is_empty()).collect::<Vec<_>>().join(" ");
+    Ok(Block::Paragraph(crate::model::Text::plain(text)))
 }
 
 /// The worked driving moment, Mertsalov's required inertia and the
@@ -182,7 +229,11 @@ fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             Quantity::new("I_\"M\"", im, &unit),
             calc::div(
                 calc::q("Delta T_max", swing, ""),
-                Expr::Mul(vec![calc::pow(calc::q("omega_m", omega, ""), 2), calc::q("delta", delta, "")]),
+                Expr::Mul(vec![
+                    calc::pow(calc::q("omega_m", omega, ""), 2),
+                    // the given δ as the task gives it (0,02, not 0,02000)
+                    calc::qd("delta", delta, "", cx.given_digits("/dynamics/delta_requested")?),
+                ]),
             ),
         )));
     }

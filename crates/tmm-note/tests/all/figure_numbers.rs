@@ -360,6 +360,9 @@ struct Counts {
     figures: usize,
     pairs: usize,
     paired: Vec<String>,
+    /// The figures that show values none of which is paired: (caption,
+    /// the symbols shown).
+    unpaired: Vec<(String, Vec<String>)>,
 }
 
 /// Pairs every value of every figure with its section's tables; a value
@@ -405,6 +408,10 @@ fn check(name: &str, note: &Note, faults: &mut Vec<String>) -> Counts {
                 counts.figures += 1;
                 counts.pairs += paired;
                 counts.paired.push(f.caption.clone());
+            } else if !f.shown.is_empty() {
+                counts
+                    .unpaired
+                    .push((f.caption.clone(), f.shown.iter().map(|x| x.symbol.clone()).collect()));
             }
         }
     }
@@ -575,6 +582,9 @@ fn the_numbers_of_each_figure_equal_its_tables() {
     let (mut figures, mut pairs) = (0, 0);
     for (label, c, f) in &results {
         println!("{label}: {} figures checked, {} pairs compared", c.figures, c.pairs);
+        for (caption, symbols) in &c.unpaired {
+            println!("  not paired: \"{caption}\" shows {symbols:?}");
+        }
         figures += c.figures;
         pairs += c.pairs;
         faults.extend(f.iter().cloned());

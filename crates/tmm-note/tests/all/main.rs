@@ -13,6 +13,7 @@ mod figure_numbers;
 mod figure_titles;
 mod figures_pdf;
 mod fixtures;
+mod flywheel_text;
 mod fonts_pdf;
 mod formulas;
 mod frame;
