@@ -199,11 +199,9 @@ fn the_flywheel_is_written_as_the_task_makes_it() {
             let diameter = rows.iter().find(|r| r.0.contains(w.diameter)).map(|r| number(&r.1));
             let thickness = rows.iter().find(|r| r.0.contains(w.thickness)).map(|r| number(&r.1));
             match (shape.as_str(), diameter, thickness, h_ratio) {
-                ("rim", Some(d), Some(h), Some(k)) => {
-                    // both printed to four digits
-                    if (h - k * d).abs() > 1e-3 * h + 0.05 {
-                        faults.push(format!("{label}: the rim's thickness {h} mm is not {k}·D = {} mm", k * d));
-                    }
+                // both printed to four digits
+                ("rim", Some(d), Some(h), Some(k)) if (h - k * d).abs() > 1e-3 * h + 0.05 => {
+                    faults.push(format!("{label}: the rim's thickness {h} mm is not {k}·D = {} mm", k * d));
                 }
                 ("rim", _, None, _) => faults.push(format!("{label}: the size table has no rim thickness")),
                 ("disc", _, Some(_), _) => faults.push(format!("{label}: a disc given a rim's thickness")),

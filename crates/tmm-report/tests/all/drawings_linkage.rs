@@ -285,6 +285,13 @@ fn force_plans_and_the_lever_fit_their_slot_with_labels_apart() {
                     .unwrap();
                 let m = mu / 10f64.powf(mu.log10().floor());
                 assert!([1.0, 2.0, 2.5, 4.0, 5.0].iter().any(|r| (m - r).abs() < 1e-9), "{name}: μ = {mu}");
+                // the lever's labels (its forces numbered "(k) …") are
+                // checked by their printed ink, on the paper and apart, in
+                // lever_drawing.rs; these boxes of 0.6 em a character
+                // overstate them
+                if d.path == "zhukovsky-lever.svg" {
+                    continue;
+                }
                 let tx = texts(svg, false);
                 for (s, b) in &tx {
                     assert!(

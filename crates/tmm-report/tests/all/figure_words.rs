@@ -7,10 +7,11 @@
 //! Willis' ratio is written as a formula with its tooth numbers; no
 //! "name = value" pair is broken across two lines.
 
-use crate::svg_read::{example, texts};
+use crate::svg_read::texts;
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task_in};
+use tmm_testkit::examples::text as example;
 
 fn runs(name: &str, text: &str) -> Vec<(String, tmm_report::output::Documents)> {
     let mut out = Vec::new();

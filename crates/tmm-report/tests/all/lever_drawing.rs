@@ -131,11 +131,18 @@ fn strokes(svg: &str) -> (Vec<Seg>, Vec<Circle>) {
     (segs, circles)
 }
 
-/// The texts closer than 1 mm to another text or to a line or point.
+/// The texts closer than 1 mm to another text or to a line or point, or
+/// whose ink leaves the paper (the SVG's viewBox).
 fn crowded(svg: &str) -> Vec<String> {
     let inks = texts(svg);
     let (segs, circles) = strokes(svg);
     let mut out = Vec::new();
+    let [vx, vy, vw, vh] = tmm_testkit::svg::view_box(svg).expect("a viewBox");
+    for t in &inks {
+        if t.b.x0 < vx || t.b.y0 < vy || t.b.x1 > vx + vw || t.b.y1 > vy + vh {
+            out.push(format!("\"{}\" leaves the paper", t.text));
+        }
+    }
     for (i, t) in inks.iter().enumerate() {
         for u in &inks[i + 1..] {
             let d = t.b.gap(&u.b);
@@ -196,13 +203,20 @@ fn zhukovsky_lever_labels_clear_and_arms_drawn() {
     let tasks = [
         ("default.toml", DEFAULT_TASK.to_string()),
         ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
+        ("seed-001-fourbar.toml", examples::text("seed-001-fourbar.toml")),
     ];
     let mut faults = Vec::new();
     let mut arms_checked = 0;
     for (name, text) in &tasks {
         for lang in [Language::Ru, Language::Uk, Language::En] {
             let task = TaskSource::new(*name, text.as_str());
-            let report: Value = run_task_in(&task, Some(lang)).unwrap().report.clone();
+            let run = run_task_in(&task, Some(lang)).unwrap();
+            let report: Value = run.report.clone();
+            // the sheet's lever (A1) by the same measure
+            let sheet = run.docs.picture("forces/zhukovsky-lever.svg").expect("the sheet's lever");
+            for f in crowded(sheet.svg()) {
+                faults.push(format!("{name} {lang:?} A1: {f}"));
+            }
             let figs = note_figures(&task, Some(lang)).unwrap();
             let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
             let svg = pic.svg();
@@ -270,6 +284,10 @@ fn group_lines<'a>(svg: &'a str, id: &str) -> Vec<&'a str> {
         .collect()
 }
 
+/// A drawn line of the arms' group: its ends (mm), its width and whether
+/// it is dashed.
+type ArmLine = ((f64, f64), (f64, f64), f64, bool);
+
 /// Zhukovsky's lever reads in black and white (issue 22, point 4): each
 /// force of the report's lever is numbered "(k) …" and the arm of force k
 /// labelled "h_k = … мм" with that force's own arm, h = |k × F| / |F| over
@@ -288,21 +306,27 @@ fn zhukovsky_lever_pairs_each_force_with_its_arm_by_number() {
     const NEAR_ARM_MM: f64 = 20.0;
     let tasks = [
         ("default.toml", DEFAULT_TASK.to_string()),
-        ("seed-003-sixbar.toml", example("seed-003-sixbar.toml")),
+        ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
     ];
     let mut faults = Vec::new();
     let (mut pairs, mut farthest) = (0, 0.0f64);
     for (name, text) in &tasks {
         for lang in [Language::Ru, Language::En] {
             let task = TaskSource::new(*name, text.as_str());
-            let report: Value = run_task_in(&task, Some(lang)).unwrap().report.clone();
+            let run = run_task_in(&task, Some(lang)).unwrap();
+            let report: Value = run.report.clone();
+            // the sheet's lever (A1) by the same measure
+            let sheet = run.docs.picture("forces/zhukovsky-lever.svg").expect("the sheet's lever");
+            for f in crowded(sheet.svg()) {
+                faults.push(format!("{name} {lang:?} A1: {f}"));
+            }
             let figs = note_figures(&task, Some(lang)).unwrap();
             let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
             let svg = pic.svg();
             let mu_v: f64 = pic.attr("data-mu").and_then(|v| v.parse().ok()).expect("data-mu");
             let inks = texts(svg);
             // the arms' group: solid lines from the pole, dashed carried lines
-            let lines: Vec<((f64, f64), (f64, f64), f64, bool)> = group_lines(svg, "arms")
+            let lines: Vec<ArmLine> = group_lines(svg, "arms")
                 .iter()
                 .map(|t| {
                     (
@@ -384,7 +408,7 @@ fn zhukovsky_lever_pairs_each_force_with_its_arm_by_number() {
                     faults.push(format!("{name} {lang:?}: no solid line {h:.2} mm from the pole for force {k}"));
                     continue;
                 };
-                let d = seg_box(p, q, &ink.b);
+                let d = ink.b.segment_distance(p, q);
                 farthest = farthest.max(d);
                 if d > NEAR_ARM_MM {
                     faults.push(format!("{name} {lang:?}: \"{}\" {d:.1} mm from its arm", ink.text));

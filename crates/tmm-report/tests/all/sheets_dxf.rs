@@ -239,7 +239,7 @@ for e in doc.modelspace():
     let name = "seed-003-sixbar.toml";
     cases.push((
         name.to_string(),
-        run_task(&TaskSource::new(name, crate::svg_read::example(name))).unwrap(),
+        run_task(&TaskSource::new(name, tmm_testkit::examples::text(name))).unwrap(),
     ));
     let mut checked = 0;
     for (what, run) in &cases {
