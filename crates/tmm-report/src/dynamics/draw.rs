@@ -1,7 +1,7 @@
 //! The diagrams of the `[dynamics]` section, against φ in degrees from the
 //! start of the cycle (the start of the working stroke): the reduced moments
 //! M_c and M_d, the work A_d, A_c and ΔT, the variable reduced inertia I_II,
-//! Mertsalov's T_I with its swing ΔT_I, Wittenbauer's energy–mass diagram
+//! Mertsalov's T_I with its swing ΔT_max (the note's symbol), Wittenbauer's energy–mass diagram
 //! with both tangents, the true ω₁(φ) with ω_max, ω_min, ω_m, ε₁(φ), and the
 //! run-up ω₁(t) when there is a motor.
 //!
@@ -585,7 +585,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     let (a, b) = (ch.map(xa, mk.energy_min), ch.map(xa, mk.energy_max));
     ch.c.arrow_paper(a, b, Style::THIN.colored(RED), 2.5);
     ch.c.arrow_paper(b, a, Style::THIN.colored(RED), 2.5);
-    let dt = ch.c.label_paper((a.0, 0.5 * (a.1 + b.1)), "ΔT_I", H_SMALL, RED);
+    let dt = ch.c.label_paper((a.0, 0.5 * (a.1 + b.1)), "ΔT_{max}", H_SMALL, RED);
     ch.c.reserve(dt);
     // the arrowheads (filled, not seen as lines): 2.5 mm long, 1 mm wide
     for p in [a, b] {
@@ -598,7 +598,7 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
     }
     ch.level(mk.energy_max, GREY, "T_{I max}", &format!("{} {u_j}", n3(mk.energy_max)));
     ch.level(mk.energy_min, GREY, "T_{I min}", &format!("{} {u_j}", n3(mk.energy_min)));
-    ch.note(&format!("ΔT_I = {} {u_j}", n3(mk.energy_swing)));
+    ch.note(&format!("ΔT_{{max}} = {} {u_j}", n3(mk.energy_swing)));
     ch.note(&format!("I_I = {} {u_i}", num(mk.inertia, 5, lang)));
     for p in [mk.phi_max, mk.phi_min] {
         let e = if p == mk.phi_max { mk.energy_max } else { mk.energy_min };
