@@ -189,6 +189,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 "lk_conclusion_kinematics",
                 &[cx.q(kv, "")?, cx.deg("/linkage/theta")?, pressure_max(cx)?],
             )?,
+            // assembled over the whole turn (the input link only swings in
+            // use, as the oscillating cylinder's lever): no "does not turn"
+            None if assembles_everywhere(cx) => cx.para("lk_conclusion_full_range", &[pressure_max(cx)?])?,
             None => cx.para("lk_conclusion_partial", &[assembly_ranges(cx)?, pressure_max(cx)?])?,
         },
     ];
@@ -366,6 +369,19 @@ fn plan_rows(lk: &Value) -> Vec<Vec<crate::model::Cell>> {
 
 /// The crank-angle ranges where a partial-range linkage assembles
 /// (`/linkage/assembly_ranges`), printed as `38.62°…78.58°, 281.4°…321.4°`.
+/// Whether the report's one assembly range spans the whole turn of the
+/// input link (to 10⁻⁹ rad).
+fn assembles_everywhere(cx: &Ctx) -> bool {
+    let ranges = cx.report.pointer("/linkage/assembly_ranges").and_then(Value::as_array);
+    match ranges.map(Vec::as_slice) {
+        Some([r]) => {
+            let (from, to) = (r.get("from").and_then(Value::as_f64), r.get("to").and_then(Value::as_f64));
+            matches!((from, to), (Some(a), Some(b)) if b - a >= std::f64::consts::TAU - 1e-9)
+        }
+        _ => false,
+    }
+}
+
 fn assembly_ranges(cx: &Ctx) -> Result<String, NoteError> {
     let ranges = cx
         .report

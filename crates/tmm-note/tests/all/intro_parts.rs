@@ -126,3 +126,51 @@ fn the_introduction_and_conclusion_name_only_the_notes_parts() {
     println!("{} examples, {checked} introductions and conclusions checked", files.len());
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
 }
+
+/// A note never says the crank "does not turn a full revolution" of a
+/// mechanism the report assembles over the whole turn (the oscillating
+/// cylinder's lever, П1.5: assembled from 0 to 2π, K_v undefined because
+/// the lever only swings in use); where the report's ranges leave a gap it
+/// may. Every example, ru/uk/en, every section's paragraphs and the
+/// conclusion.
+#[test]
+fn no_crank_is_said_to_stop_short_of_a_turn_it_makes() {
+    let mut faults = Vec::new();
+    let mut full = 0;
+    for path in &examples() {
+        let text = std::fs::read_to_string(path).unwrap();
+        let task = tmm_report::TaskSource::new(path.display().to_string(), text);
+        let run = run_task_in(&task, Some(Language::Ru)).unwrap();
+        let Some(ranges) = run.report.pointer("/linkage/assembly_ranges").and_then(|v| v.as_array()) else {
+            continue;
+        };
+        let whole = ranges.len() == 1
+            && ranges[0]["to"].as_f64().unwrap_or(0.0) - ranges[0]["from"].as_f64().unwrap_or(0.0) >= std::f64::consts::TAU - 1e-9;
+        if !whole {
+            continue;
+        }
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let run = run_task_in(&task, Some(lang)).unwrap();
+            let note = compose(&run, &task).unwrap();
+            full += 1;
+            let mut text: String = note
+                .sections
+                .iter()
+                .map(|s| paragraphs(s) + &s.subsections.iter().map(paragraphs).collect::<String>())
+                .collect();
+            if let Some(c) = &note.conclusion {
+                text += &paragraphs(c);
+            }
+            for stop in ["не проворачивается", "не провертається", "does not turn a full"] {
+                if text.contains(stop) {
+                    faults.push(format!(
+                        "{} {lang:?}: «{stop}» of a crank assembled over the whole turn",
+                        path.display()
+                    ));
+                }
+            }
+        }
+    }
+    assert!(full >= 3, "only {full} notes of a whole-turn assembly");
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
+}
