@@ -184,8 +184,9 @@ fn shown(texts: &[String]) -> Vec<Shown> {
     out.into_iter().zip(keep).filter(|(_, k)| *k).map(|(x, _)| x).collect()
 }
 
-/// The texts of an SVG document, the markup inside each dropped.
-fn svg_texts(svg: &str) -> Vec<String> {
+/// The texts of an SVG document, the markup inside each dropped (also
+/// read by `figure_titles`).
+pub fn svg_texts(svg: &str) -> Vec<String> {
     let mut out = Vec::new();
     let mut rest = svg;
     while let Some(i) = rest.find("<text") {

@@ -18,34 +18,11 @@
 use std::collections::BTreeSet;
 
 use tmm_note::{Block, compose};
+
+use crate::figure_numbers::svg_texts;
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::{DEFAULT_TASK, note_figures, run_task_in};
-
-/// The texts of an SVG document (each `<text>`'s content, its markup
-/// dropped).
-fn svg_texts(svg: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut rest = svg;
-    while let Some(i) = rest.find("<text") {
-        let r = &rest[i..];
-        let Some(end) = r.find("</text>") else { break };
-        let body = &r[r.find('>').map_or(end, |g| g + 1).min(end)..end];
-        let mut s = String::new();
-        let mut in_tag = false;
-        for c in body.chars() {
-            match c {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                _ if !in_tag => s.push(c),
-                _ => {}
-            }
-        }
-        out.push(s.replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">"));
-        rest = &r[end..];
-    }
-    out
-}
 
 /// Letters and digits only, lower case, words one space apart (`_`, `^`,
 /// braces, punctuation dropped): "План скоростей, φ_1" → "план скоростей φ1".
@@ -124,24 +101,7 @@ fn check(name: &str, text: &str, lang: Language) -> Counts {
             .map(|d| d.path.clone())
     };
     let mut noted = BTreeSet::new();
-    let mut blocks: Vec<&Block> = Vec::new();
-    fn walk<'a>(s: &'a tmm_note::Section, out: &mut Vec<&'a Block>) {
-        out.extend(s.blocks.iter().filter(|b| matches!(b, Block::Figure { .. })));
-        for sub in &s.subsections {
-            walk(sub, out);
-        }
-    }
-    blocks.extend(note.assignment.iter().filter(|b| matches!(b, Block::Figure { .. })));
-    for s in note
-        .introduction
-        .iter()
-        .chain(&note.sections)
-        .chain(&note.conclusion)
-        .chain(&note.appendices)
-    {
-        walk(s, &mut blocks);
-    }
-    for b in blocks {
+    for b in crate::fixtures::note_figures(&note) {
         let Block::Figure { caption, svg, .. } = b else { continue };
         n.figures += 1;
         let normed: Vec<String> = svg_texts(svg).iter().map(|t| norm(t)).collect();
