@@ -114,17 +114,25 @@ fn lines_carry_gost_types_and_weights() {
     assert!(stacks > 10, "sheet 1: {stacks} stacked indices");
 }
 
-#[test]
-fn the_sheets_dxf_pass_an_ezdxf_audit_without_fixes() {
+/// The Python that has ezdxf (`TMM_EZDXF_PYTHON`, else `python3`), or
+/// `None` after saying the test `test` is skipped.
+fn ezdxf_python(test: &str) -> Option<String> {
     let py = std::env::var("TMM_EZDXF_PYTHON").unwrap_or_else(|_| "python3".to_string());
     let ok = std::process::Command::new(&py)
         .args(["-c", "import ezdxf"])
         .output()
         .is_ok_and(|o| o.status.success());
     if !ok {
-        eprintln!("the_sheets_dxf_pass_an_ezdxf_audit_without_fixes: skipped, no python with ezdxf (set TMM_EZDXF_PYTHON)");
-        return;
+        eprintln!("{test}: skipped, no python with ezdxf (set TMM_EZDXF_PYTHON)");
     }
+    ok.then_some(py)
+}
+
+#[test]
+fn the_sheets_dxf_pass_an_ezdxf_audit_without_fixes() {
+    let Some(py) = ezdxf_python("the_sheets_dxf_pass_an_ezdxf_audit_without_fixes") else {
+        return;
+    };
     let dir = std::env::temp_dir().join(format!("tmm-sheets-audit-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut files = Vec::new();
@@ -200,15 +208,9 @@ fn the_frame_of_the_mechanism_measures_its_printed_scale() {
 /// cell's numbers are the standard's.
 #[test]
 fn graph_26_reads_back_from_every_sheets_dxf() {
-    let py = std::env::var("TMM_EZDXF_PYTHON").unwrap_or_else(|_| "python3".to_string());
-    let ok = std::process::Command::new(&py)
-        .args(["-c", "import ezdxf"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !ok {
-        eprintln!("graph_26_reads_back_from_every_sheets_dxf: skipped, no python with ezdxf (set TMM_EZDXF_PYTHON)");
+    let Some(py) = ezdxf_python("graph_26_reads_back_from_every_sheets_dxf") else {
         return;
-    }
+    };
     // every FRAME line, the FRAME layer's weight and every turned FRAME
     // text with ezdxf's box of it, one record a line
     const SCRIPT: &str = r#"
