@@ -313,13 +313,7 @@ fn zhukovsky_lever_pairs_each_force_with_its_arm_by_number() {
     for (name, text) in &tasks {
         for lang in [Language::Ru, Language::En] {
             let task = TaskSource::new(*name, text.as_str());
-            let run = run_task_in(&task, Some(lang)).unwrap();
-            let report: Value = run.report.clone();
-            // the sheet's lever (A1) by the same measure
-            let sheet = run.docs.picture("forces/zhukovsky-lever.svg").expect("the sheet's lever");
-            for f in crowded(sheet.svg()) {
-                faults.push(format!("{name} {lang:?} A1: {f}"));
-            }
+            let report: Value = run_task_in(&task, Some(lang)).unwrap().report;
             let figs = note_figures(&task, Some(lang)).unwrap();
             let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
             let svg = pic.svg();
