@@ -33,6 +33,7 @@ pub mod markup;
 pub mod model;
 pub mod notation;
 pub mod number;
+pub mod numbering;
 pub mod sheet;
 pub mod translation;
 pub mod world;

@@ -7,13 +7,14 @@
 //! finite, tables rectangular, figure widths sane — so a bad note is a typed
 //! [`NoteError`], never a typst error message.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 
 use crate::error::NoteError;
 use crate::escape::{check_label, check_math, string_literal};
 use crate::model::{Block, Cell, Lang, Note, ProjectInfo, Section, Span, Text};
 use crate::number::{format_number, push_unit};
+use crate::numbering::{Counters, Object};
 use crate::translation::Translation;
 
 /// A table of at most this many rows is kept on one page: a row of 12 pt
@@ -54,9 +55,13 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         sources: note.sources.len(),
         out: String::new(),
         figures: Vec::new(),
+        counters: Counters::new(),
+        numbers: HashMap::new(),
+        figure_word: tr.get("figure").to_owned(),
+        table_word: tr.get("table").to_owned(),
     };
     w.out.push_str(
-        "#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break, with-next\n",
+        "#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break, with-next, numbered-formula\n",
     );
     // the course's tangent in Russian and Ukrainian is tg (ctg), as the
     // where-lines and the textbooks write it; typst's math names it tan
@@ -72,11 +77,15 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     let _ = writeln!(w.out, "  lang: {},", string_literal(note.lang.code()));
     let _ = writeln!(w.out, "  frame: {},", note.frame);
     write_project(&mut w.out, &note.project);
+    // the template's unnumbered level-1 headings: the technical
+    // assignment, then the contents (each restarts the objects' numbers)
+    w.counters.heading(1, false);
     if !note.assignment.is_empty() {
         w.out.push_str("  assignment: [\n");
         w.blocks(&note.assignment)?;
         w.out.push_str("  ],\n");
     }
+    w.counters.heading(1, false);
     w.out.push_str(")\n\n");
     if let Some(s) = &note.introduction {
         w.unnumbered(s)?;
@@ -88,6 +97,7 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         w.unnumbered(s)?;
     }
     if !note.sources.is_empty() {
+        w.counters.heading(1, false);
         w.out.push_str("#sources(tr, (\n");
         for s in &note.sources {
             let _ = writeln!(w.out, "  {},", string_literal(s));
@@ -96,15 +106,20 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     }
     if !note.appendices.is_empty() {
         w.out.push_str("#show: appendices.with(tr)\n\n");
+        w.counters.start_appendices(tr.get("appendix"), &tr.appendix_letters());
         for s in &note.appendices {
             w.section(s, 1)?;
         }
     }
-    Ok(Generated {
-        main: w.out,
-        figures: w.figures,
-    })
+    let main = w.resolve_refs();
+    Ok(Generated { main, figures: w.figures })
 }
+
+/// The mark standing for a reference's number until the whole note is
+/// numbered (a reference may name a later object). NUL is in no label (they
+/// are checked, [`check_label`]) and in no caller text (string literals
+/// escape control characters).
+const REF_MARK: char = '\0';
 
 fn write_project(out: &mut String, p: &ProjectInfo) {
     out.push_str("  project: (\n");
@@ -166,14 +181,61 @@ struct Writer<'a> {
     sources: usize,
     out: String,
     figures: Vec<(String, String)>,
+    /// The running numbers of headings, figures, tables and formulas.
+    counters: Counters,
+    /// The number of each label written so far ("1.2", "(1.3)").
+    numbers: HashMap<String, String>,
+    /// The words before a figure's and a table's number.
+    figure_word: String,
+    table_word: String,
 }
 
 impl Writer<'_> {
+    /// The source with every reference's mark replaced by its label's
+    /// number (every referenced label was checked to exist, so each has
+    /// one).
+    fn resolve_refs(&self) -> String {
+        let mut out = String::with_capacity(self.out.len());
+        let mut parts = self.out.split(REF_MARK);
+        out.push_str(parts.next().unwrap_or(""));
+        while let (Some(label), Some(rest)) = (parts.next(), parts.next()) {
+            let number = self.numbers.get(label).map_or("", String::as_str);
+            out.push_str(&string_literal(number));
+            out.push_str(rest);
+        }
+        out
+    }
+
+    /// Numbers the next object of `kind` and remembers it under `label`.
+    fn number_object(&mut self, kind: Object, label: &Option<String>) -> String {
+        let number = self.counters.object(kind);
+        if let Some(l) = label {
+            self.numbers.insert(l.clone(), number.clone());
+        }
+        number
+    }
+
+    /// A caption with its number before it, as typst's figure would print
+    /// it: "Рисунок 1.2 – …" (the word and the number joined by a no-break
+    /// space, the separator of template.typ, a no-break space, the en dash
+    /// and a space).
+    fn caption(word: &str, number: &str, caption: &str) -> String {
+        let head = string_literal(&format!("{word}\u{a0}{number}\u{a0}\u{2013} "));
+        let body = content_arg(caption);
+        format!("[#{head}#{body}]")
+    }
+
     fn section(&mut self, s: &Section, level: usize) -> Result<(), NoteError> {
         if level == 1 {
             self.out.push_str("#section-break()\n");
         }
-        let _ = writeln!(self.out, "#heading(level: {level}, {})\n", content_arg(&s.title));
+        let number = self.counters.heading(level, true).unwrap_or_default();
+        let _ = writeln!(
+            self.out,
+            "#heading(level: {level}, numbering: (..n) => {}, {})\n",
+            string_literal(&number),
+            content_arg(&s.title)
+        );
         self.blocks(&s.blocks)?;
         for sub in &s.subsections {
             self.section(sub, level + 1)?;
@@ -185,6 +247,7 @@ impl Writer<'_> {
     /// listed in the contents.
     fn unnumbered(&mut self, s: &Section) -> Result<(), NoteError> {
         self.out.push_str("#section-break()\n");
+        self.counters.heading(1, false);
         let _ = writeln!(self.out, "#heading(level: 1, numbering: none, {})\n", content_arg(&s.title));
         self.blocks(&s.blocks)?;
         for sub in &s.subsections {
@@ -240,8 +303,12 @@ impl Writer<'_> {
             }
             Block::Formula { typst_math, label } => {
                 check_math(typst_math)?;
-                let _ = write!(self.out, "$ {} $", typst_math.trim());
-                self.label(label);
+                let number = self.number_object(Object::Equation, label);
+                let _ = write!(self.out, "#numbered-formula({})[$ {} $", string_literal(&number), typst_math.trim());
+                if let Some(l) = label {
+                    let _ = write!(self.out, " <{l}>");
+                }
+                self.out.push_str("]\n\n");
             }
             Block::Table {
                 caption,
@@ -250,7 +317,8 @@ impl Writer<'_> {
                 units,
                 label,
             } => {
-                self.table(caption, header, rows, units)?;
+                let number = self.number_object(Object::Table, label);
+                self.table(caption, header, rows, units, &number)?;
                 if rows.len() <= SHORT_TABLE_ROWS {
                     if let Some(l) = label {
                         let _ = write!(self.out, " <{l}>");
@@ -273,14 +341,17 @@ impl Writer<'_> {
                     });
                 }
                 let path = format!("/fig-{}.svg", self.figures.len() + 1);
-                // made inside a context, which chooses the side it floats
-                // to (template.typ, `float-side`), the label on the figure
+                let number = self.number_object(Object::Figure, label);
+                // made inside a context, which chooses the side the k-th
+                // figure floats to (template.typ, `float-side`), the label
+                // on the figure
                 let _ = write!(
                     self.out,
-                    "#context [#svg-figure({}, {}mm, {}, float-side())",
+                    "#context [#svg-figure({}, {}mm, {}, float-side({}))",
                     string_literal(&path),
                     width_mm,
-                    content_arg(caption)
+                    Self::caption(&self.figure_word, &number, caption),
+                    self.figures.len()
                 );
                 self.figures.push((path, svg.clone()));
                 if let Some(l) = label {
@@ -291,8 +362,8 @@ impl Writer<'_> {
             Block::Calculation(c) => {
                 let m = c.typst(self.lang)?;
                 check_math(&m)?;
-                let _ = write!(self.out, "$ {m} $");
-                self.label(&None);
+                let number = self.number_object(Object::Equation, &None);
+                let _ = write!(self.out, "#numbered-formula({})[$ {m} $]\n\n", string_literal(&number));
             }
             Block::List(items) => {
                 self.out.push_str("#list(\n");
@@ -307,7 +378,7 @@ impl Writer<'_> {
         Ok(())
     }
 
-    fn table(&mut self, caption: &str, header: &[String], rows: &[Vec<Cell>], units: &[String]) -> Result<(), NoteError> {
+    fn table(&mut self, caption: &str, header: &[String], rows: &[Vec<Cell>], units: &[String], number: &str) -> Result<(), NoteError> {
         let n = header.len();
         let shape = |what: String, found: usize| NoteError::TableShape {
             caption: caption.to_owned(),
@@ -324,14 +395,22 @@ impl Writer<'_> {
         // a short table is not split: it moves to the next page whole
         // (a long one is carried over under "Продолжение таблицы N", its
         // header repeated: template.typ, `table-continued`)
-        if rows.len() <= SHORT_TABLE_ROWS {
+        let short = rows.len() <= SHORT_TABLE_ROWS;
+        if short {
             self.out.push_str("#block(breakable: false)[");
         }
+        // the line "Продолжение таблицы N" over a carried-over part; a
+        // short table is never carried over and its line is always empty
+        let continued = if short {
+            "[]".to_owned()
+        } else {
+            format!("table-continued(tr, {})", string_literal(number))
+        };
         let _ = write!(
             self.out,
-            "#figure(kind: table, caption: {}, table(columns: {n},\n  table.header(repeat: true,\n    \
-             table.cell(colspan: {n}, stroke: none, inset: 0pt, align: left, table-continued(tr)),\n    ",
-            content_arg(caption)
+            "#figure(kind: table, numbering: none, caption: {}, table(columns: {n},\n  table.header(repeat: true,\n    \
+             table.cell(colspan: {n}, stroke: none, inset: 0pt, align: left, {continued}),\n    ",
+            Self::caption(&self.table_word, number, caption)
         );
         for (i, h) in header.iter().enumerate() {
             let mut head = h.clone();
@@ -420,7 +499,9 @@ impl Writer<'_> {
                     if !self.labels.contains(l) {
                         return Err(NoteError::UnknownLabel { label: l.clone() });
                     }
-                    let _ = write!(self.out, "#ref(<{l}>, supplement: none)");
+                    // its number, filled in once every object is numbered
+                    // (`resolve_refs`)
+                    let _ = write!(self.out, "#{REF_MARK}{l}{REF_MARK}");
                 }
                 Span::Cite(k) => {
                     if *k == 0 || *k > self.sources {
