@@ -59,6 +59,7 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         numbers: HashMap::new(),
         figure_word: tr.get("figure").to_owned(),
         table_word: tr.get("table").to_owned(),
+        contents: Vec::new(),
     };
     w.out.push_str(
         "#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break, with-next, numbered-formula\n",
@@ -86,6 +87,9 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         w.out.push_str("  ],\n");
     }
     w.counters.heading(1, false);
+    // the contents' lines for typst's first layout pass, filled in once
+    // every heading is written
+    let contents_at = w.out.len();
     w.out.push_str(")\n\n");
     if let Some(s) = &note.introduction {
         w.unnumbered(s)?;
@@ -98,6 +102,7 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     }
     if !note.sources.is_empty() {
         w.counters.heading(1, false);
+        w.contents.push(format!("(1, none, {})", string_literal(tr.get("sources"))));
         w.out.push_str("#sources(tr, (\n");
         for s in &note.sources {
             let _ = writeln!(w.out, "  {},", string_literal(s));
@@ -111,6 +116,12 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
             w.section(s, 1)?;
         }
     }
+    let mut contents = String::from("  contents: (\n");
+    for line in &w.contents {
+        let _ = writeln!(contents, "    {line},");
+    }
+    contents.push_str("  ),\n");
+    w.out.insert_str(contents_at, &contents);
     let main = w.resolve_refs();
     Ok(Generated { main, figures: w.figures })
 }
@@ -188,6 +199,9 @@ struct Writer<'a> {
     /// The words before a figure's and a table's number.
     figure_word: String,
     table_word: String,
+    /// The contents' lines (level, number or none, title) as typst arrays,
+    /// in order.
+    contents: Vec<String>,
 }
 
 impl Writer<'_> {
@@ -230,6 +244,8 @@ impl Writer<'_> {
             self.out.push_str("#section-break()\n");
         }
         let number = self.counters.heading(level, true).unwrap_or_default();
+        self.contents
+            .push(format!("({level}, {}, {})", string_literal(&number), content_arg(&s.title)));
         let _ = writeln!(
             self.out,
             "#heading(level: {level}, numbering: (..n) => {}, {})\n",
@@ -248,6 +264,7 @@ impl Writer<'_> {
     fn unnumbered(&mut self, s: &Section) -> Result<(), NoteError> {
         self.out.push_str("#section-break()\n");
         self.counters.heading(1, false);
+        self.contents.push(format!("(1, none, {})", content_arg(&s.title)));
         let _ = writeln!(self.out, "#heading(level: 1, numbering: none, {})\n", content_arg(&s.title));
         self.blocks(&s.blocks)?;
         for sub in &s.subsections {
