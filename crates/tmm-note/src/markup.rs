@@ -675,3 +675,51 @@ mod glue_tests {
         assert_eq!(m.matches("#box[").count(), 1, "{m}");
     }
 }
+
+#[cfg(test)]
+mod numbering_tests {
+    use crate::model::{Block, Lang, Note, Section, Span, Text};
+    use crate::translation::Translation;
+
+    fn figure(label: &str) -> Block {
+        Block::Figure {
+            caption: "Схема".into(),
+            svg: "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" height=\"10\"/>".into(),
+            width_mm: 50.0,
+            label: Some(label.into()),
+        }
+    }
+
+    /// A reference names its object's number as literal text, also an
+    /// object written after it, and the source asks typst for no counter.
+    #[test]
+    fn references_are_the_literal_numbers_of_their_objects() {
+        let mut s1 = Section::new("Первый");
+        s1.blocks.push(Block::Formula {
+            typst_math: "x = 1".into(),
+            label: Some("eq-x".into()),
+        });
+        let mut s2 = Section::new("Второй");
+        s2.blocks.push(Block::Paragraph(
+            Text::plain("См. рисунок ")
+                .with(Span::Ref("fig-b".into()))
+                .with(Span::Plain(" и формулу ".into()))
+                .with(Span::Ref("eq-x".into())),
+        ));
+        s2.blocks.push(figure("fig-a"));
+        s2.blocks.push(figure("fig-b"));
+        let note = Note {
+            lang: Lang::Ru,
+            sections: vec![s1, s2],
+            ..Note::default()
+        };
+        let g = super::generate(&note, &Translation::load(Lang::Ru).unwrap()).unwrap();
+        // GOST 2.105-95 4.3.8, 4.2.15: the second figure of section 2 is
+        // 2.2, the first formula of section 1 is (1.1)
+        assert!(g.main.contains("См. рисунок \"#\"2.2\"#\" и формулу \"#\"(1.1)\""), "{}", g.main);
+        assert!(g.main.contains("\"Рисунок\u{a0}2.1\u{a0}– \""), "{}", g.main);
+        assert!(g.main.contains("#numbered-formula(\"(1.1)\")"), "{}", g.main);
+        assert!(!g.main.contains("#ref(") && !g.main.contains("counter("), "{}", g.main);
+        assert!(!g.main.contains('\0'));
+    }
+}
