@@ -714,8 +714,8 @@ mod numbering_tests {
             ..Note::default()
         };
         let g = super::generate(&note, &Translation::load(Lang::Ru).unwrap()).unwrap();
-        // GOST 2.105-95 4.3.8, 4.2.15: the second figure of section 2 is
-        // 2.2, the first formula of section 1 is (1.1)
+        // GOST 2.105-95, numbering within the section: the second figure
+        // of section 2 is 2.2, the first formula of section 1 is (1.1)
         assert!(g.main.contains("См. рисунок \"#\"2.2\"#\" и формулу \"#\"(1.1)\""), "{}", g.main);
         assert!(g.main.contains("\"Рисунок\u{a0}2.1\u{a0}– \""), "{}", g.main);
         assert!(g.main.contains("#numbered-formula(\"(1.1)\")"), "{}", g.main);

@@ -7,13 +7,12 @@
 //! and no query, so it is final after typst's first layout pass, and a
 //! reference ([`crate::Span::Ref`]) is the literal number of its label.
 //!
-//! The rules (GOST 2.105-95): sections "1", subsections "1.1", "1.1.1"
-//! (4.1.1 … 4.1.3); figures, tables and formulas numbered within their
-//! section, "1.2", the formula's number in parentheses "(1.3)" (4.3.8,
-//! 4.4.2, 4.2.15); before the first numbered section (the technical
+//! The rules (GOST 2.105-95, the clauses cited in template.typ's header):
+//! sections "1", subsections "1.1", "1.1.1"; figures, tables and formulas
+//! numbered within their section, "1.2", the formula's number in
+//! parentheses "(1.3)"; before the first numbered section (the technical
 //! assignment, the introduction) without the section, "2"; appendices
-//! "Приложение А" with their subsections "А.1" and objects "А.2"
-//! (4.3.8 … 4.3.13).
+//! "Приложение А" with their subsections "А.1" and objects "А.2".
 //!
 //! The counting is typst's: the heading counter steps at every numbered
 //! heading (a level missing above it is filled with 0, so a subsection of
