@@ -11,7 +11,10 @@ use crate::model::{Block, Section};
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let mut rows = vec![
         (cx.w("q_follower")?, follower(cx)?),
-        (cx.w("q_stroke")?, stroke(cx)?),
+        (
+            cx.w(if oscillating(cx) { "q_stroke_oscillating" } else { "q_stroke" })?,
+            stroke(cx)?,
+        ),
         (cx.w("q_cam_omega")?, cx.qv("/cam/omega", 1.0, "u_rad_s")?),
     ];
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_rise") {
@@ -49,16 +52,30 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(cam) = cx.report.get("cam") else { return Ok(None) };
     let statement = vec![
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_friction")?.into()]),
-        cx.para("cam_given", &[follower(cx)?, stroke(cx)?])?,
+        cx.para(
+            if oscillating(cx) { "cam_given_oscillating" } else { "cam_given" },
+            &[follower(cx)?, stroke(cx)?],
+        )?,
         cx.para("cam_method", &[])?,
         cx.para("cam_sought", &[])?,
     ];
     let osc = oscillating(cx);
-    let mut formulas = vec![
-        cx.para("cam_f_analogs", &[])?,
-        formula("v = omega (dif s) / (dif phi), quad a = omega^2 (dif^2 s) / (dif phi^2)"),
-        cx.para("where_cam_analogs", &[])?,
-    ];
+    // an oscillating follower's arm turns: its angular speed and
+    // acceleration through the analogues of its angle ψ (ω_2 = ω·dψ/dφ,
+    // ε_2 = ω²·d²ψ/dφ² at a constant ω of the cam; Артоболевский 1988, ch. 7)
+    let mut formulas = if osc {
+        vec![
+            cx.para("cam_f_analogs_oscillating", &[])?,
+            formula("omega_2 = omega (dif psi) / (dif phi), quad epsilon_2 = omega^2 (dif^2 psi) / (dif phi^2)"),
+            cx.para("where_cam_analogs_oscillating", &[])?,
+        ]
+    } else {
+        vec![
+            cx.para("cam_f_analogs", &[])?,
+            formula("v = omega (dif s) / (dif phi), quad a = omega^2 (dif^2 s) / (dif phi^2)"),
+            cx.para("where_cam_analogs", &[])?,
+        ]
+    };
     if osc {
         formulas.push(cx.para("cam_f_pressure_oscillating", &[])?);
     } else {

@@ -191,7 +191,15 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             )?,
             // assembled over the whole turn (the input link only swings in
             // use, as the oscillating cylinder's lever): no "does not turn"
-            None if assembles_everywhere(cx) => cx.para("lk_conclusion_full_range", &[pressure_max(cx)?])?,
+            // the oscillating cylinder: the angle of the rod's force on the
+            // lever, not the analysed group's (identically zero)
+            None if assembles_everywhere(cx) => match cylinder_pressure(cx) {
+                Some((start, end, max)) => cx.para(
+                    "lk_conclusion_cylinder",
+                    &[cx.q(start, "u_deg")?, cx.q(end, "u_deg")?, cx.q(max, "u_deg")?],
+                )?,
+                None => cx.para("lk_conclusion_full_range", &[pressure_max(cx)?])?,
+            },
             None => cx.para("lk_conclusion_partial", &[assembly_ranges(cx)?, pressure_max(cx)?])?,
         },
     ];
@@ -411,6 +419,44 @@ fn pressure_max(cx: &Ctx) -> Result<String, NoteError> {
         .map(|l| l.iter().filter_map(|p| p.get("max").and_then(Value::as_f64)).fold(0.0, f64::max))
         .unwrap_or(0.0);
     cx.q(m.to_degrees(), "u_deg")
+}
+
+/// The oscillating cylinder's pressure angle over the lever's working turn
+/// (угол давления в паре штока и рычага): at the start, at the end and the
+/// largest, in degrees; `None` for any other mechanism.
+///
+/// The pressure angle is the angle between the force on the driven link and
+/// the velocity of its point of application (Артоболевский 1988, § 24): the
+/// rod pushes the lever at B along DB, and B of the lever turning about O
+/// moves across OB, v_B ∥ (−sin φ, cos φ)·sign(φ_к − φ_н); so
+/// θ(φ) = arccos(DB·v_B / (|DB| |v_B|)), φ from φ_н to φ_к (the synthesis'
+/// shown positions), sampled at 720 steps for the largest value.
+fn cylinder_pressure(cx: &Ctx) -> Option<(f64, f64, f64)> {
+    if cx.s("/synthesis/kind") != Some("oscillating-cylinder") {
+        return None;
+    }
+    let pt = |p: &str| -> Option<(f64, f64)> {
+        let a = cx.report.pointer(p)?.as_array()?;
+        Some((a.first()?.as_f64()?, a.get(1)?.as_f64()?))
+    };
+    let (o, d) = (pt("/synthesis/frame/O")?, pt("/synthesis/frame/D")?);
+    let l = cx.opt("/synthesis/lengths/OB")?;
+    let (start, end) = pt("/synthesis/shown_phi")?;
+    let sense = if end >= start { 1.0 } else { -1.0 };
+    let theta = |phi: f64| -> Option<f64> {
+        let b = (o.0 + l * phi.cos(), o.1 + l * phi.sin());
+        let f = (b.0 - d.0, b.1 - d.1);
+        let v = (-phi.sin() * sense, phi.cos() * sense);
+        let n = f.0.hypot(f.1);
+        (n > 0.0).then(|| ((f.0 * v.0 + f.1 * v.1) / n).clamp(-1.0, 1.0).acos().to_degrees())
+    };
+    const STEPS: usize = 720;
+    let mut max = 0.0_f64;
+    for k in 0..=STEPS {
+        max = max.max(theta(start + (end - start) * k as f64 / STEPS as f64)?);
+    }
+    let (a, b) = (theta(start)?, theta(end)?);
+    (a.is_finite() && b.is_finite() && max.is_finite()).then_some((a, b, max))
 }
 
 /// The crank pin's speed on the velocity plan, m/s.

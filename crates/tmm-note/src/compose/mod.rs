@@ -108,7 +108,13 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         variant: p.variant.clone(),
         city: p.city.clone(),
         year: p.year.clone(),
-        title: p.title.clone(),
+        // no empty «» on the title page: a task without a title is named
+        // by the course's topic, as the introduction names it
+        title: if p.title.trim().is_empty() {
+            words.get("intro_default_topic")?.to_string()
+        } else {
+            p.title.clone()
+        },
         designation,
     };
     let mut sections = Vec::new();
@@ -133,7 +139,16 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
         }
     }
     references::add(&cx, &mut sections)?;
-    order::figures_early(&mut sections);
+    // The dynamics' six diagrams (each about a third of a page) stay after
+    // its two tables (of nine and four rows, kept whole): moved before them,
+    // they left the lower third of two pages empty, for the tables did not
+    // fit under two diagrams and no text came between; after them, the
+    // conclusions' paragraphs flow under the diagrams (GOST 2.105-95, 4.3.1).
+    for (s, part) in sections.iter_mut().zip(&parts) {
+        if *part != Part::Dynamics {
+            order::figures_early(std::slice::from_mut(s));
+        }
+    }
     let mut sources = Vec::new();
     for i in 1.. {
         match words.get(&format!("source_{i}")) {

@@ -72,7 +72,7 @@ fn found_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
                     } else {
                         cx.q(x * 1000.0, "u_mm")?
                     };
-                    rows.push((k.clone(), value));
+                    rows.push((found_name(cx, k), value));
                 }
             }
         }
@@ -80,9 +80,48 @@ fn found_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     Ok(rows)
 }
 
-/// The name of a given value: the words' `given_<key>`, else the key.
+/// The oscillating cylinder's keys named by the words of its own section
+/// (`cy_q_…`): the lever's turn β, not a rocker's swing ψ.
+const CYLINDER_WORDS: &[(&str, &str)] = &[
+    ("h_min", "cy_q_hmin"),
+    ("h_max", "cy_q_hmax"),
+    ("rod", "cy_q_rod"),
+    ("swing", "cy_q_swing"),
+    ("pressure_end", "cy_q_pressure_end"),
+    ("pressure_start", "cy_q_pressure_start"),
+    ("frame_y", "cy_q_frame_y"),
+    ("phi1", "cy_q_phi1"),
+    ("phi3_start", "cy_q_phi3n"),
+    ("phi3_end", "cy_q_phi3k"),
+    ("theta_start", "cy_q_thetan"),
+    ("theta_end", "cy_q_thetak"),
+    ("X_D", "cy_q_xd"),
+    ("Y_D", "cy_q_yd"),
+];
+
+/// The words of `key` for the oscillating cylinder, if it is one of its keys.
+fn cylinder_word(cx: &Ctx, key: &str) -> Option<String> {
+    if cx.s("/synthesis/kind") != Some("oscillating-cylinder") {
+        return None;
+    }
+    let (_, word) = CYLINDER_WORDS.iter().find(|(k, _)| *k == key)?;
+    cx.w(word).ok()
+}
+
+/// The name of a given value: the cylinder's own words, the words'
+/// `given_<key>`, else the key.
 fn given_name(cx: &Ctx, key: &str) -> String {
-    cx.w(&format!("given_{key}")).unwrap_or_else(|_| key.to_string())
+    cylinder_word(cx, key)
+        .or_else(|| cx.w(&format!("given_{key}")).ok())
+        .unwrap_or_else(|| key.to_string())
+}
+
+/// The name of an unknown found: the cylinder's own words, the words'
+/// `found_<key>`, else the key.
+fn found_name(cx: &Ctx, key: &str) -> String {
+    cylinder_word(cx, key)
+        .or_else(|| cx.w(&format!("found_{key}")).ok())
+        .unwrap_or_else(|| key.to_string())
 }
 
 /// The given values of the synthesis as (name, value) rows.
@@ -247,17 +286,26 @@ fn angle_checks(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     Ok(q)
 }
 
-/// The lengths of the synthesised mechanism as table rows.
-fn length_rows(sy: &Value) -> Vec<Vec<crate::model::Cell>> {
+/// The lengths of the synthesised mechanism as table rows; a length of a
+/// position (`DB_start`, the cylinder's D to B at the start) as `l_DB` and
+/// the position in words.
+fn length_rows(cx: &Ctx, sy: &Value) -> Result<Vec<Vec<crate::model::Cell>>, NoteError> {
     let mut rows = Vec::new();
     if let Some(l) = sy.get("lengths").and_then(Value::as_object) {
         for (name, v) in l {
             if let Some(x) = v.as_f64() {
-                rows.push(vec![text(crate::notation::notation(&format!("l_{name}"))), num(x * 1000.0)]);
+                let label = if let Some(base) = name.strip_suffix("_start") {
+                    format!("{} {}", crate::notation::notation(&format!("l_{base}")), cx.w("sy_len_start")?)
+                } else if let Some(base) = name.strip_suffix("_end") {
+                    format!("{} {}", crate::notation::notation(&format!("l_{base}")), cx.w("sy_len_end")?)
+                } else {
+                    crate::notation::notation(&format!("l_{name}"))
+                };
+                rows.push(vec![text(label), num(x * 1000.0)]);
             }
         }
     }
-    rows
+    Ok(rows)
 }
 
 /// The section of a synthesis by positions (the textbook's П1): the loop
@@ -278,7 +326,7 @@ fn section_by_positions(cx: &Ctx, sy: &Value) -> Result<Section, NoteError> {
     let mut results = vec![cx.table(
         "tab_synth_lengths",
         &[("col_length_name", ""), ("col_length", "u_mm")],
-        length_rows(sy),
+        length_rows(cx, sy)?,
     )?];
     let found = found_rows(cx)?;
     if !found.is_empty() {
@@ -298,10 +346,19 @@ fn section_by_positions(cx: &Ctx, sy: &Value) -> Result<Section, NoteError> {
         q.push((cx.w("q_transmission_min")?, cx.q(t.to_degrees(), "u_deg")?));
     }
     results.push(cx.quantities("tab_synth_results", q)?);
+    // the oscillating cylinder's diagram is of the pressure angle in the
+    // analysed group with the lever as the input, identically zero (the
+    // rod's force and the cylinder's point B both across DB); the angle
+    // that matters, the rod's on the lever, is in the table and the
+    // kinematic analysis' conclusion
+    let cylinder = cx.s("/synthesis/kind") == Some("oscillating-cylinder");
     for (path, key) in [
         ("synthesis/construction.svg", "fig_synth_positions"),
         ("synthesis/pressure.svg", "fig_synth_pressure"),
     ] {
+        if cylinder && key == "fig_synth_pressure" {
+            continue;
+        }
         if let Some(f) = cx.figure(path, key)? {
             results.push(f);
         }

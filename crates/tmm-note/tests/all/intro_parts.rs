@@ -23,13 +23,13 @@ struct Part {
 const PARTS: [Part; 7] = [
     Part {
         title: ("Метрический синтез", "Metric synthesis"),
-        stems: (&["синтез", "размеры рычажного"], &["synthesis", "sizes the lever"]),
+        stems: (&["синтез", "размеры рычажного"], &["synthesis", "sizes the linkage"]),
     },
     Part {
-        title: ("кинематический анализ", "kinematics of the lever"),
+        title: ("кинематический анализ", "kinematics of the linkage"),
         stems: (
             &["кинематическ", "планы скоростей"],
-            &["kinematics of the lever", "velocity and acceleration plans"],
+            &["kinematics of the linkage", "velocity and acceleration plans"],
         ),
     },
     Part {

@@ -7,6 +7,7 @@ mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
 mod compose;
+mod cylinder_note;
 mod figure_fill;
 mod figure_fit;
 mod figure_numbers;
@@ -21,6 +22,7 @@ mod intro_parts;
 mod notation;
 mod pdf_read;
 mod prose_numbers;
+mod raw_words;
 mod scales_pdf;
 mod sheets_dxf_pdf;
 mod sheets_pdf;
