@@ -59,6 +59,11 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("dy_f_md", &[])?,
         formula(&format!("{} = -(A_c (2 pi)) / (2 pi), quad Delta T = A_d + A_c", cx.sym("sym_md")?)),
         cx.para("where_md", &[])?,
+        // Mertsalov's construction (mertsalov.rs in tmm-linkage): T_II at the
+        // mean speed, T_I = ΔT − T_II, its swing sizes the flywheel
+        cx.para("dy_f_mertsalov", &[])?,
+        formula("T_\"II\"(phi) = (I_\"II\"(phi) omega_m^2) / 2, quad T_I (phi) = Delta T(phi) - T_\"II\"(phi), \\ Delta T_max = max T_I - min T_I"),
+        cx.para("where_mertsalov", &[])?,
         cx.para("dy_f_flywheel", &[])?,
         formula(&format!(
             "I_\"M\" = (Delta T_max) / (omega_m^2 delta), quad {} = {} - I_I, quad delta = (omega_max - omega_min) / omega_m",
@@ -224,6 +229,19 @@ fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         cx.opt("/dynamics/mertsalov/energy_swing"),
         cx.opt("/dynamics/required_inertia/mertsalov"),
     ) {
+        // the swing of T_I read off its extremes (Fig. "energy of the
+        // constant inertia": T_I max, T_I min)
+        if let (Some(emax), Some(emin)) = (
+            cx.opt("/dynamics/mertsalov/energy_max"),
+            cx.opt("/dynamics/mertsalov/energy_min"),
+        ) {
+            let unit_j = cx.w("u_j")?;
+            out.push(cx.para("calc_energy_swing", &[])?);
+            out.push(Block::Calculation(Calculation::new(
+                Quantity::new("Delta T_max", swing, &unit_j),
+                calc::sub(calc::q("max T_I", emax, ""), calc::q("min T_I", emin, "")),
+            )));
+        }
         out.push(cx.para("calc_imertsalov", &[])?);
         out.push(Block::Calculation(Calculation::new(
             Quantity::new("I_\"M\"", im, &unit),
