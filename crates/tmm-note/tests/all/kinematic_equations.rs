@@ -194,16 +194,17 @@ fn each_mechanism_has_its_own_group_equations() {
                     assert!(!inner.is_empty() && inner.is_subset(&l), "{name} group {k}: {line} lacks {inner:?}");
                 }
                 // a sliding pair of the group on a guide that turns
-                let turning_guide = mine.iter().any(|p| {
-                    p.sliding && p.links.iter().any(|l| links.contains(&l.as_str())) && p.links.iter().all(|l| !still.contains(l))
-                });
+                // (the group's own pairs: a point of its list, a link of it)
+                let points_of: BTreeSet<&str> = g["pairs"].as_array().unwrap().iter().map(|p| p.as_str().unwrap()).collect();
+                let group_pairs: Vec<&&Pair> = mine.iter().filter(|p| points_of.contains(p.point.as_str())).collect();
+                let turning_guide = group_pairs.iter().any(|p| p.sliding && p.links.iter().all(|l| !still.contains(l)));
                 assert_eq!(
                     a_lines[k + 1].contains("^k"),
                     turning_guide,
                     "{name} group {k}: Coriolis term in {}",
                     a_lines[k + 1]
                 );
-                let sliding = mine.iter().any(|p| p.sliding);
+                let sliding = group_pairs.iter().any(|p| p.sliding);
                 assert_eq!(a_lines[k + 1].contains("^r"), sliding, "{name} group {k}: {}", a_lines[k + 1]);
             }
             // every formula of the kinematics with its where-line: every
