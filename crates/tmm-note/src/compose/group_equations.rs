@@ -176,6 +176,15 @@ impl Group {
     }
 }
 
+/// What a group's line adds after its equation: the zero velocities and
+/// accelerations of the frame's points, and the magnitudes' formulas.
+#[derive(Default)]
+struct Extra {
+    v: Vec<String>,
+    a: Vec<String>,
+    mags: Vec<String>,
+}
+
 /// The builder of the three formulas.
 struct Builder<'a> {
     still: &'a BTreeSet<String>,
@@ -190,16 +199,7 @@ struct Builder<'a> {
 impl Builder<'_> {
     /// One side through a turning pair at `x` of link `g`: the unknown
     /// point `k` (math) turns about `x` with `g`.
-    fn turning(
-        &mut self,
-        k: &str,
-        x: &str,
-        g: &str,
-        zeros: &mut Vec<String>,
-        a_zeros: &mut Vec<String>,
-        mags: &mut Vec<String>,
-        on_frame: bool,
-    ) -> (String, String) {
+    fn turning(&mut self, k: &str, x: &str, g: &str, on_frame: bool, ex: &mut Extra) -> (String, String) {
         let xm = math_name(x);
         add(&mut self.v.points, &xm);
         add(&mut self.a.points, &xm);
@@ -208,15 +208,15 @@ impl Builder<'_> {
         add(&mut self.a.normal, &rel);
         add(&mut self.a.tangential, &rel);
         if on_frame {
-            zeros.push(format!("v_({xm}) = 0"));
-            a_zeros.push(format!("a_({xm}) = 0"));
+            ex.v.push(format!("v_({xm}) = 0"));
+            ex.a.push(format!("a_({xm}) = 0"));
         }
         let omega = format!("omega_{}", link_no(g));
         add(&mut self.m.omegas, &omega);
         let len = format!("l_({} {})", xm, strip_link(k));
         add(&mut self.m.lengths, &len);
         add(&mut self.m.normal, &rel);
-        mags.push(format!("a^n_({rel}) = {omega}^2 {len}"));
+        ex.mags.push(format!("a^n_({rel}) = {omega}^2 {len}"));
         (
             format!("arrow(v)_({xm}) + arrow(v)_({rel})"),
             format!("arrow(a)_({xm}) + arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"),
@@ -225,15 +225,7 @@ impl Builder<'_> {
 
     /// One side through a sliding pair: the point `k` (math) of link
     /// `slider` against the coincident point of the guide `guide` at `at`.
-    fn sliding(
-        &mut self,
-        k: &str,
-        at: &str,
-        guide: &str,
-        zeros: &mut Vec<String>,
-        a_zeros: &mut Vec<String>,
-        mags: &mut Vec<String>,
-    ) -> (String, String) {
+    fn sliding(&mut self, k: &str, at: &str, guide: &str, ex: &mut Extra) -> (String, String) {
         let ko = on(at, guide);
         add(&mut self.v.coincident, &ko);
         add(&mut self.a.coincident, &ko);
@@ -241,8 +233,8 @@ impl Builder<'_> {
         add(&mut self.v.sliding, &rel);
         add(&mut self.a.relative, &rel);
         if guide == "frame" {
-            zeros.push(format!("v_({ko}) = 0"));
-            a_zeros.push(format!("a_({ko}) = 0"));
+            ex.v.push(format!("v_({ko}) = 0"));
+            ex.a.push(format!("a_({ko}) = 0"));
         }
         let acc = if self.still.contains(guide) {
             format!("arrow(a)_({ko}) + arrow(a)^r_({rel})")
@@ -252,13 +244,13 @@ impl Builder<'_> {
             add(&mut self.m.omegas, &omega);
             add(&mut self.m.coriolis, &rel);
             add(&mut self.m.sliding, &rel);
-            mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+            ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
             format!("arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
         };
         (format!("arrow(v)_({ko}) + arrow(v)_({rel})"), acc)
     }
 
-    fn finish_line(&mut self, k: &str, sides: &[(String, String)], zeros: Vec<String>, a_zeros: Vec<String>, mags: Vec<String>) {
+    fn finish_line(&mut self, k: &str, sides: &[(String, String)], ex: Extra) {
         let mut v = format!(
             "arrow(v)_({k}) = {}",
             sides.iter().map(|s| s.0.as_str()).collect::<Vec<_>>().join(" = ")
@@ -267,16 +259,16 @@ impl Builder<'_> {
             "arrow(a)_({k}) = {}",
             sides.iter().map(|s| s.1.as_str()).collect::<Vec<_>>().join(" = ")
         );
-        for z in zeros {
+        for z in ex.v {
             v.push_str(&format!(", quad {z}"));
         }
-        for z in a_zeros {
+        for z in ex.a {
             a.push_str(&format!(", quad {z}"));
         }
         self.v_lines.push(v);
         self.a_lines.push(a);
-        if !mags.is_empty() {
-            self.m_lines.push(mags.join(", quad "));
+        if !ex.mags.is_empty() {
+            self.m_lines.push(ex.mags.join(", quad "));
         }
     }
 
@@ -287,17 +279,17 @@ impl Builder<'_> {
                 let km = math_name(&k.point);
                 add(&mut self.v.points, &km);
                 add(&mut self.a.points, &km);
-                let (mut z, mut az, mut mags, mut sides) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+                let (mut ex, mut sides) = (Extra::default(), Vec::new());
                 for link in &g.links {
                     let Some((p, other)) = g.outer(link) else { continue };
                     let side = if p.sliding {
-                        self.sliding(&km, &k.point, &other, &mut z, &mut az, &mut mags)
+                        self.sliding(&km, &k.point, &other, &mut ex)
                     } else {
-                        self.turning(&km, &p.point, link, &mut z, &mut az, &mut mags, other == "frame")
+                        self.turning(&km, &p.point, link, other == "frame", &mut ex)
                     };
                     sides.push(side);
                 }
-                self.finish_line(&km, &sides, z, az, mags);
+                self.finish_line(&km, &sides, ex);
             }
             [k] if g.class == 2 && g.links.len() == 2 => {
                 // the link whose outer pair is at K carries the known point
@@ -312,7 +304,7 @@ impl Builder<'_> {
                 let rel = two(&kb, &ka);
                 add(&mut self.v.sliding, &rel);
                 add(&mut self.a.relative, &rel);
-                let (mut z, mut az, mut mags) = (Vec::new(), Vec::new(), Vec::new());
+                let mut ex = Extra::default();
                 let first_a = if self.still.contains(&b) {
                     format!("arrow(a)_({ka}) + arrow(a)^r_({rel})")
                 } else {
@@ -321,18 +313,18 @@ impl Builder<'_> {
                     add(&mut self.m.omegas, &omega);
                     add(&mut self.m.coriolis, &rel);
                     add(&mut self.m.sliding, &rel);
-                    mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
                     format!("arrow(a)_({ka}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
                 };
                 let mut sides = vec![(format!("arrow(v)_({ka}) + arrow(v)_({rel})"), first_a)];
                 if let Some((p, other)) = g.outer(&b) {
                     sides.push(if p.sliding {
-                        self.sliding(&kb, &k.point, &other, &mut z, &mut az, &mut mags)
+                        self.sliding(&kb, &k.point, &other, &mut ex)
                     } else {
-                        self.turning(&kb, &p.point, &b, &mut z, &mut az, &mut mags, other == "frame")
+                        self.turning(&kb, &p.point, &b, other == "frame", &mut ex)
                     });
                 }
-                self.finish_line(&kb, &sides, z, az, mags);
+                self.finish_line(&kb, &sides, ex);
             }
             _ => self.general(g),
         }
@@ -343,7 +335,7 @@ impl Builder<'_> {
     fn general(&mut self, g: &Group) {
         let mut eqs = Vec::new();
         let mut aeqs = Vec::new();
-        let mut mags = Vec::new();
+        let mut ex = Extra::default();
         for link in &g.links {
             let mut mine: Vec<&Pair> = g.pairs.iter().filter(|p| p.links.contains(link)).collect();
             mine.sort_by_key(|p| p.links.iter().all(|l| g.links.contains(l)));
@@ -364,7 +356,7 @@ impl Builder<'_> {
                     add(&mut self.m.omegas, &omega);
                     add(&mut self.m.coriolis, &rel);
                     add(&mut self.m.sliding, &rel);
-                    mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
                     eqs.push(format!("arrow(v)_({kl}) = arrow(v)_({ko}) + arrow(v)_({rel})"));
                     aeqs.push(format!(
                         "arrow(a)_({kl}) = arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})"
@@ -385,7 +377,7 @@ impl Builder<'_> {
                 add(&mut self.m.omegas, &omega);
                 add(&mut self.m.lengths, &len);
                 add(&mut self.m.normal, &rel);
-                mags.push(format!("a^n_({rel}) = {omega}^2 {len}"));
+                ex.mags.push(format!("a^n_({rel}) = {omega}^2 {len}"));
                 eqs.push(format!("arrow(v)_({pm}) = arrow(v)_({q}) + arrow(v)_({rel})"));
                 aeqs.push(format!(
                     "arrow(a)_({pm}) = arrow(a)_({q}) + arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"
@@ -396,8 +388,8 @@ impl Builder<'_> {
             self.v_lines.push(eqs.join(", quad "));
             self.a_lines.push(aeqs.join(", quad "));
         }
-        if !mags.is_empty() {
-            self.m_lines.push(mags.join(", quad "));
+        if !ex.mags.is_empty() {
+            self.m_lines.push(ex.mags.join(", quad "));
         }
     }
 }
