@@ -95,21 +95,31 @@ pub(crate) fn crank(cx: &Ctx) -> Option<(String, String, f64)> {
     Some((axis.to_string(), pin.to_string(), (a.0 - b.0).hypot(a.1 - b.1)))
 }
 
-/// The symbols under the velocity equations; a crank whose pin is not `B`
-/// (seed 003's `OA`) adds its pin's speed `v_A` of the formula's second
-/// equation.
-fn where_velocity(cx: &Ctx) -> Result<Block, NoteError> {
-    use crate::notation::{MATH_CLOSE, MATH_OPEN};
-    let line = cx.w("where_velocity")?;
-    let Some((_, pin, _)) = crank(cx).filter(|(_, pin, _)| pin != "B") else {
-        return Ok(Block::Paragraph(crate::model::Text::plain(line)));
+/// The vector equations of the velocity and acceleration plans, written
+/// from the mechanism's structure ([`super::group_equations`]), each with
+/// its line of symbols; the four-bar's generic equations where the report
+/// has no groups.
+fn kinematic_equations(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
+    let axis = crank(cx).map(|(axis, _, _)| axis);
+    let Some(eq) = axis.and_then(|a| super::group_equations::crank_equations(cx, &a)) else {
+        return Ok(vec![
+            cx.para("lk_f_velocity", &[])?,
+            formula("arrow(v)_C = arrow(v)_B + arrow(v)_(C B)"),
+            cx.para("lk_f_acceleration", &[])?,
+            formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B)"),
+        ]);
     };
-    let pin_speed = cx.fill("lk_where_pin", std::slice::from_ref(&pin))?;
-    Ok(Block::Paragraph(crate::model::Text::plain(format!(
-        "{}; {MATH_OPEN}v_({}){MATH_CLOSE} {pin_speed}.",
-        line.trim_end_matches('.'),
-        math_name(&pin)
-    ))))
+    Ok(vec![
+        cx.para("lk_f_velocity_groups", &[])?,
+        formula(&eq.velocity),
+        eq.where_velocity(cx)?,
+        cx.para("lk_f_acceleration_groups", &[])?,
+        formula(&eq.acceleration),
+        eq.where_acceleration(cx)?,
+        cx.para("lk_f_magnitudes", &[])?,
+        formula(&eq.magnitudes),
+        eq.where_magnitudes(cx)?,
+    ])
 }
 
 /// The section, if the report has `linkage`.
@@ -138,21 +148,8 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("lk_f_dof", &[])?,
         formula("W = 3 n - 2 p_5 - p_4"),
         cx.para("where_dof", &[])?,
-        cx.para("lk_f_velocity", &[])?,
-        formula(&match crank(cx) {
-            // the crank's own points (OA in seed 003, AB in the default project)
-            Some((axis, pin, _)) => format!(
-                "arrow(v)_C = arrow(v)_B + arrow(v)_(C B), quad v_({p}) = omega_1 l_({a} {p})",
-                a = math_name(&axis),
-                p = math_name(&pin)
-            ),
-            None => "arrow(v)_C = arrow(v)_B + arrow(v)_(C B)".to_string(),
-        }),
-        where_velocity(cx)?,
-        cx.para("lk_f_acceleration", &[])?,
-        formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B), quad a^n_(C B) = omega_2^2 l_(B C)"),
-        cx.para("where_acceleration", &[])?,
     ];
+    formulas.extend(kinematic_equations(cx)?);
     if kv.is_some() {
         formulas.push(cx.para("lk_f_kv", &[])?);
         formulas.push(formula("K_v = (180° + theta) / (180° - theta)"));

@@ -25,6 +25,7 @@ mod dynamics;
 mod forces;
 mod frame_parts;
 mod gear;
+mod group_equations;
 mod linkage;
 mod order;
 mod planetary;

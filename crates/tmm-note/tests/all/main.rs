@@ -19,6 +19,7 @@ mod fonts_pdf;
 mod formulas;
 mod frame;
 mod intro_parts;
+mod kinematic_equations;
 mod notation;
 mod pdf_read;
 mod prose_numbers;

@@ -92,6 +92,23 @@ fn symbols(line: &str) -> Vec<String> {
     out
 }
 
+/// The text without the pages' numbers: a line of digits alone between
+/// two empty lines (the footer's, which a where-line running over a page
+/// break would otherwise read as part of a symbol: `7𝜑`).
+fn without_page_numbers(text: &str) -> String {
+    let lines: Vec<&str> = text.lines().collect();
+    let empty = |i: Option<&&str>| i.is_none_or(|l| l.trim().is_empty());
+    let mut out = Vec::new();
+    for (i, l) in lines.iter().enumerate() {
+        let digits = !l.trim().is_empty() && l.trim().chars().all(|c| c.is_ascii_digit());
+        if digits && i > 0 && empty(lines.get(i - 1)) && empty(lines.get(i + 1)) {
+            continue;
+        }
+        out.push(*l);
+    }
+    out.join("\n")
+}
+
 /// The (formula, line) pairs of a note that do not agree.
 fn mismatches(note: &Note) -> (usize, Vec<String>) {
     let pairs = pairs(note);
@@ -109,7 +126,7 @@ fn mismatches(note: &Note) -> (usize, Vec<String>) {
     test.sections.push(s);
     let t = typeset_with_warnings(&test).unwrap();
     assert!(t.warnings.is_empty(), "{:#?}", t.warnings);
-    let text = pdf_extract::extract_text_from_mem(&t.pdf).unwrap();
+    let text = without_page_numbers(&pdf_extract::extract_text_from_mem(&t.pdf).unwrap());
     let mut bad = Vec::new();
     let mut checked = 0;
     for k in 0..pairs.len() {
