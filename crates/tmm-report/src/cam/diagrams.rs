@@ -126,14 +126,7 @@ impl Frame {
 
 /// Draw `panels` one under another, each in a `Slot::Diagram` box of
 /// `sheet` (on the note's page, the page's height shared between them); `omega` (rad/s) adds the time scale μ_t to the scale line.
-pub fn draw(
-    task: &CamTask,
-    panels: &[Panel],
-    name: Option<&str>,
-    lang: Language,
-    sheet: SheetFormat,
-    omega: Option<f64>,
-) -> Picture {
+pub fn draw(task: &CamTask, panels: &[Panel], name: Option<&str>, lang: Language, sheet: SheetFormat, omega: Option<f64>) -> Picture {
     let (w, mut ph) = slot_mm(Slot::Diagram, sheet);
     if sheet == SheetFormat::A4 {
         // the note's page: the panels share its height
