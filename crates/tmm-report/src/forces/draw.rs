@@ -328,8 +328,16 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     // the arms' lengths listed under the μ lines, in columns (every arm
     // that may be drawn: those under 0.5 mm are left out once the scale
     // is known), the arms themselves marked h_k where they are drawn
-    let cols = (((w - 8.0) / ARM_LIST_COL_MM).floor() as usize).max(1);
-    let rows = lever_arms(a, f64::INFINITY, mu).len().div_ceil(cols);
+    let n_arms = lever_arms(a, f64::INFINITY, mu).len();
+    // a column as wide as the widest entry may be (three digits before
+    // the comma) and a 5 mm gap
+    let col_w = crate::svg::rich_ink(
+        &format!("h_{{{}}} = 888,8 {}", n_arms.max(10), word(lang, "forces.unit_mm")),
+        H_LABEL - 0.5,
+    )
+    .0 + 5.0;
+    let cols = (((w - 8.0) / col_w).floor() as usize).max(1);
+    let rows = n_arms.div_ceil(cols);
     let (margin, top) = (16.0, 29.0 + ARM_LIST_ROW_MM * rows as f64);
     let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
     let mu_v = round_mu(raw.max(1e-12));
@@ -377,7 +385,7 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let used = cols.min(arms.len()).max(1);
     for (j, arm) in arms.iter().enumerate() {
         let (row, k) = (j / cols, j % cols);
-        let x = 0.5 * w + (k as f64 - 0.5 * (used - 1) as f64) * ARM_LIST_COL_MM;
+        let x = 0.5 * w + (k as f64 - 0.5 * (used - 1) as f64) * col_w;
         c.rich_paper(
             (x, 30.5 + ARM_LIST_ROW_MM * row as f64),
             &format!(
@@ -511,9 +519,8 @@ pub const LEVER_CLEAR_MM: f64 = 1.0;
 /// two.
 pub const ARM_LABEL_REACH_MM: f64 = 5.5;
 
-/// The list of the lever's arms (h_k = … mm) under its μ lines: a
-/// column's width and a row's height, mm.
-const ARM_LIST_COL_MM: f64 = 34.0;
+/// The height of a row of the list of the lever's arms (h_k = … mm) under
+/// its μ lines, mm.
 const ARM_LIST_ROW_MM: f64 = 7.5;
 
 /// An arm drawn on Zhukovsky's lever.
