@@ -339,8 +339,20 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let cols = (((w - 8.0) / col_w).floor() as usize).max(1);
     let rows = n_arms.div_ceil(cols);
     let (margin, top) = (16.0, 29.0 + ARM_LIST_ROW_MM * rows as f64);
-    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
-    let mu_v = round_mu(raw.max(1e-12));
+    // the scale the plan takes without the list; the list costs no scale
+    // step when the plan, rounded up to that standard μ, still leaves
+    // its rows free above it (seed 003's A1 lever stays at 0.05, not 0.1)
+    let mu_for = |top: f64| {
+        let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
+        round_mu(raw.max(1e-12))
+    };
+    let mu_bare = mu_for(29.0);
+    let fits_above = (ymax - ymin) / mu_bare <= h - margin - top;
+    // else, a tall narrow plan leaves its sides free: the list goes down
+    // the left side in one column, the plan keeps its scale
+    let aside = !fits_above && (xmax - xmin) / mu_bare <= w - 2.0 * (col_w + 8.0) && 30.5 + ARM_LIST_ROW_MM * n_arms as f64 <= h - margin;
+    let mu_v = if fits_above || aside { mu_bare } else { mu_for(top) };
+    let top = if aside { 29.0 } else { top };
     let s = 1.0 / mu_v;
     c.set_transform(
         s,
@@ -384,8 +396,12 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     let arms = lever_arms(a, s, mu);
     let used = cols.min(arms.len()).max(1);
     for (j, arm) in arms.iter().enumerate() {
-        let (row, k) = (j / cols, j % cols);
-        let x = 0.5 * w + (k as f64 - 0.5 * (used - 1) as f64) * col_w;
+        let (row, k) = if aside { (j, 0) } else { (j / cols, j % cols) };
+        let x = if aside {
+            8.0 + 0.5 * col_w
+        } else {
+            0.5 * w + (k as f64 - 0.5 * (used - 1) as f64) * col_w
+        };
         c.rich_paper(
             (x, 30.5 + ARM_LIST_ROW_MM * row as f64),
             &format!(
