@@ -593,6 +593,114 @@ impl Canvas {
         r
     }
 
+    /// A label that names the segment `a`–`b` (world points; an arm of
+    /// Zhukovsky's lever), its ink's box beside the segment: `clear_mm`
+    /// off the segment's line and every line drawn so far and every other
+    /// text (as [`Canvas::label_clear`] keeps them), its nearest edge no
+    /// more than `reach_mm` from the segment. The places tried: the box
+    /// set off the segment's line square to it, on either side, its middle
+    /// over points every 2.5 % of the segment from 10 % past `b` back to
+    /// 5 % from `a` (`b` the end away from the lines' crossing), then the box
+    /// round `b` as `label_clear` sets it; the first gap from the line
+    /// (from `clear_mm` by 0.25 mm) at which one is clear wins. `None`,
+    /// nothing written, when no place within `reach_mm` is clear.
+    pub fn label_beside(
+        &mut self,
+        (a, b): ((f64, f64), (f64, f64)),
+        text: &str,
+        size_mm: f64,
+        color: &str,
+        clear_mm: f64,
+        reach_mm: f64,
+    ) -> Option<Rect> {
+        let (pa, pb) = (self.to_paper(a.0, a.1), self.to_paper(b.0, b.1));
+        let (dx, dy) = (pb.0 - pa.0, pb.1 - pa.1);
+        let len = dx.hypot(dy);
+        if len.is_nan() || len <= 1e-9 {
+            return None;
+        }
+        let (ux, uy) = (dx / len, dy / len);
+        let clear = clear_mm + 0.02;
+        let (w, up, down) = rich_ink(text, size_mm);
+        let lean = 15f64.to_radians().tan();
+        let (bx0, bx1) = (-0.5 * w - lean * down, 0.5 * w + lean * up);
+        let (hw, hh) = (0.5 * (bx1 - bx0), 0.5 * (up + down));
+        // the box's half extent along a unit direction (its support)
+        let support = |nx: f64, ny: f64| hw * nx.abs() + hh * ny.abs();
+        let fits = |c: &Self, cx: f64, cy: f64| {
+            let r = Rect {
+                x0: cx - hw,
+                y0: cy - hh,
+                x1: cx + hw,
+                y1: cy + hh,
+            };
+            let rb = Rect {
+                x0: r.x0 - clear,
+                y0: r.y0 - clear,
+                x1: r.x1 + clear,
+                y1: r.y1 + clear,
+            };
+            let rl = Rect {
+                x0: rb.x0 - 0.4,
+                y0: rb.y0 - 0.4,
+                x1: rb.x1 + 0.4,
+                y1: rb.y1 + 0.4,
+            };
+            let inside = r.x0 >= 0.5 && r.y0 >= 0.5 && r.x1 <= c.width - 0.5 && r.y1 <= c.height - 0.5;
+            inside
+                && !c.boxes.iter().any(|q| q.overlaps(&rb))
+                && c.segs.count((rl.x0, rl.y0, rl.x1, rl.y1), |s| rl.cuts(s.0, s.1)) == 0
+                && dist_segment(&r, pa, pb) >= clear - 1e-9
+        };
+        let mut found = None;
+        let steps = ((reach_mm - clear) / 0.25).floor().max(0.0) as usize;
+        'search: for gi in 0..=steps {
+            let g = clear + 0.25 * gi as f64;
+            // square off the line, either side, along the segment from b
+            for k in (0..=42).map(|k| 1.1 - 0.025 * k as f64) {
+                let (px, py) = (pa.0 + dx * k, pa.1 + dy * k);
+                for side in [1.0, -1.0] {
+                    let (nx, ny) = (-uy * side, ux * side);
+                    let off = g + support(nx, ny);
+                    let (cx, cy) = (px + nx * off, py + ny * off);
+                    if fits(self, cx, cy) && dist_segment(&Rect::centred((cx, cy), hw, hh), pa, pb) <= reach_mm {
+                        found = Some((cx, cy));
+                        break 'search;
+                    }
+                }
+            }
+            // round b
+            for k in 0..16 {
+                let th = std::f64::consts::TAU * k as f64 / 16.0;
+                let (c, sn) = (th.cos(), th.sin());
+                let off = g + support(c, sn);
+                let (cx, cy) = (pb.0 + c * off, pb.1 - sn * off);
+                if fits(self, cx, cy) && dist_segment(&Rect::centred((cx, cy), hw, hh), pa, pb) <= reach_mm {
+                    found = Some((cx, cy));
+                    break 'search;
+                }
+            }
+        }
+        let (cx, cy) = found?;
+        let at = (cx - 0.5 * (bx0 + bx1), cy + 0.5 * (up - down));
+        self.els.push(Element::Text {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+            anchor: Anchor::Middle,
+            color: color.to_string(),
+            rich: true,
+        });
+        let r = Rect {
+            x0: at.0 + bx0,
+            y0: at.1 - up,
+            x1: at.0 + bx1,
+            y1: at.1 + down,
+        };
+        self.reserve(r);
+        Some(r)
+    }
+
     /// [`Canvas::label`], but when no place within 17 mm of the point is
     /// clear of the lines and the other texts, the label goes farther out
     /// (up to 47 mm) where it is clear, on a thin leader line to the point
@@ -858,6 +966,16 @@ pub struct Rect {
 }
 
 impl Rect {
+    /// The box of half extents `hw` × `hh` about `c`.
+    pub fn centred(c: (f64, f64), hw: f64, hh: f64) -> Rect {
+        Rect {
+            x0: c.0 - hw,
+            y0: c.1 - hh,
+            x1: c.0 + hw,
+            y1: c.1 + hh,
+        }
+    }
+
     /// Whether two boxes share an inner point.
     pub fn overlaps(&self, o: &Rect) -> bool {
         self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
@@ -905,6 +1023,36 @@ pub fn text_box(at: (f64, f64), size: f64, anchor: Anchor, n: usize) -> Rect {
 /// The number of characters [`rich`] shows for `s` (the markup `^ _ { }` dropped).
 pub fn shown_len(s: &str) -> usize {
     s.chars().filter(|c| !matches!(c, '^' | '_' | '{' | '}')).count()
+}
+
+/// The least distance between a box and the segment `a`–`b` (0 when the
+/// segment enters it): the least of the segment's ends to the box and the
+/// box's corners to the segment.
+fn dist_segment(r: &Rect, a: (f64, f64), b: (f64, f64)) -> f64 {
+    if r.cuts(a, b) {
+        return 0.0;
+    }
+    let to_box = |p: (f64, f64)| {
+        let dx = (r.x0 - p.0).max(p.0 - r.x1).max(0.0);
+        let dy = (r.y0 - p.1).max(p.1 - r.y1).max(0.0);
+        dx.hypot(dy)
+    };
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = (dx * dx + dy * dy).max(1e-18);
+    let to_seg = |p: (f64, f64)| {
+        let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0);
+        (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+    };
+    [
+        to_box(a),
+        to_box(b),
+        to_seg((r.x0, r.y0)),
+        to_seg((r.x1, r.y0)),
+        to_seg((r.x0, r.y1)),
+        to_seg((r.x1, r.y1)),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
 }
 
 /// The ink of `s` typeset by [`rich`] at letter size `size`, in the

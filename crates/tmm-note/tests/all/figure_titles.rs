@@ -9,8 +9,9 @@
 //!   name its drawing (found by `note_figures`' SVG) prints on the sheets;
 //! - a sheet: each drawing nested in a sheet's SVG (`<svg class="drawing"
 //!   data-source=…>`) whose run's drawing has a name prints that name
-//!   among its texts, and every drawing the note sets has one, but those
-//!   of [`UNNAMED`].
+//!   among its texts, and every drawing the note sets has one (the
+//!   structural scheme, the cam profile, its motion diagrams and the
+//!   generated teeth too: a name over their panels or legend).
 //!
 //! That each figure still prints its scale and μ, and that they measure,
 //! is `scales_pdf`'s: it reads them back from the note's PDF.
@@ -69,15 +70,8 @@ fn examples() -> Vec<(String, String)> {
     out
 }
 
-/// The drawings made without a name: a structural scheme is its panels'
-/// formulas, the cam's motion diagrams and the generated profiles are
-/// panels each with its own name, the cam profile names its curves in its
-/// legend.
-const UNNAMED: &[&str] = &["linkage/structure.svg", "cam/cam-motion.svg", "gear/profiles.svg", "cam/cam.svg"];
-
 /// What one note showed: figures checked, sheet drawings with a name, the
-/// sheet drawings without one (the structural schemes, the cam profile:
-/// drawn without a name), faults.
+/// sheet drawings without one (none the note sets may be), faults.
 #[derive(Default)]
 struct Counts {
     figures: usize,
@@ -147,7 +141,7 @@ fn check(name: &str, text: &str, lang: Language) -> Counts {
                     }
                 }
                 None => {
-                    if noted.contains(&src) && !UNNAMED.contains(&src.as_str()) {
+                    if noted.contains(&src) {
                         n.faults
                             .push(format!("{name} {lang:?}: {} {src}, a figure of the note, has no name", d.path));
                     }

@@ -94,6 +94,9 @@ const LEFT: f64 = 24.0;
 const RIGHT: f64 = 12.0;
 const TOP: f64 = 24.0;
 const BOTTOM: f64 = 16.0;
+/// The band over the panels that holds the name of a drawing of several
+/// panels, mm: its 5 mm letters and their clearance.
+const NAME_BAND: f64 = 12.0;
 /// The length of an impact's arrow, mm.
 const IMPACT_MM: f64 = 9.0;
 /// The paper between a label's printed ink and every line and every other
@@ -123,13 +126,17 @@ impl Frame {
 
 /// Draw `panels` one under another, each in a `Slot::Diagram` box of
 /// `sheet` (on the note's page, the page's height shared between them); `omega` (rad/s) adds the time scale μ_t to the scale line.
-pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat, omega: Option<f64>) -> Picture {
+pub fn draw(task: &CamTask, panels: &[Panel], name: Option<&str>, lang: Language, sheet: SheetFormat, omega: Option<f64>) -> Picture {
     let (w, mut ph) = slot_mm(Slot::Diagram, sheet);
     if sheet == SheetFormat::A4 {
         // the note's page: the panels share its height
         ph = ph.min(crate::paper::NOTE_HEIGHT_MM / panels.len().max(1) as f64);
     }
-    let total = ph * panels.len().max(1) as f64;
+    // a drawing of several panels has its name in a band over them (the
+    // panels' titles name each panel); one panel's title is the name
+    let name = name.filter(|_| panels.len() > 1);
+    let band = if name.is_some() { NAME_BAND } else { 0.0 };
+    let total = band + ph * panels.len().max(1) as f64;
     let mut c = Canvas::new(w, total);
     let mut lab = Placer::new(w, total);
     let (bounds, names) = phases(task, lang);
@@ -143,7 +150,7 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
     // the arrowheads: (tip, the unit direction, the head's length)
     let mut heads: Vec<Head> = Vec::new();
     for (k, p) in panels.iter().enumerate() {
-        let y_off = ph * k as f64;
+        let y_off = band + ph * k as f64;
         let (mut ymin, mut ymax) = (0.0f64, 0.0f64);
         for q in p.pts.iter().filter(|q| q.1.is_finite()) {
             ymin = ymin.min(q.1);
@@ -242,6 +249,9 @@ pub fn draw(task: &CamTask, panels: &[Panel], lang: Language, sheet: SheetFormat
     }));
     lab.avoid_lines(&segs);
     lab.keep_clear(LABEL_CLEAR);
+    if let Some(name) = name {
+        lab.put_title((0.5 * w, 0.5 * NAME_BAND + 1.0), name, H_TITLE - 2.0);
+    }
     for (p, f) in panels.iter().zip(&frames) {
         let map = |x: f64, y: f64| f.map(mu_p, x, y);
         let y_off = f.y_off;

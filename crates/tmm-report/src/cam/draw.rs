@@ -70,7 +70,8 @@ pub fn analogs(task: &CamTask, lang: Language, sheet: SheetFormat) -> Picture {
             panel("cam.analog_dds", "d²s/dφ²", "{d²s/dφ²}", &au, pts(&|m| m.a * k)),
         ]
     };
-    diagrams::draw(task, &panels, lang, sheet, None)
+    let name = crate::sheets::caption("cam/cam-analogs.svg", lang);
+    diagrams::draw(task, &panels, Some(&name), lang, sheet, None)
 }
 
 /// s, v, a and the jerk j for the cam's ω over the cam angle 0 … 360° (the
@@ -128,6 +129,7 @@ pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> Picture {
         arrows,
         levels: Vec::new(),
     };
+    let name = crate::sheets::caption("cam/cam-motion.svg", lang);
     diagrams::draw(
         task,
         &[
@@ -136,6 +138,7 @@ pub fn motion(task: &CamTask, lang: Language, sheet: SheetFormat) -> Picture {
             panel(names[2], &au, a, arrows(JumpKind::Velocity, w, &vu)),
             panel(names[3], &ju, j, arrows(JumpKind::Acceleration, w * w, &au)),
         ],
+        Some(&name),
         lang,
         sheet,
         Some(w),
@@ -175,7 +178,7 @@ pub fn pressure(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetForma
         arrows: Vec::new(),
         levels,
     };
-    diagrams::draw(task, &[panel], lang, sheet, None)
+    diagrams::draw(task, &[panel], None, lang, sheet, None)
 }
 
 /// The s–ds/dφ diagram (translating roller) or its oscillating counterpart:
@@ -545,7 +548,14 @@ pub fn cam(task: &CamTask, d: &CamDesign, lang: Language, sheet: SheetFormat) ->
     }
     // the legend and the sizes on the right
     let lx = pw - legend_w;
-    let mut ly = 8.0;
+    // the drawing's name heads the legend's column (the note leaves it to
+    // the figure's caption)
+    lab.put_title(
+        (0.5 * (lx + pw), 8.0),
+        &crate::sheets::caption("cam/cam.svg", lang),
+        crate::labels::H_HEAD,
+    );
+    let mut ly = 16.0;
     lab.put_left(
         (lx, ly),
         &format!("{} {}", word(lang, "common.scale"), crate::svg::scale_text(scale.text, lang)),

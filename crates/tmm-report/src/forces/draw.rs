@@ -325,9 +325,34 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         sheet => slot_mm(Slot::Plan, sheet),
     };
     let mut c = Canvas::new(w, h);
-    let (margin, top) = (16.0, 29.0);
-    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
-    let mu_v = round_mu(raw.max(1e-12));
+    // the arms' lengths listed under the μ lines, in columns (every arm
+    // that may be drawn: those under 0.5 mm are left out once the scale
+    // is known), the arms themselves marked h_k where they are drawn
+    let n_arms = lever_arms(a, f64::INFINITY, mu).len();
+    // a column as wide as the widest entry may be (three digits before
+    // the comma) and a 5 mm gap
+    let col_w = crate::svg::rich_ink(
+        &format!("h_{{{}}} = 888,8 {}", n_arms.max(10), word(lang, "forces.unit_mm")),
+        H_LABEL - 0.5,
+    )
+    .0 + 5.0;
+    let cols = (((w - 8.0) / col_w).floor() as usize).max(1);
+    let rows = n_arms.div_ceil(cols);
+    let (margin, top) = (16.0, 29.0 + ARM_LIST_ROW_MM * rows as f64);
+    // the scale the plan takes without the list; the list costs no scale
+    // step when the plan, rounded up to that standard μ, still leaves
+    // its rows free above it (seed 003's A1 lever stays at 0.05, not 0.1)
+    let mu_for = |top: f64| {
+        let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - margin - top));
+        round_mu(raw.max(1e-12))
+    };
+    let mu_bare = mu_for(29.0);
+    let fits_above = (ymax - ymin) / mu_bare <= h - margin - top;
+    // else, a tall narrow plan leaves its sides free: the list goes down
+    // the left side in one column, the plan keeps its scale
+    let aside = !fits_above && (xmax - xmin) / mu_bare <= w - 2.0 * (col_w + 8.0) && 30.5 + ARM_LIST_ROW_MM * n_arms as f64 <= h - margin;
+    let mu_v = if fits_above || aside { mu_bare } else { mu_for(top) };
+    let top = if aside { 29.0 } else { top };
     let s = 1.0 / mu_v;
     c.set_transform(
         s,
@@ -367,6 +392,29 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         Anchor::Middle,
         "#404040",
     );
+    // the arms' lengths (плечи сил), in the arms' order and colours
+    let arms = lever_arms(a, s, mu);
+    let used = cols.min(arms.len()).max(1);
+    for (j, arm) in arms.iter().enumerate() {
+        let (row, k) = if aside { (j, 0) } else { (j / cols, j % cols) };
+        let x = if aside {
+            8.0 + 0.5 * col_w
+        } else {
+            0.5 * w + (k as f64 - 0.5 * (used - 1) as f64) * col_w
+        };
+        c.rich_paper(
+            (x, 30.5 + ARM_LIST_ROW_MM * row as f64),
+            &format!(
+                "h_{{{}}} = {} {}",
+                arm.force + 1,
+                num(arm.mm, 1, lang),
+                word(lang, "forces.unit_mm")
+            ),
+            H_LABEL - 0.5,
+            Anchor::Middle,
+            COLORS[arm.force % COLORS.len()],
+        );
+    }
     c.begin_group("plan");
     for p in &imgs {
         if p.hypot() * s > 0.05 {
@@ -402,7 +450,6 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
     // perpendicular from p to each force's line of action, that line
     // carried on to its foot, the arm's length in paper mm (the lever's
     // equation Σ ±F_i·h_i = 0 is read in these)
-    let arms = lever_arms(a, s, mu);
     c.begin_group("arms");
     for arm in &arms {
         let col = COLORS[arm.force % COLORS.len()];
@@ -435,12 +482,34 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         };
         c.label_clear(t(*p), &n, H_LABEL, "#000", LEVER_CLEAR_MM);
     }
+    // each arm marked h_k beside it, placed before the forces' labels
+    // (those may stand anywhere round their arrows' tips): square off the
+    // arm at most ARM_LABEL_REACH_MM from it, else round the arm's foot,
+    // else along the arm back towards the pole; its length in the list
+    for arm in &arms {
+        let col = COLORS[arm.force % COLORS.len()];
+        let mark = format!("h_{{{}}}", arm.force + 1);
+        let foot = t(arm.foot);
+        if c.label_beside(((0.0, 0.0), foot), &mark, H_LABEL - 0.5, col, LEVER_CLEAR_MM, ARM_LABEL_REACH_MM)
+            .is_some()
+        {
+            continue;
+        }
+        let along: Vec<(f64, f64)> = (0..=18)
+            .map(|k| 1.0 - 0.05 * k as f64)
+            .chain([1.08, 1.16])
+            .map(|f| t(arm.foot * f))
+            .collect();
+        c.label_clear_near(&along, &mark, H_LABEL - 0.5, col, LEVER_CLEAR_MM);
+    }
     // each force numbered as its arm is (h_k for the force (k)), so the
     // pairs read without the colours
     for (i, x) in a.lever.iter().enumerate() {
         let col = COLORS[i % COLORS.len()];
-        c.label_clear(
-            t(x.image + x.force * mu),
+        // by the arrow's tip, else along the arrow back to its middle
+        let along: Vec<(f64, f64)> = (0..=5).map(|k| t(x.image + x.force * (mu * (1.0 - 0.1 * k as f64)))).collect();
+        c.label_clear_near(
+            &along,
             &format!(
                 "({}) {} {} {}",
                 i + 1,
@@ -453,24 +522,6 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
             LEVER_CLEAR_MM,
         );
     }
-    for arm in &arms {
-        let col = COLORS[arm.force % COLORS.len()];
-        // at the arm's foot, where its line meets the force's dashed line
-        // of action, else along the arm back towards the pole, else just
-        // past the foot on the arm's line carried on
-        let along: Vec<(f64, f64)> = (0..=18)
-            .map(|k| 1.0 - 0.05 * k as f64)
-            .chain([1.08, 1.16])
-            .map(|f| t(arm.foot * f))
-            .collect();
-        c.label_clear_near(
-            &along,
-            &format!("h_{} = {} {}", arm.force + 1, num(arm.mm, 1, lang), word(lang, "forces.unit_mm")),
-            H_LABEL - 0.5,
-            col,
-            LEVER_CLEAR_MM,
-        );
-    }
     c.end_group();
     c.finish()
 }
@@ -478,6 +529,15 @@ fn lever(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
 /// How far Zhukovsky's lever keeps its labels off its lines and off each
 /// other, mm.
 pub const LEVER_CLEAR_MM: f64 = 1.0;
+
+/// How far an arm's mark h_k may stand off its arm on Zhukovsky's lever
+/// (its ink's nearest edge), mm: beside it, the clearance and a step or
+/// two.
+pub const ARM_LABEL_REACH_MM: f64 = 5.5;
+
+/// The height of a row of the list of the lever's arms (h_k = … mm) under
+/// its μ lines, mm.
+const ARM_LIST_ROW_MM: f64 = 7.5;
 
 /// An arm drawn on Zhukovsky's lever.
 struct Arm {

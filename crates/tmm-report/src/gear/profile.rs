@@ -33,6 +33,14 @@ pub fn profiles_csv(t1: &ToothProfile, t2: &ToothProfile) -> String {
 /// One tooth of each wheel side by side as SVG polylines, captioned in `lang`.
 pub fn profiles_svg(t1: &ToothProfile, t2: &ToothProfile, lang: Language) -> Picture {
     let mut c = Canvas::new(297.0, 210.0);
+    // the drawing's name over the teeth (their paper 25 … 195 mm down):
+    // the sheets print it, the note leaves it to the figure's caption
+    c.title(
+        (148.5, 12.0),
+        &crate::sheets::caption("gear/profiles.svg", lang),
+        crate::labels::H_HEAD,
+        Anchor::Middle,
+    );
     for (k, t) in [t1, t2].iter().enumerate() {
         let pts: Vec<(f64, f64)> = t.tooth_outline().iter().map(|&(x, y)| (x * 1e3, y * 1e3)).collect();
         let (xmin, xmax) = pts

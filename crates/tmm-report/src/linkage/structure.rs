@@ -63,6 +63,15 @@ fn heights(sheet: SheetFormat) -> (f64, f64) {
     }
 }
 
+/// The height of the drawing's name on a sheet, mm (GOST 2.304): 5 on A1,
+/// 3.5 on the smaller sheets and the note's page.
+fn name_height(sheet: SheetFormat) -> f64 {
+    match sheet {
+        SheetFormat::A1 => 5.0,
+        SheetFormat::A2 | SheetFormat::A4 => 3.5,
+    }
+}
+
 /// The structural scheme and the Assur groups apart, at the plans' position
 /// of `a`, sized for the task's sheet.
 ///
@@ -81,6 +90,13 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
     let sol = &a.plan_row.sol;
     let (h_label, h_title) = heights(task.sheet);
     let (slot_w, slot_h) = slot_mm(Slot::Diagram, task.sheet);
+    // the drawing's name (наименование изображения) in a band of its own
+    // over the panels: on the sheets it names the drawing, the note leaves
+    // it to the figure's caption
+    let name = crate::sheets::caption("linkage/structure.svg", lang);
+    let h_name = name_height(task.sheet);
+    let band = 2.0 * crate::picture::em(h_name);
+    let name_w = text_width(h_name, name.chars().count()) + 2.0;
     let crank = m.crank.link;
     let class_w = word(lang, "linkage.group_class");
     let order_w = word(lang, "linkage.group_order");
@@ -171,29 +187,42 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
         }
         (w, h)
     };
-    let fits = |rows: &[Vec<usize>], s: f64| {
+    let fits = |rows: &[Vec<usize>], s: f64, lim_h: f64| {
         let (w, h) = size(rows, s);
-        w <= slot_w && h <= slot_h
+        w <= slot_w && h <= lim_h
     };
-    let mut best: Option<(f64, usize)> = None;
-    for (k, rows) in layouts.iter().enumerate() {
-        // the largest scale that fits, by bisection (paper mm per metre)
-        let (mut lo, mut hi) = (0.0, 1e5);
-        if !fits(rows, lo) {
-            continue;
-        }
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if fits(rows, mid) {
-                lo = mid;
-            } else {
-                hi = mid;
+    // the largest scale of each arrangement whose panels stay within
+    // `lim_h` high, by bisection (paper mm per metre); the best of them
+    let choose = |lim_h: f64| {
+        let mut best: Option<(f64, usize)> = None;
+        for (k, rows) in layouts.iter().enumerate() {
+            let (mut lo, mut hi) = (0.0, 1e5);
+            if !fits(rows, lo, lim_h) {
+                continue;
+            }
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if fits(rows, mid, lim_h) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            if best.is_none_or(|b: (f64, usize)| lo > b.0 * 1.0001) {
+                best = Some((lo, k));
             }
         }
-        if best.is_none_or(|b| lo > b.0 * 1.0001) {
-            best = Some((lo, k));
+        best
+    };
+    // the name's band comes out of the height the panels alone take: the
+    // drawing keeps its size on the sheet, its panels a little smaller
+    let best = match choose(slot_h) {
+        Some((s0, k0)) => {
+            let h0 = size(&layouts[k0], s0).1;
+            choose(h0.min(slot_h) - band).or(Some((s0, k0)))
         }
-    }
+        None => None,
+    };
     let (s, rows) = match best {
         Some((s, k)) => (s, layouts.swap_remove(k)),
         // nothing fits (more groups than the slot holds): one row, small
@@ -201,8 +230,11 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
     };
     let (w, h) = size(&rows, s);
     // whole millimetres, as the sheets place a drawing at its own size
-    let (w, h) = ((w - 1e-6).ceil().min(slot_w), (h - 1e-6).ceil().min(slot_h));
-    let mut c = Canvas::new(w, h);
+    let (w, h) = ((w.max(name_w) - 1e-6).ceil().min(slot_w), (h - 1e-6).ceil().min(slot_h - band));
+    // the panels below the name's band: their y-up coordinates 0 … h
+    let hh = h + band;
+    let mut c = Canvas::new(w, hh);
+    c.title((0.5 * w, 1.4 * crate::picture::em(h_name)), &name, h_name, Anchor::Middle);
     // metres per paper mm, as the other drawings write μ_l
     c.root_attr("data-mu-l", &format!("{}", 1.0 / s.max(1e-9)));
     // each panel's origin on the paper (y up) and its title's top centre (y down)
@@ -228,7 +260,7 @@ pub fn structure_scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture 
             // the links in the middle of what the titles leave
             let th = title_h(p);
             let oy = bottom + th + 0.5 * (rh - th - dh) - p.bb.1 * s;
-            placed.push((i, (ox, oy), (x + 0.5 * widths[k], h - bottom - th)));
+            placed.push((i, (ox, oy), (x + 0.5 * widths[k], hh - bottom - th)));
             x += widths[k] + GAP;
         }
         top = bottom;

@@ -288,129 +288,219 @@ fn group_lines<'a>(svg: &'a str, id: &str) -> Vec<&'a str> {
 /// it is dashed.
 type ArmLine = ((f64, f64), (f64, f64), f64, bool);
 
+/// How far an arm's mark h_k may stand from its arm's line, mm (its ink's
+/// box to the segment from the pole to the foot): beside the arm, with the
+/// 1 mm clearance from it and a little room to step along the lines that
+/// cross there. Held for the default project and seed 003.
+const NEAR_ARM_MM: f64 = 6.0;
+
+/// The same for the other examples with forces, mm: their plans crowd
+/// more lines round the pole, and a few marks find room only farther out
+/// (the farthest 13 mm when this was set); a bound that holds the
+/// placement from getting worse, not yet "at the arm".
+const NEAR_ARM_OTHERS_MM: f64 = 14.0;
+
+/// The tasks whose lever the arm tests read: the default project and
+/// every example with forces (`[forces]`).
+fn lever_tasks() -> Vec<(String, String)> {
+    let mut out = vec![("default.toml".to_string(), DEFAULT_TASK.to_string())];
+    for n in examples::names() {
+        let t = examples::text(&n);
+        if t.lines().any(|l| l.trim() == "[forces]") {
+            out.push((n, t));
+        }
+    }
+    out
+}
+
+/// Counts of [`pair_arms`]: forces paired with an arm, the farthest label
+/// from its arm (mm), faults.
+#[derive(Default)]
+struct Paired {
+    pairs: usize,
+    farthest: f64,
+    faults: Vec<String>,
+}
+
+/// Check one drawing of the lever (`tag` names it in the faults) against
+/// the report's lever: every force numbered, its arm drawn from the pole,
+/// its length listed once ("h_k = … мм"), the arm marked once "h_k" with
+/// the mark's ink within `near` mm of the arm; the arm lines thin.
+fn pair_arms(tag: &str, svg: &str, mu_v: f64, report: &Value, near: f64, n: &mut Paired) {
+    let inks = texts(svg);
+    // the arms' group: solid lines from the pole, dashed carried lines
+    let lines: Vec<ArmLine> = group_lines(svg, "arms")
+        .iter()
+        .map(|t| {
+            (
+                (num(t, "x1").unwrap(), num(t, "y1").unwrap()),
+                (num(t, "x2").unwrap(), num(t, "y2").unwrap()),
+                num(t, "stroke-width").unwrap(),
+                attr(t, "stroke-dasharray").is_some(),
+            )
+        })
+        .collect();
+    for (a, b, w, dashed) in &lines {
+        if *w > 0.35 + 1e-9 {
+            n.faults.push(format!("{tag}: arm line {a:?}–{b:?} {w} mm wide (dashed {dashed})"));
+        }
+    }
+    // the pole: the end most of the solid arm lines share
+    let solid: Vec<_> = lines.iter().filter(|l| !l.3).collect();
+    let ends: Vec<(f64, f64)> = solid.iter().flat_map(|l| [l.0, l.1]).collect();
+    let shared = |p: (f64, f64)| ends.iter().filter(|q| (q.0 - p.0).hypot(q.1 - p.1) < 1e-3).count();
+    let Some(pole) = ends.iter().copied().max_by_key(|p| shared(*p)) else {
+        n.faults.push(format!("{tag}: no arm drawn"));
+        return;
+    };
+    for (i, e) in report["forces"]["lever"].as_array().unwrap().iter().enumerate() {
+        let k = i + 1;
+        if !inks.iter().any(|t| t.text.starts_with(&format!("({k}) "))) {
+            n.faults.push(format!("{tag}: no force numbered ({k})"));
+        }
+        let v = |p: &Value, j: usize| p[j].as_f64().unwrap();
+        let (img, f) = (&e["image"], &e["force"]);
+        let ff = v(f, 0).hypot(v(f, 1));
+        let h = if ff > 0.0 {
+            (v(img, 0) * v(f, 1) - v(img, 1) * v(f, 0)).abs() / ff / mu_v
+        } else {
+            0.0
+        };
+        let label: Vec<&Ink> = inks
+            .iter()
+            .filter(|t| {
+                t.text
+                    .strip_prefix(&format!("h{k}"))
+                    .is_some_and(|r| r.trim_start().starts_with('='))
+            })
+            .collect();
+        if h < 0.5 {
+            if !label.is_empty() {
+                n.faults.push(format!("{tag}: force {k}'s arm {h:.2} mm is labelled"));
+            }
+            continue;
+        }
+        n.pairs += 1;
+        let [ink] = label.as_slice() else {
+            n.faults.push(format!("{tag}: {} labels h{k} for the arm {h:.2} mm", label.len()));
+            continue;
+        };
+        let eq = ink.text.find('=').unwrap();
+        match printed(&ink.text[eq + 1..]) {
+            Some(p) if (p - h).abs() <= 0.05 + 1e-6 => {}
+            p => n
+                .faults
+                .push(format!("{tag}: \"{}\" for force {k}'s arm {h:.3} mm ({p:?})", ink.text)),
+        }
+        // its line: from the pole, h long, towards the foot of the
+        // perpendicular on the line of action (r − u (r·u), u along F; the
+        // paper's y down)
+        let (ux, uy) = (v(f, 0) / ff, v(f, 1) / ff);
+        let along = v(img, 0) * ux + v(img, 1) * uy;
+        let (fx, fy) = (v(img, 0) - ux * along, -(v(img, 1) - uy * along));
+        let fl = fx.hypot(fy);
+        let arm = solid.iter().find_map(|(a, b, _, _)| {
+            let (p, q) = if (a.0 - pole.0).hypot(a.1 - pole.1) < 1e-3 {
+                (*a, *b)
+            } else {
+                (*b, *a)
+            };
+            let len = (q.0 - p.0).hypot(q.1 - p.1);
+            let towards = ((q.0 - p.0) * fx + (q.1 - p.1) * fy) / (len * fl).max(1e-12) > 0.999;
+            ((p.0 - pole.0).hypot(p.1 - pole.1) < 1e-3 && (len - h).abs() < 0.01 && towards).then_some((p, q))
+        });
+        let Some((p, q)) = arm else {
+            n.faults.push(format!("{tag}: no solid line {h:.2} mm from the pole for force {k}"));
+            continue;
+        };
+        // the arm's mark h_k, once, beside its arm
+        let mark = format!("h{k}");
+        let marks: Vec<&Ink> = inks.iter().filter(|t| t.text.trim() == mark).collect();
+        let [m] = marks.as_slice() else {
+            n.faults.push(format!("{tag}: {} marks {mark} for the arm {h:.2} mm", marks.len()));
+            continue;
+        };
+        let d = m.b.segment_distance(p, q);
+        n.farthest = n.farthest.max(d);
+        if d > near {
+            n.faults.push(format!("{tag}: the mark {mark} {d:.1} mm from its arm"));
+        }
+    }
+}
+
 /// Zhukovsky's lever reads in black and white (issue 22, point 4): each
 /// force of the report's lever is numbered "(k) …" and the arm of force k
 /// labelled "h_k = … мм" with that force's own arm, h = |k × F| / |F| over
 /// the printed μ_v, recomputed here from `report.json` (so a colour is
-/// never the only tie between a force and its arm); the arm's label stands
-/// at its arm (its ink within [`NEAR_ARM_MM`] of the arm's line, the line
-/// from the pole found by its length); arm lines are thin and solid, the
+/// never the only tie between a force and its arm); the arm's mark h_k
+/// stands at its arm (its ink within [`NEAR_ARM_MM`] of the arm's line, the
+/// line from the pole found by its length); arm lines are thin and solid, the
 /// lines of action carried to the arms' feet thin and dashed (GOST 2.303:
-/// s/3 … s/2 of the plan's 0.7 mm main line, here ≤ 0.35 mm).
+/// s/3 … s/2 of the plan's 0.7 mm main line, here ≤ 0.35 mm). For the
+/// default project and every example with forces, in ru, uk and en, on
+/// the A1 sheet's drawing and the note's A4 figure ([`NEAR_ARM_OTHERS_MM`]
+/// for the examples other than the default project and seed 003).
 #[test]
 fn zhukovsky_lever_pairs_each_force_with_its_arm_by_number() {
-    /// How far an arm's label may stand from its arm's line, mm: seed 003's
-    /// h_11 stands 18 mm off, its arm running along the plan's line pc
-    /// with h_5's (two forces at c on one line of action), where no label
-    /// finds room.
-    const NEAR_ARM_MM: f64 = 20.0;
-    let tasks = [
-        ("default.toml", DEFAULT_TASK.to_string()),
-        ("seed-003-sixbar.toml", examples::text("seed-003-sixbar.toml")),
-    ];
-    let mut faults = Vec::new();
-    let (mut pairs, mut farthest) = (0, 0.0f64);
-    for (name, text) in &tasks {
-        for lang in [Language::Ru, Language::En] {
-            let task = TaskSource::new(*name, text.as_str());
-            let report: Value = run_task_in(&task, Some(lang)).unwrap().report;
-            let figs = note_figures(&task, Some(lang)).unwrap();
-            let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
-            let svg = pic.svg();
-            let mu_v: f64 = pic.attr("data-mu").and_then(|v| v.parse().ok()).expect("data-mu");
-            let inks = texts(svg);
-            // the arms' group: solid lines from the pole, dashed carried lines
-            let lines: Vec<ArmLine> = group_lines(svg, "arms")
-                .iter()
-                .map(|t| {
-                    (
-                        (num(t, "x1").unwrap(), num(t, "y1").unwrap()),
-                        (num(t, "x2").unwrap(), num(t, "y2").unwrap()),
-                        num(t, "stroke-width").unwrap(),
-                        attr(t, "stroke-dasharray").is_some(),
-                    )
-                })
-                .collect();
-            for (a, b, w, dashed) in &lines {
-                if *w > 0.35 + 1e-9 {
-                    faults.push(format!("{name} {lang:?}: arm line {a:?}–{b:?} {w} mm wide (dashed {dashed})"));
-                }
-            }
-            // the pole: the end most of the solid arm lines share
-            let solid: Vec<_> = lines.iter().filter(|l| !l.3).collect();
-            let ends: Vec<(f64, f64)> = solid.iter().flat_map(|l| [l.0, l.1]).collect();
-            let shared = |p: (f64, f64)| ends.iter().filter(|q| (q.0 - p.0).hypot(q.1 - p.1) < 1e-3).count();
-            let Some(pole) = ends.iter().copied().max_by_key(|p| shared(*p)) else {
-                faults.push(format!("{name} {lang:?}: no arm drawn"));
+    let mut n = Paired::default();
+    for (name, text) in &lever_tasks() {
+        for lang in [Language::Ru, Language::Uk, Language::En] {
+            let task = TaskSource::new(name, text.as_str());
+            let run = run_task_in(&task, Some(lang)).unwrap();
+            let Some(sheet) = run.docs.picture("forces/zhukovsky-lever.svg") else {
+                n.faults.push(format!("{name} {lang:?}: no lever drawn"));
                 continue;
             };
-            for (i, e) in report["forces"]["lever"].as_array().unwrap().iter().enumerate() {
-                let k = i + 1;
-                if !inks.iter().any(|t| t.text.starts_with(&format!("({k}) "))) {
-                    faults.push(format!("{name} {lang:?}: no force numbered ({k})"));
-                }
-                let v = |p: &Value, j: usize| p[j].as_f64().unwrap();
-                let (img, f) = (&e["image"], &e["force"]);
-                let ff = v(f, 0).hypot(v(f, 1));
-                let h = if ff > 0.0 {
-                    (v(img, 0) * v(f, 1) - v(img, 1) * v(f, 0)).abs() / ff / mu_v
-                } else {
-                    0.0
-                };
-                let label: Vec<&Ink> = inks
-                    .iter()
-                    .filter(|t| {
-                        t.text
-                            .strip_prefix(&format!("h{k}"))
-                            .is_some_and(|r| r.trim_start().starts_with('='))
-                    })
-                    .collect();
-                if h < 0.5 {
-                    if !label.is_empty() {
-                        faults.push(format!("{name} {lang:?}: force {k}'s arm {h:.2} mm is labelled"));
-                    }
-                    continue;
-                }
-                pairs += 1;
-                let [ink] = label.as_slice() else {
-                    faults.push(format!("{name} {lang:?}: {} labels h{k} for the arm {h:.2} mm", label.len()));
-                    continue;
-                };
-                let eq = ink.text.find('=').unwrap();
-                match printed(&ink.text[eq + 1..]) {
-                    Some(p) if (p - h).abs() <= 0.05 + 1e-6 => {}
-                    p => faults.push(format!("{name} {lang:?}: \"{}\" for force {k}'s arm {h:.3} mm ({p:?})", ink.text)),
-                }
-                // its line: from the pole, h long, towards the foot of the
-                // perpendicular on the line of action (r − u (r·u), u along
-                // F; the paper's y down)
-                let (ux, uy) = (v(f, 0) / ff, v(f, 1) / ff);
-                let along = v(img, 0) * ux + v(img, 1) * uy;
-                let (fx, fy) = (v(img, 0) - ux * along, -(v(img, 1) - uy * along));
-                let fl = fx.hypot(fy);
-                let arm = solid.iter().find_map(|(a, b, _, _)| {
-                    let (p, q) = if (a.0 - pole.0).hypot(a.1 - pole.1) < 1e-3 {
-                        (*a, *b)
-                    } else {
-                        (*b, *a)
-                    };
-                    let len = (q.0 - p.0).hypot(q.1 - p.1);
-                    let towards = ((q.0 - p.0) * fx + (q.1 - p.1) * fy) / (len * fl).max(1e-12) > 0.999;
-                    ((p.0 - pole.0).hypot(p.1 - pole.1) < 1e-3 && (len - h).abs() < 0.01 && towards).then_some((p, q))
-                });
-                let Some((p, q)) = arm else {
-                    faults.push(format!("{name} {lang:?}: no solid line {h:.2} mm from the pole for force {k}"));
-                    continue;
-                };
-                let d = ink.b.segment_distance(p, q);
-                farthest = farthest.max(d);
-                if d > NEAR_ARM_MM {
-                    faults.push(format!("{name} {lang:?}: \"{}\" {d:.1} mm from its arm", ink.text));
-                }
-            }
+            let mu = |p: &tmm_report::picture::Picture| p.attr("data-mu").and_then(|v| v.parse::<f64>().ok()).expect("data-mu");
+            let near = if name == "default.toml" || name == "seed-003-sixbar.toml" {
+                NEAR_ARM_MM
+            } else {
+                NEAR_ARM_OTHERS_MM
+            };
+            pair_arms(&format!("{name} {lang:?} A1"), sheet.svg(), mu(sheet), &run.report, near, &mut n);
+            let figs = note_figures(&task, Some(lang)).unwrap();
+            let pic = figs.picture("forces/zhukovsky-lever.svg").expect("the lever is drawn");
+            pair_arms(&format!("{name} {lang:?} A4"), pic.svg(), mu(pic), &run.report, near, &mut n);
         }
     }
-    println!("lever: {pairs} forces paired with their arms, the farthest label {farthest:.1} mm from its arm");
-    assert!(pairs > 10, "{pairs}");
-    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+    println!(
+        "lever: {} forces paired with their arms, the farthest label {:.1} mm from its arm",
+        n.pairs, n.farthest
+    );
+    assert!(n.pairs > 100, "{}", n.pairs);
+    assert!(n.faults.is_empty(), "{} faults:\n{}", n.faults.len(), n.faults.join("\n"));
+}
+
+/// The arm finder measures what it must: a mark h_1 beside a line from
+/// the pole, h long, is that many mm from it; one moved 10 mm off is 10 mm
+/// farther and a fault; the listed length far off is not taken for the
+/// mark.
+#[test]
+fn the_arm_pairing_measures_the_labels_distance() {
+    let lever = json_lever();
+    // the pole at (50, 50), force 1 at image (0, 1) m/s along +x: arm 1 m/s
+    // = 20 mm at μ_v = 0.05, its foot straight up the paper (y down); a
+    // second arm line from the pole marks the pole
+    let svg = |dx: f64| {
+        format!(
+            "<svg viewBox=\"0 0 100 100\"><g id=\"arms\">\n<line x1=\"50\" y1=\"50\" x2=\"50\" y2=\"30\" stroke-width=\"0.25\"/>\n<line x1=\"50\" y1=\"50\" x2=\"70\" y2=\"50\" stroke-width=\"0.25\"/>\n</g><text x=\"{}\" y=\"41\" font-size=\"3\">h<tspan dy=\"1\" font-size=\"2.1\">1</tspan></text><text x=\"10\" y=\"10\" font-size=\"3\">h<tspan dy=\"1\" font-size=\"2.1\">1</tspan><tspan dy=\"-1\"> = 20 мм</tspan></text><text x=\"10\" y=\"90\" font-size=\"3\">(1) F 1 Н</text></svg>",
+            52.0 + dx
+        )
+    };
+    let mut n = Paired::default();
+    pair_arms("near", &svg(0.0), 0.05, &lever, NEAR_ARM_MM, &mut n);
+    assert!(n.faults.is_empty(), "{:?}", n.faults);
+    assert_eq!(n.pairs, 1);
+    // the text's box starts 2 mm right of the arm, less its foot's lean
+    let near = n.farthest;
+    assert!(near > 1.5 && near < 2.0, "{near}");
+    let mut far = Paired::default();
+    pair_arms("far", &svg(10.0), 0.05, &lever, NEAR_ARM_MM, &mut far);
+    assert!((far.farthest - near - 10.0).abs() < 1e-9, "{} {near}", far.farthest);
+    assert_eq!(far.faults.len(), 1, "{:?}", far.faults);
+}
+
+/// A report's lever of one force: image (0, 1) m/s, force (1, 0) N.
+fn json_lever() -> Value {
+    serde_json::json!({"forces": {"lever": [{"image": [0.0, 1.0], "force": [1.0, 0.0]}]}})
 }
