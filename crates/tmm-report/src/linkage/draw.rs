@@ -647,7 +647,11 @@ pub(crate) fn cycle_diagram(
         c.rich_paper((lx + 7.5, ly + 3.5), dots.dots_name, H_SMALL, Anchor::Start, "#000");
     }
     // position numbers under the axis, clear of the curve
-    for (x, label) in marks.iter().chain(std::iter::once(&(360.0, "12".to_string()))) {
+    // the full turn's end numbered after the last position, unless a
+    // position stands there already (a range that ends within 2 mm of it)
+    let end_free = marks.iter().all(|(x, _)| (map(360.0, 0.0).0 - map(*x, 0.0).0).abs() > 2.0);
+    let end = end_free.then(|| (360.0, "12".to_string()));
+    for (x, label) in marks.iter().chain(end.iter()) {
         if label.ends_with('\'') && marks.len() > 1 {
             // the extreme position: its number above the axis
             let (xp, _) = map(*x, 0.0);

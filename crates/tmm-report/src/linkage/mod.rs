@@ -381,8 +381,12 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
         }],
         (None, Some(c)) => c.positions(m, n),
         (None, None) => {
-            // n positions over each range, its ends included
+            // n positions over each range, its ends included: numbered
+            // 0 … n − 1 as the course numbers a crank's positions when the
+            // mechanism assembles over one range (a lever driven by a
+            // cylinder over its swing), "range.k" over several
             let k_max = n.max(2);
+            let single = pieces.len() == 1;
             let mut out = Vec::new();
             for (i, &(a, b)) in pieces.iter().enumerate() {
                 if i > 0 {
@@ -391,7 +395,7 @@ pub fn analyse(l: &Loaded, src: &TaskSource, at: Option<f64>, n: usize) -> Resul
                 for k in 0..k_max {
                     let phi = a + (b - a) * k as f64 / (k_max - 1) as f64;
                     out.push(Position {
-                        label: format!("{}.{k}", i + 1),
+                        label: if single { k.to_string() } else { format!("{}.{k}", i + 1) },
                         phi: tmm_geom::angle::wrap_2pi(phi),
                         psi: psi_of(phi),
                     });

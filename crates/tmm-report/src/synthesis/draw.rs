@@ -200,6 +200,9 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     // the legend under the drawing: each entry broken into lines that stay
     // on the paper at the printed letter size, its sample by the first
     let function = y.kind == Kind::FunctionGeneration;
+    // a lever driven by a cylinder has no time ratio K_v nor angle θ of
+    // the crank: its header gives the lever's swing β instead
+    let cylinder = y.kind == Kind::OscillatingCylinder;
     // the extreme positions named by their point (B′, B″) and the chosen
     // pivot by its letter, so the legend reads without its colours
     let extreme = |key: &str| wd(key).replace("{1}", &k.point);
@@ -211,7 +214,13 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
         leg.push((Some(GREEN), wd("locus")));
     }
     if !function && let Some((name, _)) = y.frame.iter().find(|(_, p)| (*p - k.pivot).hypot() <= 1e-9 * size) {
-        leg[1].1 = format!("{};  {}", leg[1].1, wd("chosen_pivot").replace("{1}", name));
+        // a cylinder drive's pivot is the lever's, not a crank's
+        let pivot = if cylinder {
+            word(lang, "synthesis_cylinder.lever_pivot").to_string()
+        } else {
+            wd("chosen_pivot")
+        };
+        leg[1].1 = format!("{};  {}", leg[1].1, pivot.replace("{1}", name));
     }
     let side = 6.0;
     let rows: Vec<(Option<&str>, String)> = leg
@@ -248,7 +257,13 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
     c.root_attr("data-scale", scale.text);
     c.root_attr("data-mu-l", &format!("{}", 0.001 / scale.factor));
     let h_title = if sheet == SheetFormat::A1 { 5.0 } else { H_LABEL };
-    let title = if function { wd("title_function") } else { wd("title") };
+    let title = if function {
+        wd("title_function")
+    } else if cylinder {
+        word(lang, "synthesis_cylinder.title").to_string()
+    } else {
+        wd("title")
+    };
     c.title((0.5 * w, 6.0), &title, h_title, Anchor::Middle);
     let sub = if function {
         format!(
@@ -257,6 +272,17 @@ pub fn construction(s: &Solved, lang: Language, sheet: SheetFormat) -> Picture {
             crate::svg::scale_text(scale.text, lang),
             mu_text(0.001 / scale.factor, lang),
             wd("m_per_mm")
+        )
+    } else if cylinder {
+        let swing = y.given.iter().find(|(n, _)| n == "swing").map_or(0.0, |g| g.1);
+        format!(
+            "{} {},   μ_l = {} {},   {} β = {}°",
+            word(lang, "common.scale"),
+            crate::svg::scale_text(scale.text, lang),
+            mu_text(0.001 / scale.factor, lang),
+            wd("m_per_mm"),
+            word(lang, "synthesis_cylinder.swing"),
+            num(swing.to_degrees(), 2, lang)
         )
     } else {
         format!(
