@@ -42,13 +42,19 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             let omega = cx.v("/linkage/input/omega")?;
             let mut q = vec![
                 (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
-                (cx.w("q_n1")?, given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
+                (
+                    cx.w("q_n1")?,
+                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                ),
             ];
             // the time of one turn T = 60/n1
             if omega != 0.0 {
                 q.push((cx.w("q_revolution_time")?, cx.q(std::f64::consts::TAU / omega.abs(), "cy_u_s")?));
             }
-            q.push((cx.w("q_position")?, given_with_unit(cx, cx.v("/linkage/plans/phi")?.to_degrees(), "u_deg")?));
+            q.push((
+                cx.w("q_position")?,
+                given_with_unit(cx, cx.v("/linkage/plans/phi")?.to_degrees(), "u_deg")?,
+            ));
             b.push(cx.quantities("assign_linkage", q)?);
         }
     }
@@ -95,7 +101,10 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
                 (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
                 (cx.w("q_module")?, cx.given("/planetary/request/module", 1000.0, "u_mm")?),
                 (cx.w("q_omega_sun")?, cx.q(omega, "u_rad_s")?),
-                (cx.w("q_n_sun")?, given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
+                (
+                    cx.w("q_n_sun")?,
+                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                ),
             ],
         )?);
     }
@@ -122,7 +131,12 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
 /// at the computed position, the cylinder's mechanism, the planetary train's
 /// scheme, the cam with its follower), as the sections print it.
 fn scheme_figure(cx: &Ctx) -> Result<Option<Block>, NoteError> {
-    for path in ["linkage/positions.svg", "cylinder/mechanism.svg", "planetary/planetary.svg", "cam/cam.svg"] {
+    for path in [
+        "linkage/positions.svg",
+        "cylinder/mechanism.svg",
+        "planetary/planetary.svg",
+        "cam/cam.svg",
+    ] {
         if let Some(f) = cx.figure(path, "fig_assign_scheme")? {
             return Ok(Some(f));
         }
@@ -131,14 +145,33 @@ fn scheme_figure(cx: &Ctx) -> Result<Option<Block>, NoteError> {
 }
 
 /// A number as the task gives it: four significant digits at most, the
-/// trailing zeros dropped (510, not 510,0; 0,1, not 0,1000), as
-/// [`Ctx::given`] prints a value of the report.
+/// trailing zeros dropped (510, not 510,0; 0,1, not 0,1000; 3,5·10⁷, not
+/// 3,500·10⁷), as [`Ctx::given`] prints a value of the report.
 fn given_number(cx: &Ctx, value: f64) -> Result<String, NoteError> {
-    let f = crate::number::format_number(crate::number::zero_noise(value, 0.0), super::DIGITS, cx.lang)?;
-    if f.exponent.is_some() || !f.mantissa.contains([',', '.']) {
-        return Ok(f.to_string());
+    given_digits(cx, value, super::DIGITS)
+}
+
+/// [`given_number`] with at most `digits` significant digits.
+fn given_digits(cx: &Ctx, value: f64, digits: u8) -> Result<String, NoteError> {
+    let mut f = crate::number::format_number(crate::number::zero_noise(value, 0.0), digits, cx.lang)?;
+    if f.mantissa.contains([',', '.']) {
+        f.mantissa = f.mantissa.trim_end_matches('0').trim_end_matches([',', '.']).to_string();
     }
-    Ok(f.mantissa.trim_end_matches('0').trim_end_matches([',', '.']).to_string())
+    Ok(f.to_string())
+}
+
+/// The significant digits of a number as the task writes it (`1.1065`:
+/// five, `380`: three, `0.0833333333333333`: sixteen), at least one.
+fn written_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let d = digits.trim_start_matches('0');
+    let d = if mantissa.contains(['.', ',']) {
+        d
+    } else {
+        d.trim_end_matches('0')
+    };
+    d.len().max(1)
 }
 
 /// [`given_number`] with the unit of the words key `unit`.
@@ -163,7 +196,9 @@ fn task_quantity(v: &toml::Value) -> Option<(f64, String)> {
                         || c == '.'
                         || c == ','
                         || ((c == '-' || c == '+') && (i == 0 || s[..i].ends_with(['e', 'E'])))
-                        || ((c == 'e' || c == 'E') && i > 0 && s[i + 1..].starts_with(|d: char| d.is_ascii_digit() || d == '-' || d == '+')))
+                        || ((c == 'e' || c == 'E')
+                            && i > 0
+                            && s[i + 1..].starts_with(|d: char| d.is_ascii_digit() || d == '-' || d == '+')))
                 })
                 .map_or(s.len(), |(i, _)| i);
             let value: f64 = s[..end].replace(',', ".").parse().ok()?;
@@ -215,7 +250,23 @@ fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
             return Ok(s);
         }
     };
-    let mut s = given_number(cx, value * scale)?;
+    // the task's own digits (1.1065 stays 1,1065), four of a longer number
+    let written = match v {
+        toml::Value::String(t) => written_digits(
+            t.trim()
+                .split(|c: char| c.is_whitespace() || c.is_alphabetic() && c != 'e' && c != 'E')
+                .next()
+                .unwrap_or(""),
+        ),
+        toml::Value::Float(x) => written_digits(&x.to_string()),
+        _ => usize::from(super::DIGITS),
+    };
+    let digits = if written <= 6 {
+        written.max(usize::from(super::DIGITS))
+    } else {
+        usize::from(super::DIGITS)
+    };
+    let mut s = given_digits(cx, value * scale, u8::try_from(digits).unwrap_or(super::DIGITS))?;
     let u = if key.is_empty() { String::new() } else { cx.w(key)? };
     crate::number::push_unit(&mut s, &u);
     Ok(s)
@@ -273,7 +324,10 @@ fn length_rows(cx: &Ctx) -> Result<Vec<Vec<Cell>>, NoteError> {
             for b in &points[i + 1..] {
                 let d = (a.1 - b.1).hypot(a.2 - b.2);
                 if d > 0.0 && d.is_finite() {
-                    rows.push(vec![text(cx.fill("link_frame", &[format!("{}{}", a.0, b.0)])?), text(given_number(cx, d)?)]);
+                    rows.push(vec![
+                        text(cx.fill("link_frame", &[format!("{}{}", a.0, b.0)])?),
+                        text(given_number(cx, d)?),
+                    ]);
                 }
             }
         }
@@ -298,7 +352,8 @@ fn forces_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     // k of J_S = k·m·l² serves every link with a mass and no inertia given
     let by_rule = f.get("mass_per_length").is_some()
         || links.is_some_and(|ls| {
-            ls.values().any(|l| (l.get("mass").is_some() || l.get("mass_per_length").is_some()) && l.get("inertia").is_none())
+            ls.values()
+                .any(|l| (l.get("mass").is_some() || l.get("mass_per_length").is_some()) && l.get("inertia").is_none())
         });
     if f.get("k").is_some() || by_rule {
         let k = match f.get("k") {
@@ -423,13 +478,18 @@ fn mass_centres(cx: &Ctx) -> Result<String, NoteError> {
             .and_then(toml::Value::as_array)
             .map(|a| a.iter().filter_map(toml::Value::as_str).collect())
             .unwrap_or_default();
-        let along = mc.get("along").and_then(|a| task_quantity(a).filter(|(_, u)| u.is_empty()).map(|q| q.0));
+        let along = mc
+            .get("along")
+            .and_then(|a| task_quantity(a).filter(|(_, u)| u.is_empty()).map(|q| q.0));
         let only_along = mc.as_table().is_some_and(|t| t.len() == 1);
         own.push(match (along, only_along, joints.as_slice()) {
-            (Some(a), true, [j0, j1, ..]) if a.abs() < 1e-12 => cx.fill("cm_at_joint", &[name.to_string(), (*j0).to_string(), (*j1).to_string()])?,
-            (Some(a), true, [j0, j1, ..]) => {
-                cx.fill("cm_along", &[name.to_string(), given_number(cx, a)?, format!("{j0}{j1}"), (*j0).to_string()])?
+            (Some(a), true, [j0, j1, ..]) if a.abs() < 1e-12 => {
+                cx.fill("cm_at_joint", &[name.to_string(), (*j0).to_string(), (*j1).to_string()])?
             }
+            (Some(a), true, [j0, j1, ..]) => cx.fill(
+                "cm_along",
+                &[name.to_string(), given_number(cx, a)?, format!("{j0}{j1}"), (*j0).to_string()],
+            )?,
             _ => cx.fill("cm_given", &[name.to_string()])?,
         });
     }
@@ -468,9 +528,10 @@ fn cam_phase_rows(cx: &Ctx) -> Result<Vec<Vec<Cell>>, NoteError> {
         let angle = p.get("angle").and_then(serde_json::Value::as_f64).unwrap_or(0.0).to_degrees();
         // the law as the task writes it: the words after the kind and the angle
         let from_task = pieces.get(i).and_then(|piece| {
-            let mut w = piece.split_whitespace().skip(1).skip_while(|w| {
-                w.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-') || matches!(*w, "deg" | "°")
-            });
+            let mut w = piece
+                .split_whitespace()
+                .skip(1)
+                .skip_while(|w| w.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-') || matches!(*w, "deg" | "°"));
             let first = w.next()?;
             Some(std::iter::once(first).chain(w).collect::<Vec<_>>().join(" "))
         });
