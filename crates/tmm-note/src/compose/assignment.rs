@@ -1,5 +1,9 @@
-//! The technical assignment (техническое задание): the task's data as
-//! tables, one per part of the project, from the report's given values.
+//! The technical assignment (техническое задание): the mechanism's scheme
+//! and the task's data as tables, one per part of the project, each value as
+//! the task gives it (380 Н·м, 10 кг/м, k = 0,1, the frame's 510 мм), with
+//! the kinetostatics' givens (the mass rule, the centres of mass, gravity,
+//! the resistance and its law), the cam's phases and laws and the planetary
+//! train's scheme in words.
 
 use super::context::{Ctx, num, text};
 use super::linkage::link_lengths;
@@ -9,6 +13,9 @@ use crate::model::{Block, Cell};
 /// The assignment's blocks.
 pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
     let mut b = vec![cx.para("assign_intro", &[])?];
+    if let Some(f) = scheme_figure(cx)? {
+        b.push(f);
+    }
     // a synthesised mechanism: the task gives the synthesis' data (П3's
     // H, K, λ, l_BC, l_OC), not the lengths it finds
     let synthesised = cx.report.get("synthesis").is_some();
@@ -16,11 +23,10 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         b.push(cx.quantities("assign_synthesis", super::synthesis::given_rows(cx)?)?);
     }
     if cx.report.get("linkage").is_some() {
-        let mut rows: Vec<Vec<Cell>> = Vec::new();
-        for (name, l) in link_lengths(cx) {
-            rows.push(vec![text(cx.fill("link_n", &[name])?), num(l * 1000.0)]);
-        }
-        if !synthesised {
+        // the analysed mechanism's lengths are given when the task has its
+        // own [linkage] (a synthesised one's are found, not given)
+        if !synthesised || task_linkage(cx).is_some() {
+            let rows = length_rows(cx)?;
             b.push(cx.table("assign_links", &[("col_link", ""), ("col_length", "u_mm")], rows)?);
         }
         if cx.s("/linkage/input/kind") == Some("slider") {
@@ -36,17 +42,27 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             let omega = cx.v("/linkage/input/omega")?;
             let mut q = vec![
                 (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
-                (cx.w("q_n1")?, cx.q(omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?),
+                (
+                    cx.w("q_n1")?,
+                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                ),
             ];
             // the time of one turn T = 60/n1
             if omega != 0.0 {
                 q.push((cx.w("q_revolution_time")?, cx.q(std::f64::consts::TAU / omega.abs(), "cy_u_s")?));
             }
-            q.push((cx.w("q_position")?, cx.deg("/linkage/plans/phi")?));
+            q.push((
+                cx.w("q_position")?,
+                given_with_unit(cx, cx.v("/linkage/plans/phi")?.to_degrees(), "u_deg")?,
+            ));
             b.push(cx.quantities("assign_linkage", q)?);
         }
     }
     if cx.report.get("forces").is_some() {
+        let given = forces_rows(cx)?;
+        if !given.is_empty() {
+            b.push(cx.quantities("assign_forces", given)?);
+        }
         let mut rows = Vec::new();
         if let Some(links) = cx.report.pointer("/forces/links").and_then(|v| v.as_object()) {
             for (name, l) in links {
@@ -74,22 +90,479 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         b.push(cx.quantities("assign_gear", super::gear::given_rows(cx)?)?);
     }
     if cx.report.get("planetary").is_some() {
+        if let Some(p) = planetary_scheme(cx)? {
+            b.push(p);
+        }
+        let omega = cx.v("/planetary/request/omega1")?;
         b.push(cx.quantities(
             "assign_planetary",
             vec![
-                (cx.w("q_ratio")?, cx.qv("/planetary/request/ratio", 1.0, "")?),
+                (cx.w("q_ratio")?, cx.given("/planetary/request/ratio", 1.0, "")?),
                 (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
-                (cx.w("q_module")?, cx.qv("/planetary/request/module", 1000.0, "u_mm")?),
-                (cx.w("q_omega_sun")?, cx.qv("/planetary/request/omega1", 1.0, "u_rad_s")?),
+                (cx.w("q_module")?, cx.given("/planetary/request/module", 1000.0, "u_mm")?),
+                (cx.w("q_omega_sun")?, cx.q(omega, "u_rad_s")?),
+                (
+                    cx.w("q_n_sun")?,
+                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                ),
             ],
         )?);
     }
     if cx.report.get("cam").is_some() {
         b.push(cx.quantities("assign_cam", super::cam::given_rows(cx)?)?);
+        let rows = cam_phase_rows(cx)?;
+        if !rows.is_empty() {
+            b.push(cx.table(
+                "assign_cam_phases",
+                &[("col_phase", ""), ("col_phase_angle", "u_deg"), ("col_law", "")],
+                rows,
+            )?);
+        }
     }
     if cx.report.get("cylinder").is_some() {
         b.push(cx.quantities("assign_cylinder", super::cylinder::given_rows(cx)?)?);
     }
     b.push(cx.para("assign_rounding", &[super::DIGITS.to_string()])?);
     Ok(b)
+}
+
+/// The mechanism's scheme for the assignment: the first of the run's
+/// drawings that shows the mechanism itself (the linkage's kinematic scheme
+/// at the computed position, the cylinder's mechanism, the planetary train's
+/// scheme, the cam with its follower), as the sections print it.
+fn scheme_figure(cx: &Ctx) -> Result<Option<Block>, NoteError> {
+    for path in [
+        "linkage/positions.svg",
+        "cylinder/mechanism.svg",
+        "planetary/planetary.svg",
+        "cam/cam.svg",
+    ] {
+        if let Some(f) = cx.figure(path, "fig_assign_scheme")? {
+            return Ok(Some(f));
+        }
+    }
+    Ok(None)
+}
+
+/// A number as the task gives it: four significant digits at most, the
+/// trailing zeros dropped (510, not 510,0; 0,1, not 0,1000; 3,5·10⁷, not
+/// 3,500·10⁷), as [`Ctx::given`] prints a value of the report.
+fn given_number(cx: &Ctx, value: f64) -> Result<String, NoteError> {
+    given_digits(cx, value, super::DIGITS)
+}
+
+/// [`given_number`] with at most `digits` significant digits.
+fn given_digits(cx: &Ctx, value: f64, digits: u8) -> Result<String, NoteError> {
+    let mut f = crate::number::format_number(crate::number::zero_noise(value, 0.0), digits, cx.lang)?;
+    if f.mantissa.contains([',', '.']) {
+        f.mantissa = f.mantissa.trim_end_matches('0').trim_end_matches([',', '.']).to_string();
+    }
+    Ok(f.to_string())
+}
+
+/// The significant digits of a number as the task writes it (`1.1065`:
+/// five, `380`: three, `0.0833333333333333`: sixteen), at least one.
+fn written_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let d = digits.trim_start_matches('0');
+    let d = if mantissa.contains(['.', ',']) {
+        d
+    } else {
+        d.trim_end_matches('0')
+    };
+    d.len().max(1)
+}
+
+/// [`given_number`] with the unit of the words key `unit`.
+fn given_with_unit(cx: &Ctx, value: f64, unit: &str) -> Result<String, NoteError> {
+    let mut s = given_number(cx, value)?;
+    crate::number::push_unit(&mut s, &cx.w(unit)?);
+    Ok(s)
+}
+
+/// A quantity of the task file (`"380 N m"`, `"10 kg/m"`, `0.1`) split
+/// into its number and its unit as written (spaces, `·` and `*` removed).
+fn task_quantity(v: &toml::Value) -> Option<(f64, String)> {
+    match v {
+        toml::Value::Float(f) => Some((*f, String::new())),
+        toml::Value::Integer(i) => Some((*i as f64, String::new())),
+        toml::Value::String(s) => {
+            let s = s.trim();
+            let end = s
+                .char_indices()
+                .find(|&(i, c)| {
+                    !(c.is_ascii_digit()
+                        || c == '.'
+                        || c == ','
+                        || ((c == '-' || c == '+') && (i == 0 || s[..i].ends_with(['e', 'E'])))
+                        || ((c == 'e' || c == 'E')
+                            && i > 0
+                            && s[i + 1..].starts_with(|d: char| d.is_ascii_digit() || d == '-' || d == '+')))
+                })
+                .map_or(s.len(), |(i, _)| i);
+            let value: f64 = s[..end].replace(',', ".").parse().ok()?;
+            let unit: String = s[end..].chars().filter(|c| !matches!(c, ' ' | '·' | '*' | '⋅')).collect();
+            Some((value, unit))
+        }
+        _ => None,
+    }
+}
+
+/// A quantity of the task file in the note's words, its value as given:
+/// `"380 N m"` → «380 Н·м», `"10 kg/m"` → «10 кг/м», `"9.81 m/s^2"` →
+/// «9,81 м/с²»; a multiple (kN, m of a length) in the note's unit (Н, мм).
+/// A unit the note does not know is printed as the task writes it.
+fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
+    let Some((value, unit)) = task_quantity(v) else {
+        return Ok(match v {
+            toml::Value::String(s) => s.clone(),
+            other => other.to_string(),
+        });
+    };
+    let (scale, key) = match unit.as_str() {
+        "" => (1.0, ""),
+        "N" => (1.0, "u_n"),
+        "kN" => (1e3, "u_n"),
+        "MN" => (1e6, "u_n"),
+        "Nm" => (1.0, "u_nm"),
+        "kNm" => (1e3, "u_nm"),
+        "kg" => (1.0, "u_kg"),
+        "t" => (1e3, "u_kg"),
+        "kg/m" => (1.0, "u_kg_per_m"),
+        "kgm^2" | "kgm2" | "kgm²" => (1.0, "u_kgm2"),
+        "m/s^2" | "m/s2" | "m/s²" => (1.0, "u_m_s2"),
+        "MPa" => (1.0, "u_mpa"),
+        "kPa" => (1e-3, "u_mpa"),
+        "Pa" => (1e-6, "u_mpa"),
+        "bar" => (0.1, "u_mpa"),
+        "mm" => (1.0, "u_mm"),
+        "cm" => (10.0, "u_mm"),
+        "m" => (1e3, "u_mm"),
+        "deg" | "°" => (1.0, "u_deg"),
+        "rpm" => (1.0, "u_rpm"),
+        "rad/s" => (1.0, "u_rad_s"),
+        _ => {
+            let s = match v {
+                toml::Value::String(s) => s.clone(),
+                other => other.to_string(),
+            };
+            return Ok(s);
+        }
+    };
+    // the task's own digits (1.1065 stays 1,1065), four of a longer number
+    let written = match v {
+        toml::Value::String(t) => written_digits(
+            t.trim()
+                .split(|c: char| c.is_whitespace() || c.is_alphabetic() && c != 'e' && c != 'E')
+                .next()
+                .unwrap_or(""),
+        ),
+        toml::Value::Float(x) => written_digits(&x.to_string()),
+        _ => usize::from(super::DIGITS),
+    };
+    let digits = if written <= 6 {
+        written.max(usize::from(super::DIGITS))
+    } else {
+        usize::from(super::DIGITS)
+    };
+    let mut s = given_digits(cx, value * scale, u8::try_from(digits).unwrap_or(super::DIGITS))?;
+    let u = if key.is_empty() { String::new() } else { cx.w(key)? };
+    crate::number::push_unit(&mut s, &u);
+    Ok(s)
+}
+
+/// A length of the task file in mm, as a number (`"120 mm"`, `"0.12 m"`).
+fn task_mm(v: &toml::Value) -> Option<f64> {
+    let (value, unit) = task_quantity(v)?;
+    match unit.as_str() {
+        "mm" => Some(value),
+        "cm" => Some(value * 10.0),
+        "m" | "" => Some(value * 1e3),
+        _ => None,
+    }
+}
+
+/// The task's `[linkage]` (not a synthesised one: its lengths are found,
+/// not given).
+fn task_linkage<'a>(cx: &Ctx<'a>) -> Option<&'a toml::Table> {
+    cx.task.get("linkage").and_then(toml::Value::as_table)
+}
+
+/// The rows of the links' lengths: each link's length as the task gives it
+/// (or as the joints' distance in the first position), then the frame (стойка)
+/// between each two of the fixed joints, by their coordinates.
+fn length_rows(cx: &Ctx) -> Result<Vec<Vec<Cell>>, NoteError> {
+    let given: Vec<(String, Option<f64>)> = task_linkage(cx)
+        .and_then(|l| l.get("links"))
+        .and_then(toml::Value::as_array)
+        .map(|a| {
+            a.iter()
+                .filter_map(|l| Some((l.get("name")?.as_str()?.to_string(), l.get("length").and_then(task_mm))))
+                .collect()
+        })
+        .unwrap_or_default();
+    let mut rows: Vec<Vec<Cell>> = Vec::new();
+    for (name, l) in link_lengths(cx) {
+        let as_given = given.iter().find(|(n, _)| *n == name).and_then(|(_, g)| *g);
+        let cell = match as_given {
+            Some(mm) => text(given_number(cx, mm)?),
+            None => num(l * 1000.0),
+        };
+        rows.push(vec![text(cx.fill("link_n", &[name])?), cell]);
+    }
+    // the frame: the distance of each two fixed joints (AD = 510 mm)
+    if let Some(fixed) = task_linkage(cx).and_then(|l| l.get("fixed")).and_then(toml::Value::as_table) {
+        let points: Vec<(&String, f64, f64)> = fixed
+            .iter()
+            .filter_map(|(n, v)| {
+                let a = v.as_array()?;
+                Some((n, task_mm(a.first()?)?, task_mm(a.get(1)?)?))
+            })
+            .collect();
+        for (i, a) in points.iter().enumerate() {
+            for b in &points[i + 1..] {
+                let d = (a.1 - b.1).hypot(a.2 - b.2);
+                if d > 0.0 && d.is_finite() {
+                    rows.push(vec![
+                        text(cx.fill("link_frame", &[format!("{}{}", a.0, b.0)])?),
+                        text(given_number(cx, d)?),
+                    ]);
+                }
+            }
+        }
+    }
+    Ok(rows)
+}
+
+/// The kinetostatics' givens as the task states them (`[forces]`): the mass
+/// rule (q kg per metre, J_S = k·m·l²) or the masses given per link, the
+/// centres of mass, gravity, the resistance (its link, value, law and
+/// sense), the gas forces of an engine's cylinders, the forces by the
+/// slider's travel, friction, the crank's motion.
+fn forces_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
+    let Some(f) = cx.task.get("forces").and_then(toml::Value::as_table) else {
+        return Ok(Vec::new());
+    };
+    let mut rows = Vec::new();
+    let links = f.get("links").and_then(toml::Value::as_table);
+    if let Some(q) = f.get("mass_per_length") {
+        rows.push((cx.w("q_mass_per_length")?, quantity_text(cx, q)?));
+    }
+    // k of J_S = k·m·l² serves every link with a mass and no inertia given
+    let by_rule = f.get("mass_per_length").is_some()
+        || links.is_some_and(|ls| {
+            ls.values()
+                .any(|l| (l.get("mass").is_some() || l.get("mass_per_length").is_some()) && l.get("inertia").is_none())
+        });
+    if f.get("k").is_some() || by_rule {
+        let k = match f.get("k") {
+            Some(k) => quantity_text(cx, k)?,
+            None => given_number(cx, 0.1)?,
+        };
+        rows.push((cx.w("q_inertia_k")?, k));
+    }
+    for (name, l) in links.into_iter().flatten() {
+        for (key, word) in [
+            ("mass", "q_link_mass"),
+            ("mass_per_length", "q_link_mass_per_length"),
+            ("inertia", "q_link_inertia"),
+            ("k", "q_link_k"),
+            ("moment", "q_link_moment"),
+        ] {
+            if let Some(v) = l.get(key) {
+                rows.push((cx.fill(word, std::slice::from_ref(name))?, quantity_text(cx, v)?));
+            }
+        }
+    }
+    rows.push((cx.w("q_mass_centres")?, mass_centres(cx)?));
+    let gravity = match f.get("gravity") {
+        Some(g) => cx.fill("gravity_on", &[quantity_text(cx, g)?])?,
+        None => cx.w("gravity_off")?,
+    };
+    rows.push((cx.w("q_gravity")?, gravity));
+    for r in f.get("resistance").and_then(toml::Value::as_array).into_iter().flatten() {
+        rows.push(resistance_row(cx, r)?);
+    }
+    for c in f.get("cylinders").and_then(toml::Value::as_array).into_iter().flatten() {
+        let link = c.get("link").and_then(toml::Value::as_str).unwrap_or("").to_string();
+        let mut value = cx.w("gas_by_indicator")?;
+        if let Some(b) = c.get("bore") {
+            value.push_str(&cx.fill("gas_bore", &[quantity_text(cx, b)?])?);
+        }
+        if let Some(p) = c.get("p_max") {
+            value.push_str(&cx.fill("gas_p_max", &[quantity_text(cx, p)?])?);
+        }
+        rows.push((cx.fill("q_gas_force", &[link])?, value));
+    }
+    for s in f.get("stroke_forces").and_then(toml::Value::as_array).into_iter().flatten() {
+        let link = s.get("link").and_then(toml::Value::as_str).unwrap_or("").to_string();
+        let largest = s
+            .get("force")
+            .and_then(toml::Value::as_array)
+            .map(|a| a.iter().filter_map(|v| task_quantity(v).map(|q| q.0.abs())).fold(0.0, f64::max))
+            .unwrap_or(0.0);
+        let mut value = cx.w("stroke_force_table")?;
+        if largest > 0.0 {
+            let mut n = given_number(cx, largest)?;
+            crate::number::push_unit(&mut n, &cx.w("u_n")?);
+            value.push_str(&cx.fill("stroke_force_largest", &[n])?);
+        }
+        rows.push((cx.fill("q_stroke_force", &[link])?, value));
+    }
+    for s in f.get("friction").and_then(toml::Value::as_array).into_iter().flatten() {
+        let link = s.get("link").and_then(toml::Value::as_str).unwrap_or("").to_string();
+        let value = match s.get("force") {
+            Some(v) => cx.fill("friction_value", &[quantity_text(cx, v)?])?,
+            None => cx.w("res_dir_opposes_force")?,
+        };
+        rows.push((cx.fill("q_friction", &[link])?, value));
+    }
+    let motion = if f.get("crank_motion").and_then(toml::Value::as_str) == Some("dynamics") {
+        "crank_motion_dynamics"
+    } else {
+        "crank_motion_constant"
+    };
+    rows.push((cx.w("q_crank_motion")?, cx.w(motion)?));
+    Ok(rows)
+}
+
+/// One resistance (`[[forces.resistance]]`) as a row: «Момент сопротивления
+/// на звене 3 | 380 Н·м, постоянный на всём цикле, против вращения звена».
+fn resistance_row(cx: &Ctx, r: &toml::Value) -> Result<(String, String), NoteError> {
+    let link = r.get("link").and_then(toml::Value::as_str).unwrap_or("").to_string();
+    let moment = r.get("moment");
+    let label = match (moment, r.get("point").and_then(toml::Value::as_str)) {
+        (Some(_), _) => cx.fill("q_res_moment", std::slice::from_ref(&link))?,
+        (None, Some(p)) => cx.fill("q_res_force_at", &[link.clone(), p.to_string()])?,
+        (None, None) => cx.fill("q_res_force", std::slice::from_ref(&link))?,
+    };
+    let mut parts = Vec::new();
+    if let Some(v) = moment.or_else(|| r.get("force")) {
+        parts.push(quantity_text(cx, v)?);
+    }
+    let law = r.get("law").and_then(toml::Value::as_str).unwrap_or("constant");
+    let over_crank = r.get("over").and_then(toml::Value::as_str) == Some("crank");
+    let law_key = match law {
+        "constant" => "res_law_constant",
+        "working" => "res_law_working",
+        "sine" => "res_law_sine",
+        "table" if over_crank => "res_law_table_crank",
+        "table" => "res_law_table",
+        _ => "",
+    };
+    parts.push(if law_key.is_empty() { law.to_string() } else { cx.w(law_key)? });
+    let sense = match (moment.is_some(), r.get("direction").and_then(toml::Value::as_str), r.get("angle")) {
+        (true, Some("ccw"), _) => cx.w("res_dir_ccw")?,
+        (true, Some("cw"), _) => cx.w("res_dir_cw")?,
+        (true, _, _) => cx.w("res_dir_opposes_moment")?,
+        (false, _, Some(a)) => cx.fill("res_dir_angle", &[quantity_text(cx, a)?])?,
+        (false, _, None) => cx.w("res_dir_opposes_force")?,
+    };
+    parts.push(sense);
+    Ok((label, parts.join(", ")))
+}
+
+/// Where the centres of mass are: in the middle of every link unless the
+/// task's `mass_center` of a link says otherwise (a share of the link's
+/// first two joints' distance from the first, or as given).
+fn mass_centres(cx: &Ctx) -> Result<String, NoteError> {
+    let links = task_linkage(cx).and_then(|l| l.get("links")).and_then(toml::Value::as_array);
+    let mut own = Vec::new();
+    for l in links.into_iter().flatten() {
+        let (Some(name), Some(mc)) = (l.get("name").and_then(toml::Value::as_str), l.get("mass_center")) else {
+            continue;
+        };
+        let joints: Vec<&str> = l
+            .get("joints")
+            .and_then(toml::Value::as_array)
+            .map(|a| a.iter().filter_map(toml::Value::as_str).collect())
+            .unwrap_or_default();
+        let along = mc
+            .get("along")
+            .and_then(|a| task_quantity(a).filter(|(_, u)| u.is_empty()).map(|q| q.0));
+        let only_along = mc.as_table().is_some_and(|t| t.len() == 1);
+        own.push(match (along, only_along, joints.as_slice()) {
+            (Some(a), true, [j0, j1, ..]) if a.abs() < 1e-12 => {
+                cx.fill("cm_at_joint", &[name.to_string(), (*j0).to_string(), (*j1).to_string()])?
+            }
+            (Some(a), true, [j0, j1, ..]) => cx.fill(
+                "cm_along",
+                &[name.to_string(), given_number(cx, a)?, format!("{j0}{j1}"), (*j0).to_string()],
+            )?,
+            _ => cx.fill("cm_given", &[name.to_string()])?,
+        });
+    }
+    if own.is_empty() {
+        return cx.w("cm_middle");
+    }
+    own.push(cx.w("cm_rest_middle")?);
+    Ok(own.join("; "))
+}
+
+/// The planetary train's scheme in words: its wheels, the fixed one and the
+/// carrier (a single-row train: sun 1, planets 2, fixed ring 3, carrier H).
+fn planetary_scheme(cx: &Ctx) -> Result<Option<Block>, NoteError> {
+    let Some(scheme) = cx.s("/planetary/scheme") else { return Ok(None) };
+    let key = format!("pl_scheme_{}", scheme.replace('-', "_"));
+    let words = cx.w(&key).unwrap_or_else(|_| scheme.to_string());
+    Ok(Some(cx.para("assign_pl_scheme", &[words])?))
+}
+
+/// The cam's phases as the task gives them: each phase's kind, angle and
+/// motion law (`rise 108 const-accel(u=1/3)` → подъём | 108 | равноускоренный,
+/// u = 1/3), the angles from the report's phases, the laws from the task's
+/// text (the report's parameters are rounded).
+fn cam_phase_rows(cx: &Ctx) -> Result<Vec<Vec<Cell>>, NoteError> {
+    let phases = cx.report.pointer("/cam/phases").and_then(serde_json::Value::as_array);
+    let pieces: Vec<String> = cx
+        .task
+        .get("cam")
+        .and_then(|c| c.get("phases"))
+        .and_then(toml::Value::as_str)
+        .map(|s| s.split(';').map(str::trim).filter(|p| !p.is_empty()).map(str::to_string).collect())
+        .unwrap_or_default();
+    let mut rows = Vec::new();
+    for (i, p) in phases.into_iter().flatten().enumerate() {
+        let kind = p.get("kind").and_then(serde_json::Value::as_str).unwrap_or("");
+        let angle = p.get("angle").and_then(serde_json::Value::as_f64).unwrap_or(0.0).to_degrees();
+        // the law as the task writes it: the words after the kind and the angle
+        let from_task = pieces.get(i).and_then(|piece| {
+            let mut w = piece
+                .split_whitespace()
+                .skip(1)
+                .skip_while(|w| w.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-') || matches!(*w, "deg" | "°"));
+            let first = w.next()?;
+            Some(std::iter::once(first).chain(w).collect::<Vec<_>>().join(" "))
+        });
+        let law = from_task.or_else(|| p.get("law").and_then(serde_json::Value::as_str).map(str::to_string));
+        let law = match law {
+            Some(l) => law_words(cx, &l)?,
+            None => "—".to_string(),
+        };
+        rows.push(vec![
+            text(cx.w(&format!("phase_{kind}")).unwrap_or_else(|_| kind.to_string())),
+            text(given_number(cx, angle)?),
+            text(law),
+        ]);
+    }
+    Ok(rows)
+}
+
+/// A motion law's name in words with its parameters as written
+/// (`const-accel(u=1/3)` → «равноускоренный (u=1/3)»); a table law without
+/// its values.
+fn law_words(cx: &Ctx, law: &str) -> Result<String, NoteError> {
+    let (name, args) = match law.split_once('(') {
+        Some((n, a)) => (n.trim(), a.trim_end().trim_end_matches(')').trim()),
+        None => (law.trim(), ""),
+    };
+    let Ok(w) = cx.w(&format!("law_{}", name.replace('-', "_"))) else {
+        return Ok(law.to_string());
+    };
+    Ok(if args.is_empty() || name == "table" {
+        w
+    } else {
+        format!("{w} ({})", args.replace('-', "\u{2212}"))
+    })
 }

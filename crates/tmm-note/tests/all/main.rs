@@ -3,6 +3,7 @@
 //! a module here: run one with `cargo test --release -p tmm-note --test all <module>::`.
 
 mod appendices;
+mod assignment_givens;
 mod checklist;
 #[path = "../common/mod.rs"]
 mod common;
