@@ -62,7 +62,9 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         // Mertsalov's construction (mertsalov.rs in tmm-linkage): T_II at the
         // mean speed, T_I = ΔT − T_II, its swing sizes the flywheel
         cx.para("dy_f_mertsalov", &[])?,
-        formula("T_\"II\"(phi) = (I_\"II\"(phi) omega_m^2) / 2, quad T_I (phi) = Delta T(phi) - T_\"II\"(phi), \\ Delta T_max = max T_I - min T_I"),
+        formula(
+            "T_\"II\"(phi) = (I_\"II\"(phi) omega_m^2) / 2, quad T_I (phi) = Delta T(phi) - T_\"II\"(phi), \\ Delta T_max = max T_I - min T_I",
+        ),
         cx.para("where_mertsalov", &[])?,
         cx.para("dy_f_flywheel", &[])?,
         formula(&format!(
@@ -231,10 +233,7 @@ fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
     ) {
         // the swing of T_I read off its extremes (Fig. "energy of the
         // constant inertia": T_I max, T_I min)
-        if let (Some(emax), Some(emin)) = (
-            cx.opt("/dynamics/mertsalov/energy_max"),
-            cx.opt("/dynamics/mertsalov/energy_min"),
-        ) {
+        if let (Some(emax), Some(emin)) = (cx.opt("/dynamics/mertsalov/energy_max"), cx.opt("/dynamics/mertsalov/energy_min")) {
             let unit_j = cx.w("u_j")?;
             out.push(cx.para("calc_energy_swing", &[])?);
             out.push(Block::Calculation(Calculation::new(

@@ -28,6 +28,12 @@ fn blank_figures(note: &mut Note) {
             walk(&mut s.subsections);
         }
     }
+    // the assignment's scheme too (its figure stands outside the sections)
+    for b in &mut note.assignment {
+        if let Block::Figure { svg, .. } = b {
+            *svg = BLANK.to_string();
+        }
+    }
     walk(&mut note.sections);
     walk(&mut note.appendices);
 }

@@ -136,6 +136,9 @@ pub fn draw(task: &CamTask, panels: &[Panel], name: Option<&str>, lang: Language
     // panels' titles name each panel); one panel's title is the name
     let name = name.filter(|_| panels.len() > 1);
     let band = if name.is_some() { NAME_BAND } else { 0.0 };
+    // the band comes out of the panels' heights, so the drawing keeps its
+    // slots on the sheet
+    ph -= band / panels.len().max(1) as f64;
     let total = band + ph * panels.len().max(1) as f64;
     let mut c = Canvas::new(w, total);
     let mut lab = Placer::new(w, total);
