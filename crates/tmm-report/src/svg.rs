@@ -461,6 +461,28 @@ impl Canvas {
         self.segs.count((r.x0, r.y0, r.x1, r.y1), |s| r.cuts(s.0, s.1)) + self.boxes.iter().filter(|b| b.overlaps(&r)).count()
     }
 
+    /// Put a centred rich label at `at` and reserve its ink box, given as
+    /// (left, right, above, below) of the anchor in mm; the box.
+    fn put_rich_reserved(&mut self, at: (f64, f64), text: &str, size_mm: f64, color: &str, ink: (f64, f64, f64, f64)) -> Rect {
+        let (bx0, bx1, up, down) = ink;
+        self.els.push(Element::Text {
+            at,
+            text: text.to_string(),
+            size: size_mm,
+            anchor: Anchor::Middle,
+            color: color.to_string(),
+            rich: true,
+        });
+        let r = Rect {
+            x0: at.0 + bx0,
+            y0: at.1 - up,
+            x1: at.0 + bx1,
+            y1: at.1 + down,
+        };
+        self.reserve(r);
+        r
+    }
+
     /// Keep a paper box free of labels placed later.
     pub fn reserve(&mut self, r: Rect) {
         self.boxes.push(r);
@@ -575,22 +597,7 @@ impl Canvas {
             }
         }
         let at = best.map_or(p, |b| b.2);
-        self.els.push(Element::Text {
-            at,
-            text: text.to_string(),
-            size: size_mm,
-            anchor: Anchor::Middle,
-            color: color.to_string(),
-            rich: true,
-        });
-        let r = Rect {
-            x0: at.0 + bx0,
-            y0: at.1 - up,
-            x1: at.0 + bx1,
-            y1: at.1 + down,
-        };
-        self.reserve(r);
-        r
+        self.put_rich_reserved(at, text, size_mm, color, (bx0, bx1, up, down))
     }
 
     /// A label that names the segment `a`–`b` (world points; an arm of
@@ -683,22 +690,7 @@ impl Canvas {
         }
         let (cx, cy) = found?;
         let at = (cx - 0.5 * (bx0 + bx1), cy + 0.5 * (up - down));
-        self.els.push(Element::Text {
-            at,
-            text: text.to_string(),
-            size: size_mm,
-            anchor: Anchor::Middle,
-            color: color.to_string(),
-            rich: true,
-        });
-        let r = Rect {
-            x0: at.0 + bx0,
-            y0: at.1 - up,
-            x1: at.0 + bx1,
-            y1: at.1 + down,
-        };
-        self.reserve(r);
-        Some(r)
+        Some(self.put_rich_reserved(at, text, size_mm, color, (bx0, bx1, up, down)))
     }
 
     /// [`Canvas::label`], but when no place within 17 mm of the point is
