@@ -14,12 +14,12 @@ use tmm_report::run::run_task;
 use super::fixtures::{sheet_svgs, task};
 use super::pdf_read::{MM_PER_PT, Read, read};
 
-/// The SVG of every figure of the note, in order.
-fn note_svgs(note: &Note) -> Vec<&str> {
+/// The caption and the SVG of every figure of the note, in order.
+fn note_svgs(note: &Note) -> Vec<(&str, &str)> {
     super::fixtures::note_figures(note)
         .into_iter()
         .filter_map(|b| match b {
-            Block::Figure { svg, .. } => Some(svg.as_str()),
+            Block::Figure { caption, svg, .. } => Some((caption.as_str(), svg.as_str())),
             _ => None,
         })
         .collect()
@@ -93,8 +93,12 @@ fn drawings(name: &str) -> (Vec<Printed>, serde_json::Value) {
     let svgs = note_svgs(&note);
     assert_eq!(r.forms.len(), svgs.len(), "{name}: one drawing per figure");
     let mut out = Vec::new();
-    for (i, f) in r.forms.iter().enumerate() {
-        out.push(printed(&r, f.clip, format!("{name}: note figure {} (page {})", i + 1, f.page)));
+    for (i, (f, (caption, _))) in r.forms.iter().zip(&svgs).enumerate() {
+        // a note's figure leaves its name to the caption under it: the
+        // caption tells what the drawing is, the drawing its scale
+        let mut p = printed(&r, f.clip, format!("{name}: note figure {} (page {})", i + 1, f.page));
+        p.text = format!("{caption} {}", p.text);
+        out.push(p);
     }
     for (path, svg) in sheet_svgs(&run) {
         let pdf = tmm_note::sheet_pdf(svg).expect("the sheet typesets");
@@ -258,12 +262,21 @@ fn crank(report: &serde_json::Value) -> Option<(f64, f64, f64)> {
 fn probe(p: &Printed, report: &serde_json::Value) -> Option<(&'static str, f64, Option<f64>)> {
     let t = p.text.as_str();
     let scale = printed_scale(t);
-    if t.contains("Кинематическая схема") {
+    // the assignment's scheme: the mechanism the task is about
+    let scheme = t.starts_with("Схема механизма");
+    if let Some(l) = f(report, &["cylinder", "geometry", "l_AB"])
+        && (scheme || t.starts_with("Механизм "))
+    {
+        // a lever driven by an oscillating cylinder: the lever A–B
+        let want = l * 1000.0 * scale?;
+        return Some(("the lever A–B between its pair centres", want, nearest_segment(p, want)));
+    }
+    if t.contains("Кинематическая схема") || scheme && report.get("linkage").is_some() {
         let (l, _, _) = crank(report)?;
         let want = l * 1000.0 * scale?;
         return Some(("the crank between its pair centres", want, nearest_segment(p, want)));
     }
-    if t.contains("Синтез механизма") {
+    if t.contains("Синтез механизма") || t.starts_with("Построение схемы механизма") {
         let want = f(report, &["synthesis", "lengths", "AB"])? * 1000.0 * scale?;
         return Some(("the connecting rod A–B in an extreme position", want, nearest_segment(p, want)));
     }
@@ -289,26 +302,38 @@ fn probe(p: &Printed, report: &serde_json::Value) -> Option<(&'static str, f64, 
         let want = rb * f(report, &["gear", "alpha_w"])?.tan() * 1000.0 * scale?;
         return Some(("the line of action N1–N2 = (rb2 ± rb1)·tg αw", want, nearest_segment(p, want)));
     }
-    if t.contains("Планетарный механизм") {
+    if t.contains("Планетарный механизм") || t.starts_with("Схема планетарной передачи") || scheme && report.get("planetary").is_some()
+    {
         let want = 2.0 * f(report, &["planetary", "best", "centre_distance"])? * 1000.0 * scale?;
         return Some(("the carrier between the two planets' axes, 2·aw", want, nearest_segment(p, want)));
     }
-    if t.contains("основной шайбы") {
+    if t.contains("основной шайбы") || scheme && report.get("cam").is_some() {
         let want = 2.0 * f(report, &["cam", "r0"])? * 1000.0 * scale?;
         return Some(("the base circle's diameter 2·r0", want, nearest_loop(p, want)));
     }
-    if t.contains("область центра кулачка") {
+    if t.contains("область центра кулачка") || t.starts_with("Определение минимального радиуса кулачка")
+    {
         let want = f(report, &["cam", "r0"])? / printed_mu(t, "s", None)?;
         return Some(("O–B₀ = r0 at μs", want, nearest_segment(p, want)));
     }
-    if t.starts_with("Группа ") && t.contains("план сил") {
-        // the reactions at the group's outer pairs close its force plan
-        let pairs = &t[t.find("(пары:")? + "(пары:".len()..];
-        let pairs: Vec<&str> = pairs[..pairs.find(')')?].split(',').map(str::trim).collect();
+    let group = t.starts_with("Группа ") && t.contains("план сил");
+    if group || t.starts_with("Силы, действующие на группу Ассура") {
+        // the reactions at the group's outer pairs close its force plan;
+        // the note draws the first group (`forces/group-1.svg`)
+        let pairs: Vec<String> = if group {
+            let pairs = &t[t.find("(пары:")? + "(пары:".len()..];
+            pairs[..pairs.find(')')?].split(',').map(|p| p.trim().to_string()).collect()
+        } else {
+            report["linkage"]["structure"]["groups"][0]["pairs"]
+                .as_array()?
+                .iter()
+                .filter_map(|p| p.as_str().map(str::to_string))
+                .collect()
+        };
         let r = report["forces"]["detail"]["reactions"]
             .as_array()?
             .iter()
-            .find(|r| r["pair"].as_str().is_some_and(|p| pairs.contains(&p)))?;
+            .find(|r| r["pair"].as_str().is_some_and(|p| pairs.iter().any(|q| q == p)))?;
         let want = r["magnitude"].as_f64()? / printed_mu(t, "F", Some("в плане сил"))?;
         return Some((
             "a reaction at one of the group's pairs at μF (the force plan)",
@@ -316,7 +341,8 @@ fn probe(p: &Printed, report: &serde_json::Value) -> Option<(&'static str, f64, 
             nearest_segment(p, want),
         ));
     }
-    if t.starts_with("Начальное звено") {
+    if t.starts_with("Начальное звено") || t.starts_with("Силы, действующие на начальное звено")
+    {
         let want = f(report, &["forces", "detail", "balancing_force"])?.abs() / printed_mu(t, "F", Some("в плане сил"))?;
         return Some(("the balancing force Pb at μF (the force plan)", want, nearest_segment(p, want)));
     }
@@ -338,6 +364,20 @@ fn probe(p: &Printed, report: &serde_json::Value) -> Option<(&'static str, f64, 
             .fold((f64::MAX, f64::MIN), |b, v| (b.0.min(v), b.1.max(v)));
         let want = (hi - lo) / printed_mu(t, "ΔT", None)?;
         return Some(("the curve's height ΔT_max − ΔT_min at μΔT", want, widest_curve(p).map(|c| c.1)));
+    }
+    if let Some(travel) = f(report, &["cylinder", "geometry", "travel"])
+        && let Some(mu_s) = printed_mu(t, "s", None)
+        && !t.starts_with("Время")
+    {
+        // a graph over the piston's travel s: the whole travel along s
+        // (t(s) stops a sample short of an end reached only
+        // asymptotically; its axis is the others' μs)
+        let want = travel / mu_s;
+        return Some((
+            "the curve's length along s: the piston's travel at μs",
+            want,
+            widest_curve(p).map(|c| c.0),
+        ));
     }
     let mu_phi = printed_mu(t, "φ", None)?;
     let cycle = if t.contains("толкателя") || t.contains("Угол давления за цикл") {
@@ -380,8 +420,12 @@ fn check(names: &[&str]) {
                     measured += 1;
                 }
                 Some((what, want, None)) => bad.push(format!("{}: {what}: nothing drawn to measure ({want:.3} mm expected)", p.name)),
+                // a drawing that prints a length scale is measured
+                None if printed_scale(&p.text).is_some() => {
+                    bad.push(format!("{}: prints a scale but has no length to measure — \"{title}\"", p.name))
+                }
                 None => eprintln!(
-                    "{}: no scale printed (graduated axes or a scheme without scale) — \"{title}\"",
+                    "{}: no length scale printed (graduated axes or a scheme without scale) — \"{title}\"",
                     p.name
                 ),
             }
