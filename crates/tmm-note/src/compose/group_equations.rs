@@ -63,6 +63,8 @@ struct Symbols {
     omegas: Vec<String>,
     epsilons: Vec<String>,
     lengths: Vec<String>,
+    /// the input slider's given speed v or acceleration a along its guide
+    slider: Vec<String>,
 }
 
 fn add(list: &mut Vec<String>, s: &str) {
@@ -399,15 +401,15 @@ fn strip_link(k: &str) -> String {
     k.split('_').next().unwrap_or(k).to_string()
 }
 
-/// The equations of the crank-driven mechanism: the input link (its axis
-/// `axis` on the frame, its other joints), then every Assur group.
-pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
+/// The equations of a mechanism: the input link's lines written by
+/// `input` (`None` if it has none), then every Assur group's.
+fn equations(cx: &Ctx, input: impl FnOnce(&mut Builder, &[Pair], &str) -> Option<()>) -> Option<Equations> {
     let pairs = read_pairs(cx);
     let groups = read_groups(cx, &pairs);
     if groups.is_empty() {
         return None;
     }
-    let input = cx.s("/linkage/input/link")?.to_string();
+    let link = cx.s("/linkage/input/link")?.to_string();
     let still = not_turning(&pairs);
     let mut b = Builder {
         still: &still,
@@ -418,47 +420,7 @@ pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
         a_lines: Vec::new(),
         m_lines: Vec::new(),
     };
-    // the input link's moving joints (A of OA; A and D of the engine's crank)
-    let mut joints: Vec<String> = Vec::new();
-    for p in pairs.iter().filter(|p| p.links.contains(&input) && p.point != axis) {
-        add(&mut joints, &p.point);
-    }
-    if joints.is_empty() {
-        return None;
-    }
-    let eps = cx.opt("/linkage/input/epsilon").unwrap_or(0.0);
-    let one = link_no(&input);
-    let omega = format!("omega_{one}");
-    let am = math_name(axis);
-    let (mut v, mut a, mut m) = (Vec::new(), Vec::new(), Vec::new());
-    add(&mut b.v.omegas, &omega);
-    add(&mut b.m.omegas, &omega);
-    for j in &joints {
-        let jm = math_name(j);
-        let len = format!("l_({am} {jm})");
-        let rel = two(&jm, &am);
-        add(&mut b.v.points, &jm);
-        add(&mut b.v.lengths, &len);
-        add(&mut b.a.points, &jm);
-        add(&mut b.a.normal, &rel);
-        add(&mut b.m.normal, &rel);
-        add(&mut b.m.lengths, &len);
-        v.push(format!("v_({jm}) = {omega} {len}"));
-        m.push(format!("a^n_({rel}) = {omega}^2 {len}"));
-        if eps.abs() > 1e-12 {
-            add(&mut b.a.tangential, &rel);
-            add(&mut b.m.tangential, &rel);
-            let e = format!("epsilon_{one}");
-            add(&mut b.m.epsilons, &e);
-            m.push(format!("a^tau_({rel}) = {e} {len}"));
-            a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"));
-        } else {
-            a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel})"));
-        }
-    }
-    b.v_lines.push(v.join(", quad "));
-    b.a_lines.push(a.join(", quad "));
-    b.m_lines.push(m.join(", quad "));
+    input(&mut b, &pairs, &link)?;
     for g in &groups {
         b.group(g);
     }
@@ -469,6 +431,96 @@ pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
         velocity_symbols: b.v,
         acceleration_symbols: b.a,
         magnitude_symbols: b.m,
+    })
+}
+
+/// The equations of the crank-driven mechanism: the input link (its axis
+/// `axis` on the frame, its other joints) turning at ω_1 (v_A = ω_1·l_OA,
+/// a^n_AO = ω_1²·l_OA, a^τ_AO = ε_1·l_OA), then every Assur group.
+pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
+    let eps = cx.opt("/linkage/input/epsilon").unwrap_or(0.0);
+    equations(cx, |b, pairs, input| {
+        // the input link's moving joints (A of OA; A and D of the engine's crank)
+        let mut joints: Vec<String> = Vec::new();
+        for p in pairs.iter().filter(|p| p.links.iter().any(|l| l == input) && p.point != axis) {
+            add(&mut joints, &p.point);
+        }
+        if joints.is_empty() {
+            return None;
+        }
+        let one = link_no(input);
+        let omega = format!("omega_{one}");
+        let am = math_name(axis);
+        let (mut v, mut a, mut m) = (Vec::new(), Vec::new(), Vec::new());
+        add(&mut b.v.omegas, &omega);
+        add(&mut b.m.omegas, &omega);
+        for j in &joints {
+            let jm = math_name(j);
+            let len = format!("l_({am} {jm})");
+            let rel = two(&jm, &am);
+            add(&mut b.v.points, &jm);
+            add(&mut b.v.lengths, &len);
+            add(&mut b.a.points, &jm);
+            add(&mut b.a.normal, &rel);
+            add(&mut b.m.normal, &rel);
+            add(&mut b.m.lengths, &len);
+            v.push(format!("v_({jm}) = {omega} {len}"));
+            m.push(format!("a^n_({rel}) = {omega}^2 {len}"));
+            if eps.abs() > 1e-12 {
+                add(&mut b.a.tangential, &rel);
+                add(&mut b.m.tangential, &rel);
+                let e = format!("epsilon_{one}");
+                add(&mut b.m.epsilons, &e);
+                m.push(format!("a^tau_({rel}) = {e} {len}"));
+                a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"));
+            } else {
+                a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel})"));
+            }
+        }
+        b.v_lines.push(v.join(", quad "));
+        b.a_lines.push(a.join(", quad "));
+        b.m_lines.push(m.join(", quad "));
+        Some(())
+    })
+}
+
+/// The equations of a mechanism driven by a slider on a fixed guide
+/// (ведущий ползун): the slider moves along its guide with the given speed
+/// v and acceleration a, and so does each of its joints (a body that does
+/// not turn: every point has the same velocity and acceleration,
+/// Артоболевский 1988, § 13): v_B = v, a_B = a, no ω·l; then every Assur
+/// group.
+pub(crate) fn slider_equations(cx: &Ctx) -> Option<Equations> {
+    let accel = cx.opt("/linkage/input/acceleration").unwrap_or(0.0);
+    equations(cx, |b, pairs, input| {
+        let mine = || pairs.iter().filter(|p| p.links.iter().any(|l| l == input));
+        // the slider's joints with the driven links, else its guide's point
+        let mut joints: Vec<String> = Vec::new();
+        for p in mine().filter(|p| !p.sliding) {
+            add(&mut joints, &p.point);
+        }
+        if joints.is_empty() {
+            for p in mine() {
+                add(&mut joints, &p.point);
+            }
+        }
+        if joints.is_empty() {
+            return None;
+        }
+        let (mut v, mut a) = (Vec::new(), Vec::new());
+        add(&mut b.v.slider, "v");
+        add(&mut b.a.slider, "a");
+        let a_value = if accel.abs() > 1e-12 { "a" } else { "a = 0" };
+        for j in &joints {
+            let jm = math_name(j);
+            add(&mut b.v.points, &jm);
+            add(&mut b.a.points, &jm);
+            v.push(format!("v_({jm}) = v"));
+            a.push(format!("a_({jm}) = {a_value}"));
+        }
+        b.v_lines.push(v.join(", quad "));
+        b.a_lines.push(a.join(", quad "));
+        Some(())
     })
 }
 
@@ -523,6 +575,7 @@ impl Equations {
                 (list("v_", &s.sliding), "eqw_v_sliding", String::new()),
                 (list("", &s.omegas), "eqw_omega_input", String::new()),
                 (list("", &s.lengths), "eqw_lengths", String::new()),
+                (list("", &s.slider), "eqw_v_slider", String::new()),
             ],
         )
     }
@@ -539,6 +592,7 @@ impl Equations {
                 (list("a^tau_", &s.tangential), "eqw_a_tangential", String::new()),
                 (list("a^k_", &s.coriolis), "eqw_a_coriolis", String::new()),
                 (list("a^r_", &s.relative), "eqw_a_relative", String::new()),
+                (list("", &s.slider), "eqw_a_slider", String::new()),
             ],
         )
     }

@@ -4,6 +4,7 @@
 
 use serde_json::Value;
 
+use super::assignment::as_given;
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
@@ -30,18 +31,21 @@ const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 const VELOCITIES: &[&str] = &["v_mean", "v_cut"];
 
 /// One given value printed with its unit: angles in degrees, ratios bare,
-/// everything else a length in mm.
+/// everything else a length in mm; its digits and unit as the task's
+/// `[synthesis]` writes them ([`as_given`]).
 fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
     // the numbered angles of a function generator: phi1, psi2 …
     let stem = key.trim_end_matches(|c: char| c.is_ascii_digit());
+    // as the task writes it (K_v = 1,1065, not 1,107; 380 мм, not 380,0 мм)
+    let task = &["synthesis"];
     if ANGLES.contains(&key) || ANGLES.contains(&stem) || is_angle_name(key) {
-        cx.q(v.to_degrees(), "u_deg")
+        as_given(cx, task, v.to_degrees(), "u_deg")
     } else if VELOCITIES.contains(&key) {
-        cx.q(v, "u_m_s")
+        as_given(cx, task, v, "u_m_s")
     } else if PURE.contains(&key) || key == "lambda_e" {
-        cx.q(v, "")
+        as_given(cx, task, v, "")
     } else {
-        cx.q(v * 1000.0, "u_mm")
+        as_given(cx, task, v * 1000.0, "u_mm")
     }
 }
 
