@@ -199,12 +199,41 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
+    /// A point whose velocity and acceleration the plans find (v_B, a_B).
+    fn point(&mut self, p: &str) {
+        add(&mut self.v.points, p);
+        add(&mut self.a.points, p);
+    }
+
+    /// A point of a link at a pair's place (v_B3, a_B3).
+    fn coincident(&mut self, p: &str) {
+        add(&mut self.v.coincident, p);
+        add(&mut self.a.coincident, p);
+    }
+
+    /// The Coriolis acceleration of a sliding `rel` along the guide `guide`
+    /// that turns: a^k = 2·ω·v_r (Артоболевский 1988, § 15).
+    fn coriolis(&mut self, rel: &str, guide: &str, ex: &mut Extra) {
+        add(&mut self.a.coriolis, rel);
+        let omega = format!("omega_{}", link_no(guide));
+        add(&mut self.m.omegas, &omega);
+        add(&mut self.m.coriolis, rel);
+        add(&mut self.m.sliding, rel);
+        ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+    }
+
+    /// A sliding along a guide: its velocity v_KKo and relative
+    /// acceleration a^r_KKo.
+    fn slide(&mut self, rel: &str) {
+        add(&mut self.v.sliding, rel);
+        add(&mut self.a.relative, rel);
+    }
+
     /// One side through a turning pair at `x` of link `g`: the unknown
     /// point `k` (math) turns about `x` with `g`.
     fn turning(&mut self, k: &str, x: &str, g: &str, on_frame: bool, ex: &mut Extra) -> (String, String) {
         let xm = math_name(x);
-        add(&mut self.v.points, &xm);
-        add(&mut self.a.points, &xm);
+        self.point(&xm);
         let rel = two(k, &xm);
         add(&mut self.v.rotation, &rel);
         add(&mut self.a.normal, &rel);
@@ -229,11 +258,9 @@ impl Builder<'_> {
     /// `slider` against the coincident point of the guide `guide` at `at`.
     fn sliding(&mut self, k: &str, at: &str, guide: &str, ex: &mut Extra) -> (String, String) {
         let ko = on(at, guide);
-        add(&mut self.v.coincident, &ko);
-        add(&mut self.a.coincident, &ko);
+        self.coincident(&ko);
         let rel = two(k, &ko);
-        add(&mut self.v.sliding, &rel);
-        add(&mut self.a.relative, &rel);
+        self.slide(&rel);
         if guide == "frame" {
             ex.v.push(format!("v_({ko}) = 0"));
             ex.a.push(format!("a_({ko}) = 0"));
@@ -241,12 +268,7 @@ impl Builder<'_> {
         let acc = if self.still.contains(guide) {
             format!("arrow(a)_({ko}) + arrow(a)^r_({rel})")
         } else {
-            add(&mut self.a.coriolis, &rel);
-            let omega = format!("omega_{}", link_no(guide));
-            add(&mut self.m.omegas, &omega);
-            add(&mut self.m.coriolis, &rel);
-            add(&mut self.m.sliding, &rel);
-            ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+            self.coriolis(&rel, guide, ex);
             format!("arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
         };
         (format!("arrow(v)_({ko}) + arrow(v)_({rel})"), acc)
@@ -279,8 +301,7 @@ impl Builder<'_> {
         match inner.as_slice() {
             [k] if g.class == 2 && g.links.len() == 2 && !k.sliding => {
                 let km = math_name(&k.point);
-                add(&mut self.v.points, &km);
-                add(&mut self.a.points, &km);
+                self.point(&km);
                 let (mut ex, mut sides) = (Extra::default(), Vec::new());
                 for link in &g.links {
                     let Some((p, other)) = g.outer(link) else { continue };
@@ -299,23 +320,15 @@ impl Builder<'_> {
                 let a = g.links.iter().find(|l| at_k(l)).unwrap_or(&g.links[0]).clone();
                 let b = g.links.iter().find(|l| **l != a).cloned().unwrap_or_default();
                 let (ka, kb) = (on(&k.point, &a), on(&k.point, &b));
-                add(&mut self.v.coincident, &ka);
-                add(&mut self.v.coincident, &kb);
-                add(&mut self.a.coincident, &ka);
-                add(&mut self.a.coincident, &kb);
+                self.coincident(&ka);
+                self.coincident(&kb);
                 let rel = two(&kb, &ka);
-                add(&mut self.v.sliding, &rel);
-                add(&mut self.a.relative, &rel);
+                self.slide(&rel);
                 let mut ex = Extra::default();
                 let first_a = if self.still.contains(&b) {
                     format!("arrow(a)_({ka}) + arrow(a)^r_({rel})")
                 } else {
-                    add(&mut self.a.coriolis, &rel);
-                    let omega = format!("omega_{}", link_no(&b));
-                    add(&mut self.m.omegas, &omega);
-                    add(&mut self.m.coriolis, &rel);
-                    add(&mut self.m.sliding, &rel);
-                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    self.coriolis(&rel, &b, &mut ex);
                     format!("arrow(a)_({ka}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
                 };
                 let mut sides = vec![(format!("arrow(v)_({ka}) + arrow(v)_({rel})"), first_a)];
@@ -347,18 +360,10 @@ impl Builder<'_> {
                 if p.sliding || p.point == first.point {
                     let (ko, kl) = (on(&p.point, &p.links[0]), on(&p.point, &p.links[1]));
                     let rel = two(&kl, &ko);
-                    for s in [&ko, &kl] {
-                        add(&mut self.v.coincident, s);
-                        add(&mut self.a.coincident, s);
-                    }
-                    add(&mut self.v.sliding, &rel);
-                    add(&mut self.a.coriolis, &rel);
-                    add(&mut self.a.relative, &rel);
-                    let omega = format!("omega_{}", link_no(&p.links[0]));
-                    add(&mut self.m.omegas, &omega);
-                    add(&mut self.m.coriolis, &rel);
-                    add(&mut self.m.sliding, &rel);
-                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    self.coincident(&ko);
+                    self.coincident(&kl);
+                    self.slide(&rel);
+                    self.coriolis(&rel, &p.links[0], &mut ex);
                     eqs.push(format!("arrow(v)_({kl}) = arrow(v)_({ko}) + arrow(v)_({rel})"));
                     aeqs.push(format!(
                         "arrow(a)_({kl}) = arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})"
@@ -366,10 +371,8 @@ impl Builder<'_> {
                     continue;
                 }
                 let pm = math_name(&p.point);
-                for s in [&q, &pm] {
-                    add(&mut self.v.points, s);
-                    add(&mut self.a.points, s);
-                }
+                self.point(&q);
+                self.point(&pm);
                 let rel = two(&pm, &q);
                 add(&mut self.v.rotation, &rel);
                 add(&mut self.a.normal, &rel);
@@ -513,8 +516,7 @@ pub(crate) fn slider_equations(cx: &Ctx) -> Option<Equations> {
         let a_value = if accel.abs() > 1e-12 { "a" } else { "a = 0" };
         for j in &joints {
             let jm = math_name(j);
-            add(&mut b.v.points, &jm);
-            add(&mut b.a.points, &jm);
+            b.point(&jm);
             v.push(format!("v_({jm}) = v"));
             a.push(format!("a_({jm}) = {a_value}"));
         }
