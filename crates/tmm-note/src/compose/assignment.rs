@@ -367,7 +367,7 @@ fn task_fraction(v: &toml::Value) -> Option<f64> {
 /// (0.5 m is not 0.5 m/s; an angular speed ω is not a frequency n); a
 /// plain number (SI) matches any.
 fn task_value<'a>(cx: &Ctx<'a>, sections: &[&str], x: f64, unit: &str) -> Option<&'a toml::Value> {
-    fn find<'a>(v: &'a toml::Value, si: f64, kind: Kind) -> Option<&'a toml::Value> {
+    fn find(v: &toml::Value, si: f64, kind: Kind) -> Option<&toml::Value> {
         let same = |a: f64| (a - si).abs() <= 1e-9 * a.abs().max(si.abs()) || a == si;
         match v {
             toml::Value::Table(t) => t.values().find_map(|w| find(w, si, kind)),
