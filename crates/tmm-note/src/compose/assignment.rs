@@ -386,6 +386,30 @@ fn task_value<'a>(cx: &Ctx<'a>, sections: &[&str], x: f64, unit: &str) -> Option
     sections.iter().find_map(|s| find(cx.task.get(*s)?, x * scale, kind))
 }
 
+/// The digits a value of the task is printed with: as many as the task
+/// writes (four at least), four of a longer number (a computed value
+/// pasted into the task).
+fn value_digits(v: &toml::Value) -> u8 {
+    let written = match v {
+        toml::Value::String(t) => written_digits(t.trim()),
+        toml::Value::Float(f) => written_digits(&f.to_string()),
+        other => written_digits(&other.to_string()),
+    };
+    let digits = if written <= 6 {
+        written.max(usize::from(super::DIGITS))
+    } else {
+        usize::from(super::DIGITS)
+    };
+    u8::try_from(digits).unwrap_or(super::DIGITS)
+}
+
+/// The digits of the given `x` as [`as_given`] prints it, for a value
+/// computed against it (K_v = 1,1065 given: the synthesised 1,1065 with
+/// five digits too, not 1,107).
+pub(crate) fn given_precision(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> u8 {
+    task_value(cx, sections, x, unit).map_or(super::DIGITS, value_digits)
+}
+
 /// A given of the task printed as the task writes it: the value `x` (in
 /// the note's unit of the words key `unit`) found among the task's tables
 /// `sections` keeps the task's digits and unit (k = 1.1065 → «1,1065»,
@@ -399,17 +423,7 @@ pub(crate) fn as_given(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> Resul
         Some(v) if task_fraction(v).is_some() => Ok(v.as_str().unwrap_or("").trim().replace('-', "\u{2212}")),
         Some(v) if task_quantity(v).is_some_and(|(_, w)| !w.is_empty()) => quantity_text(cx, v),
         Some(v) => {
-            let written = match v {
-                toml::Value::String(t) => written_digits(t.trim()),
-                toml::Value::Float(f) => written_digits(&f.to_string()),
-                other => written_digits(&other.to_string()),
-            };
-            let digits = if written <= 6 {
-                written.max(usize::from(super::DIGITS))
-            } else {
-                usize::from(super::DIGITS)
-            };
-            let mut s = given_digits(cx, x, u8::try_from(digits).unwrap_or(super::DIGITS))?;
+            let mut s = given_digits(cx, x, value_digits(v))?;
             crate::number::push_unit(&mut s, &u);
             Ok(s)
         }

@@ -211,10 +211,18 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     ];
     // the analysed mechanism (the task's lengths) against the synthesised one
     let mut conclusions = conclusions;
-    if let (Some(kv), Some(ks)) = (kv, cx.opt("/synthesis/check/k"))
-        && cx.q(kv, "")? != cx.q(ks, "")?
-    {
-        conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[cx.q(ks, "")?, cx.q(kv, "")?])?);
+    // with the given K_v's digits, or the first more that tell the two
+    // apart (1,10650 synthesised, 1,10647 analysed), up to seven
+    if let (Some(kv), Some(ks), Some(given)) = (kv, cx.opt("/synthesis/check/k"), cx.opt("/synthesis/k")) {
+        let digits = super::assignment::given_precision(cx, &["synthesis"], given, "");
+        let f = |x: f64, d: u8| crate::number::format_number(x, d, cx.lang).map(|n| n.to_string());
+        for d in digits..=digits.max(7) {
+            let (s, a) = (f(ks, d)?, f(kv, d)?);
+            if s != a {
+                conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[s, a])?);
+                break;
+            }
+        }
     }
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
 }

@@ -154,7 +154,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let k = cx.v("/synthesis/k")?;
     let statement = vec![
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
-        cx.para("sy_given", &[cx.q(k, "")?])?,
+        cx.para("sy_given", &[as_given(cx, &["synthesis"], k, "")?])?,
         cx.quantities("tab_given", given_rows(cx)?)?,
         // the textbook's П3: the crank pivot sees the chord between the
         // extreme positions of B at θ, one equation for the direction of OC
@@ -194,17 +194,20 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if !found.is_empty() {
         results.push(cx.quantities("tab_synth_found", found)?);
     }
+    // the K_v reproduced, with the given's digits (1,1065 against 1,1065)
+    let check = cx.v("/synthesis/check/k")?;
+    let digits = super::assignment::given_precision(cx, &["synthesis"], k, "");
+    let k_check = crate::number::format_number(crate::number::zero_noise(check, 0.0), digits, cx.lang)?.to_string();
     let mut q = vec![
         (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
-        (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
+        (cx.w("q_k_check")?, k_check.clone()),
     ];
     q.extend(angle_checks(cx)?);
     results.push(cx.quantities("tab_synth_results", q)?);
     results.extend(figures(cx)?);
-    let check = cx.v("/synthesis/check/k")?;
     let conclusions = vec![cx.para(
         "sy_conclusion",
-        &[cx.q(check, "")?, cx.q(k, "")?, cx.relative(((check - k) / k).abs())?],
+        &[k_check, as_given(cx, &["synthesis"], k, "")?, cx.relative(((check - k) / k).abs())?],
     )?];
     Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
 }
