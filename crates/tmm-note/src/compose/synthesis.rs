@@ -197,7 +197,13 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     // the K_v reproduced, with the given's digits (1,1065 against 1,1065)
     let check = cx.v("/synthesis/check/k")?;
     let digits = super::assignment::given_precision(cx, &["synthesis"], k, "");
-    let k_check = crate::number::format_number(crate::number::zero_noise(check, 0.0), digits, cx.lang)?.to_string();
+    let f = |x: f64| crate::number::format_number(crate::number::zero_noise(x, 0.0), digits, cx.lang).map(|n| n.to_string());
+    // met: written as the given is (1,28 for 1,28, not 1,280)
+    let k_check = if f(check)? == f(k)? {
+        as_given(cx, &["synthesis"], k, "")?
+    } else {
+        f(check)?
+    };
     let mut q = vec![
         (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
         (cx.w("q_k_check")?, k_check.clone()),
