@@ -435,6 +435,22 @@ pub(crate) fn as_given(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> Resul
     }
 }
 
+/// The task's `[section]`'s `key` as written where it is a length
+/// (`stroke = "80 mm"` of an oscillating follower: the arc its roller's
+/// centre travels, given beside the swing the note computes from it).
+pub(crate) fn task_length_text(cx: &Ctx, section: &str, key: &str) -> Result<Option<String>, NoteError> {
+    let Some(v) = cx.task.get(section).and_then(|s| s.get(key)) else {
+        return Ok(None);
+    };
+    let length = task_quantity(v)
+        .and_then(|(_, u)| task_unit_si(&u))
+        .is_some_and(|(_, k)| k == Kind::Length);
+    if !length {
+        return Ok(None);
+    }
+    quantity_text(cx, v).map(Some)
+}
+
 /// A length of the task file in mm, as a number (`"120 mm"`, `"0.12 m"`).
 fn task_mm(v: &toml::Value) -> Option<f64> {
     let (value, unit) = task_quantity(v)?;

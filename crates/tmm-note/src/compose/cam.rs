@@ -18,6 +18,18 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
         ),
         speed_row(cx)?,
     ];
+    // the arm and the roller where the task gives them (l = 150 мм, r_r = 20 мм)
+    let task = |key: &str| cx.task.get("cam").and_then(|c| c.get(key)).is_some();
+    if task("arm")
+        && let Some(arm) = cx.opt("/cam/arm")
+    {
+        rows.insert(2, (cx.w("q_arm")?, as_given(cx, CAM, arm * 1000.0, "u_mm")?));
+    }
+    if task("roller")
+        && let Some(r) = cx.opt("/cam/roller_radius")
+    {
+        rows.push((cx.w("q_roller")?, as_given(cx, CAM, r * 1000.0, "u_mm")?));
+    }
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_rise") {
         rows.push((cx.w("q_limit_rise")?, as_given(cx, CAM, p.to_degrees(), "u_deg")?));
     }
@@ -60,7 +72,12 @@ fn oscillating(cx: &Ctx) -> bool {
 /// The follower's stroke: a length in mm, or the arm's swing in degrees.
 fn stroke(cx: &Ctx) -> Result<String, NoteError> {
     if oscillating(cx) {
-        as_given(cx, CAM, cx.v("/cam/stroke")?.to_degrees(), "u_deg")
+        let swing = as_given(cx, CAM, cx.v("/cam/stroke")?.to_degrees(), "u_deg")?;
+        // the task's arc (80 мм) beside the swing found from it
+        match super::assignment::task_length_text(cx, "cam", "stroke")? {
+            Some(arc) => cx.fill("cam_stroke_arc", &[swing, arc]),
+            None => Ok(swing),
+        }
     } else {
         as_given(cx, CAM, cx.v("/cam/stroke")? * 1000.0, "u_mm")
     }

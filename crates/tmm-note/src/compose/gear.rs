@@ -28,6 +28,11 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
         (cx.w("q_ha")?, as_given(cx, GEAR, cx.v("/gear/rack/ha")?, "")?),
         (cx.w("q_c")?, as_given(cx, GEAR, cx.v("/gear/rack/c")?, "")?),
     ];
+    // a centre distance the task gives (a_w = 560 мм)
+    let mut rows = rows;
+    if cx.task.get("gear").and_then(|g| g.get("aw")).is_some() {
+        rows.push((cx.w("q_aw")?, as_given(cx, GEAR, cx.v("/gear/aw")? * 1000.0, "u_mm")?));
+    }
     Ok(rows)
 }
 

@@ -273,20 +273,17 @@ fn written(v: &toml::Value, lang: Lang) -> Option<String> {
 /// with its text: every number of `[synthesis]`, `[cam]`, `[gear]`,
 /// `[planetary]`, `[cylinder]`, δ of `[dynamics]` and the input's speed,
 /// position and travel of `[linkage]`. Left out: the values the assignment
-/// does not state yet — a cam's arm, roller and profile margins, the gear
-/// pair's minimal tip thickness and given centre distance, a few
+/// does not state yet — a cam's profile margins, the gear pair's minimal
+/// tip thickness, a few
 /// synthesis kinds' auxiliary data (the design position, the frame's
 /// angle, the knee press' horizontal, the six-bar's pivot line), the
 /// planetary search's tolerance — and the dynamics' number of integration
 /// points (not a given of the machine).
 fn task_givens(task: &toml::Table) -> Vec<(String, &toml::Value)> {
     const NOT_STATED: &[&str] = &[
-        "cam.arm",
-        "cam.roller",
         "cam.min_curvature",
         "cam.face_margin",
         "gear.sa_min",
-        "gear.aw",
         "synthesis.design_position",
         "synthesis.frame_angle",
         "synthesis.horizontal",
@@ -489,6 +486,8 @@ fn the_assignment_states_every_given_of_its_task_with_the_scheme() {
         example("synth-seed-003-six-bar.toml"),
         example("cam-oscillating-roller.toml"),
         example("gear-seed001.toml"),
+        example("gear-seed003.toml"),
+        example("textbook/p6-cam-oscillating.toml"),
     ];
     let mut faults = Vec::new();
     for task in &tasks {
