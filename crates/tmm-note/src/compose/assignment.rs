@@ -30,9 +30,12 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             b.push(cx.table("assign_links", &[("col_link", ""), ("col_length", "u_mm")], rows)?);
         }
         if cx.s("/linkage/input/kind") == Some("slider") {
-            let mm = |ptr: &str| -> Result<String, NoteError> { cx.q(cx.v(ptr)? * 1e3, "u_mm") };
+            let mm = |ptr: &str| -> Result<String, NoteError> { as_given(cx, &["linkage"], cx.v(ptr)? * 1e3, "u_mm") };
             let q = vec![
-                (cx.w("q_slider_speed")?, cx.q(cx.v("/linkage/input/speed")?, "u_m_s")?),
+                (
+                    cx.w("q_slider_speed")?,
+                    as_given(cx, &["linkage"], cx.v("/linkage/input/speed")?, "u_m_s")?,
+                ),
                 (cx.w("q_slider_from")?, mm("/linkage/input/travel/from")?),
                 (cx.w("q_slider_to")?, mm("/linkage/input/travel/to")?),
                 (cx.w("q_slider_position")?, mm("/linkage/plans/s")?),
@@ -41,10 +44,10 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         } else {
             let omega = cx.v("/linkage/input/omega")?;
             let mut q = vec![
-                (cx.w("q_omega1")?, cx.q(omega, "u_rad_s")?),
+                (cx.w("q_omega1")?, as_given(cx, &["linkage"], omega, "u_rad_s")?),
                 (
                     cx.w("q_n1")?,
-                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                    as_given(cx, &["linkage"], omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
                 ),
             ];
             // the time of one turn T = 60/n1
@@ -53,7 +56,7 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             }
             q.push((
                 cx.w("q_position")?,
-                given_with_unit(cx, cx.v("/linkage/plans/phi")?.to_degrees(), "u_deg")?,
+                as_given(cx, &["linkage"], cx.v("/linkage/plans/phi")?.to_degrees(), "u_deg")?,
             ));
             b.push(cx.quantities("assign_linkage", q)?);
         }
@@ -81,7 +84,10 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         b.push(cx.quantities(
             "assign_dynamics",
             vec![
-                (cx.w("q_delta")?, cx.given("/dynamics/delta_requested", 1.0, "")?),
+                (
+                    cx.w("q_delta")?,
+                    as_given(cx, &["dynamics"], cx.v("/dynamics/delta_requested")?, "")?,
+                ),
                 (cx.w("q_omega_m")?, cx.qv("/dynamics/omega_nominal", 1.0, "u_rad_s")?),
             ],
         )?);
@@ -94,16 +100,20 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             b.push(p);
         }
         let omega = cx.v("/planetary/request/omega1")?;
+        let pl = &["planetary"];
         b.push(cx.quantities(
             "assign_planetary",
             vec![
-                (cx.w("q_ratio")?, cx.given("/planetary/request/ratio", 1.0, "")?),
+                (cx.w("q_ratio")?, as_given(cx, pl, cx.v("/planetary/request/ratio")?, "")?),
                 (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
-                (cx.w("q_module")?, cx.given("/planetary/request/module", 1000.0, "u_mm")?),
-                (cx.w("q_omega_sun")?, cx.q(omega, "u_rad_s")?),
+                (
+                    cx.w("q_module")?,
+                    as_given(cx, pl, cx.v("/planetary/request/module")? * 1e3, "u_mm")?,
+                ),
+                (cx.w("q_omega_sun")?, as_given(cx, pl, omega, "u_rad_s")?),
                 (
                     cx.w("q_n_sun")?,
-                    given_with_unit(cx, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+                    as_given(cx, pl, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
                 ),
             ],
         )?);
@@ -174,13 +184,6 @@ fn written_digits(text: &str) -> usize {
     d.len().max(1)
 }
 
-/// [`given_number`] with the unit of the words key `unit`.
-fn given_with_unit(cx: &Ctx, value: f64, unit: &str) -> Result<String, NoteError> {
-    let mut s = given_number(cx, value)?;
-    crate::number::push_unit(&mut s, &cx.w(unit)?);
-    Ok(s)
-}
-
 /// A quantity of the task file (`"380 N m"`, `"10 kg/m"`, `0.1`) split
 /// into its number and its unit as written (spaces, `·` and `*` removed).
 fn task_quantity(v: &toml::Value) -> Option<(f64, String)> {
@@ -242,6 +245,7 @@ fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
         "deg" | "°" => (1.0, "u_deg"),
         "rpm" => (1.0, "u_rpm"),
         "rad/s" => (1.0, "u_rad_s"),
+        "m/s" => (1.0, "u_m_s"),
         _ => {
             let s = match v {
                 toml::Value::String(s) => s.clone(),
@@ -270,6 +274,181 @@ fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
     let u = if key.is_empty() { String::new() } else { cx.w(key)? };
     crate::number::push_unit(&mut s, &u);
     Ok(s)
+}
+
+/// The kind of a quantity, for matching a value to the task's text: a
+/// length, an angle, an angular speed ω (рад/с) and a frequency of rotation
+/// n (об/мин) apart, a speed, a mass, a force, a moment, an inertia, an
+/// acceleration, a pressure, a time; `Bare` a plain number (SI, any kind).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Bare,
+    Length,
+    Angle,
+    AngularSpeed,
+    Rotation,
+    Speed,
+    Mass,
+    Force,
+    Moment,
+    Inertia,
+    Acceleration,
+    Pressure,
+    Time,
+}
+
+/// The factor to SI and the kind of a unit as the task file writes it
+/// (`mm` → 10⁻³, `deg` → π/180, `rpm` → 1 for n; ГОСТ 8.417), `None` for a
+/// unit not known.
+fn task_unit_si(unit: &str) -> Option<(f64, Kind)> {
+    use std::f64::consts::PI;
+    Some(match unit {
+        "" => (1.0, Kind::Bare),
+        "m" => (1.0, Kind::Length),
+        "mm" => (1e-3, Kind::Length),
+        "cm" => (1e-2, Kind::Length),
+        "rad" => (1.0, Kind::Angle),
+        "deg" | "°" => (PI / 180.0, Kind::Angle),
+        "rad/s" => (1.0, Kind::AngularSpeed),
+        "rpm" => (1.0, Kind::Rotation),
+        "m/s" => (1.0, Kind::Speed),
+        "kg" => (1.0, Kind::Mass),
+        "t" => (1e3, Kind::Mass),
+        "N" => (1.0, Kind::Force),
+        "kN" => (1e3, Kind::Force),
+        "MN" => (1e6, Kind::Force),
+        "Nm" => (1.0, Kind::Moment),
+        "kNm" => (1e3, Kind::Moment),
+        "kgm^2" | "kgm2" | "kgm²" => (1.0, Kind::Inertia),
+        "m/s^2" | "m/s2" | "m/s²" => (1.0, Kind::Acceleration),
+        "Pa" => (1.0, Kind::Pressure),
+        "kPa" => (1e3, Kind::Pressure),
+        "MPa" => (1e6, Kind::Pressure),
+        "bar" => (1e5, Kind::Pressure),
+        "s" => (1.0, Kind::Time),
+        _ => return None,
+    })
+}
+
+/// The factor to SI and the kind of the note's unit of the words key `key`
+/// (`""`: a number without a unit, matched by a plain number only).
+fn note_unit_si(key: &str) -> Option<(f64, Kind)> {
+    use std::f64::consts::PI;
+    Some(match key {
+        "" => (1.0, Kind::Bare),
+        "cy_u_m" => (1.0, Kind::Length),
+        "u_mm" => (1e-3, Kind::Length),
+        "u_deg" => (PI / 180.0, Kind::Angle),
+        "u_rad_s" => (1.0, Kind::AngularSpeed),
+        "u_rpm" => (1.0, Kind::Rotation),
+        "u_m_s" => (1.0, Kind::Speed),
+        "u_kg" => (1.0, Kind::Mass),
+        "u_n" => (1.0, Kind::Force),
+        "u_nm" => (1.0, Kind::Moment),
+        "u_kgm2" => (1.0, Kind::Inertia),
+        "u_m_s2" => (1.0, Kind::Acceleration),
+        "u_mpa" => (1e6, Kind::Pressure),
+        "cy_u_s" => (1.0, Kind::Time),
+        _ => return None,
+    })
+}
+
+/// A fraction as the task writes a ratio (`"1/30"`, `"-1/20"`).
+fn task_fraction(v: &toml::Value) -> Option<f64> {
+    let (a, b) = v.as_str()?.trim().split_once('/')?;
+    let (a, b): (f64, f64) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
+    (b != 0.0).then(|| a / b).filter(|x| x.is_finite())
+}
+
+/// The task's own text of a given: among the values of the task's tables
+/// `sections` (their sub-tables and lists too), the one equal to `x` in the
+/// note's unit `unit` (to 10⁻⁹ of it), with its unit as written.
+/// A value of the task with a unit matches a value of the same kind only
+/// (0.5 m is not 0.5 m/s; an angular speed ω is not a frequency n); a
+/// plain number (SI) matches any.
+fn task_value<'a>(cx: &Ctx<'a>, sections: &[&str], x: f64, unit: &str) -> Option<&'a toml::Value> {
+    fn find(v: &toml::Value, si: f64, kind: Kind) -> Option<&toml::Value> {
+        let same = |a: f64| (a - si).abs() <= 1e-9 * a.abs().max(si.abs()) || a == si;
+        match v {
+            toml::Value::Table(t) => t.values().find_map(|w| find(w, si, kind)),
+            toml::Value::Array(a) => a.iter().find_map(|w| find(w, si, kind)),
+            _ => {
+                if kind == Kind::Bare && task_fraction(v).is_some_and(same) {
+                    return Some(v);
+                }
+                let (value, u) = task_quantity(v)?;
+                let (scale, k) = task_unit_si(&u)?;
+                ((k == kind || k == Kind::Bare) && same(value * scale)).then_some(v)
+            }
+        }
+    }
+    let (scale, kind) = note_unit_si(unit)?;
+    sections.iter().find_map(|s| find(cx.task.get(*s)?, x * scale, kind))
+}
+
+/// The digits a value of the task is printed with: as many as the task
+/// writes (four at least), four of a longer number (a computed value
+/// pasted into the task).
+fn value_digits(v: &toml::Value) -> u8 {
+    let written = match v {
+        toml::Value::String(t) => written_digits(t.trim()),
+        toml::Value::Float(f) => written_digits(&f.to_string()),
+        other => written_digits(&other.to_string()),
+    };
+    let digits = if written <= 6 {
+        written.max(usize::from(super::DIGITS))
+    } else {
+        usize::from(super::DIGITS)
+    };
+    u8::try_from(digits).unwrap_or(super::DIGITS)
+}
+
+/// The digits of the given `x` as [`as_given`] prints it, for a value
+/// computed against it (K_v = 1,1065 given: the synthesised 1,1065 with
+/// five digits too, not 1,107).
+pub(crate) fn given_precision(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> u8 {
+    task_value(cx, sections, x, unit).map_or(super::DIGITS, value_digits)
+}
+
+/// A given of the task printed as the task writes it: the value `x` (in
+/// the note's unit of the words key `unit`) found among the task's tables
+/// `sections` keeps the task's digits and unit (k = 1.1065 → «1,1065»,
+/// `"150 rpm"` → «150 об/мин», `"1/30"` as written); a plain number of
+/// the task keeps its digits in the note's unit; a value the task does not
+/// state (a default) prints with four digits at most, its trailing zeros
+/// dropped (20°, not 20,00°).
+pub(crate) fn as_given(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> Result<String, NoteError> {
+    let u = if unit.is_empty() { String::new() } else { cx.w(unit)? };
+    match task_value(cx, sections, x, unit) {
+        Some(v) if task_fraction(v).is_some() => Ok(v.as_str().unwrap_or("").trim().replace('-', "\u{2212}")),
+        Some(v) if task_quantity(v).is_some_and(|(_, w)| !w.is_empty()) => quantity_text(cx, v),
+        Some(v) => {
+            let mut s = given_digits(cx, x, value_digits(v))?;
+            crate::number::push_unit(&mut s, &u);
+            Ok(s)
+        }
+        None => {
+            let mut s = given_number(cx, x)?;
+            crate::number::push_unit(&mut s, &u);
+            Ok(s)
+        }
+    }
+}
+
+/// The task's `[section]`'s `key` as written where it is a length
+/// (`stroke = "80 mm"` of an oscillating follower: the arc its roller's
+/// centre travels, given beside the swing the note computes from it).
+pub(crate) fn task_length_text(cx: &Ctx, section: &str, key: &str) -> Result<Option<String>, NoteError> {
+    let Some(v) = cx.task.get(section).and_then(|s| s.get(key)) else {
+        return Ok(None);
+    };
+    let length = task_quantity(v)
+        .and_then(|(_, u)| task_unit_si(&u))
+        .is_some_and(|(_, k)| k == Kind::Length);
+    if !length {
+        return Ok(None);
+    }
+    quantity_text(cx, v).map(Some)
 }
 
 /// A length of the task file in mm, as a number (`"120 mm"`, `"0.12 m"`).

@@ -3,6 +3,7 @@
 
 use serde_json::Value;
 
+use super::assignment::as_given;
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
@@ -15,15 +16,51 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
             cx.w(if oscillating(cx) { "q_stroke_oscillating" } else { "q_stroke" })?,
             stroke(cx)?,
         ),
-        (cx.w("q_cam_omega")?, cx.qv("/cam/omega", 1.0, "u_rad_s")?),
+        speed_row(cx)?,
     ];
+    // the arm and the roller where the task gives them (l = 150 мм, r_r = 20 мм)
+    let task = |key: &str| cx.task.get("cam").and_then(|c| c.get(key)).is_some();
+    if task("arm")
+        && let Some(arm) = cx.opt("/cam/arm")
+    {
+        rows.insert(2, (cx.w("q_arm")?, as_given(cx, CAM, arm * 1000.0, "u_mm")?));
+    }
+    if task("roller")
+        && let Some(r) = cx.opt("/cam/roller_radius")
+    {
+        rows.push((cx.w("q_roller")?, as_given(cx, CAM, r * 1000.0, "u_mm")?));
+    }
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_rise") {
-        rows.push((cx.w("q_limit_rise")?, cx.q(p.to_degrees(), "u_deg")?));
+        rows.push((cx.w("q_limit_rise")?, as_given(cx, CAM, p.to_degrees(), "u_deg")?));
     }
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_return") {
-        rows.push((cx.w("q_limit_return")?, cx.q(p.to_degrees(), "u_deg")?));
+        rows.push((cx.w("q_limit_return")?, as_given(cx, CAM, p.to_degrees(), "u_deg")?));
     }
     Ok(rows)
+}
+
+/// The task's table of the cam's givens.
+const CAM: &[&str] = &["cam"];
+
+/// The cam's speed as the task gives it: its angular speed ω (рад/с), or
+/// its frequency of rotation n (об/мин) where the task writes `rpm`
+/// (n = 30·ω/π).
+fn speed_row(cx: &Ctx) -> Result<(String, String), NoteError> {
+    let omega = cx.v("/cam/omega")?;
+    let in_rpm = cx
+        .task
+        .get("cam")
+        .and_then(|c| c.get("omega"))
+        .and_then(toml::Value::as_str)
+        .is_some_and(|s| s.trim_end().ends_with("rpm"));
+    Ok(if in_rpm {
+        (
+            cx.w("q_cam_n")?,
+            as_given(cx, CAM, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+        )
+    } else {
+        (cx.w("q_cam_omega")?, as_given(cx, CAM, omega, "u_rad_s")?)
+    })
 }
 
 /// An oscillating follower (коромысло): its stroke is an angle, its place
@@ -35,9 +72,14 @@ fn oscillating(cx: &Ctx) -> bool {
 /// The follower's stroke: a length in mm, or the arm's swing in degrees.
 fn stroke(cx: &Ctx) -> Result<String, NoteError> {
     if oscillating(cx) {
-        cx.deg("/cam/stroke")
+        let swing = as_given(cx, CAM, cx.v("/cam/stroke")?.to_degrees(), "u_deg")?;
+        // the task's arc (80 мм) beside the swing found from it
+        match super::assignment::task_length_text(cx, "cam", "stroke")? {
+            Some(arc) => cx.fill("cam_stroke_arc", &[swing, arc]),
+            None => Ok(swing),
+        }
     } else {
-        cx.qv("/cam/stroke", 1000.0, "u_mm")
+        as_given(cx, CAM, cx.v("/cam/stroke")? * 1000.0, "u_mm")
     }
 }
 

@@ -8,6 +8,7 @@
 
 use serde_json::Value;
 
+use super::assignment::as_given;
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
@@ -20,30 +21,36 @@ fn arr(cx: &Ctx, p: &str) -> Vec<Option<f64>> {
         .unwrap_or_default()
 }
 
+/// The task's tables of the cylinder drive's givens.
+const TASK: &[&str] = &["cylinder", "synthesis"];
+
 /// The given values of `[cylinder]` as (name, value) rows: the geometry,
 /// the masses, the control force's switch point and the kinetostatics'
 /// position (the section's table and the technical assignment's).
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let synthesised = cx.report.pointer("/cylinder/synthesis").is_some();
-    let mut given = vec![
-        (cx.w("cy_q_hmin")?, cx.qv("/cylinder/geometry/h_min", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_hmax")?, cx.qv("/cylinder/geometry/h_max", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_rod")?, cx.qv("/cylinder/geometry/rod", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_lcs2")?, cx.qv("/cylinder/geometry/l_CS2", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_lak")?, cx.qv("/cylinder/geometry/l_AK", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_alpha")?, cx.deg("/cylinder/geometry/alpha")?),
-        (cx.w("cy_q_load")?, cx.qv("/cylinder/masses/load", 1.0, "u_kg")?),
-        (cx.w("cy_q_m1")?, cx.qv("/cylinder/masses/m1", 1.0, "u_kg")?),
-        (cx.w("cy_q_i1")?, cx.qv("/cylinder/masses/I1S", 1.0, "u_kgm2")?),
-        (cx.w("cy_q_m2")?, cx.qv("/cylinder/masses/m2", 1.0, "u_kg")?),
-        (cx.w("cy_q_i2")?, cx.qv("/cylinder/masses/I2S", 1.0, "u_kgm2")?),
-        (cx.w("cy_q_m3")?, cx.qv("/cylinder/masses/m3", 1.0, "u_kg")?),
-        (cx.w("cy_q_i3")?, cx.qv("/cylinder/masses/I3S", 1.0, "u_kgm2")?),
-        (cx.w("cy_q_switch")?, cx.qv("/cylinder/control/switch", 1.0, "cy_u_m")?),
-        (cx.w("cy_q_at")?, cx.qv("/cylinder/kinetostatics/s", 1.0, "cy_u_m")?),
+    // each value as the task's `[cylinder]` writes it (h_min = 50 мм)
+    let given = |ptr: &str, unit: &str| as_given(cx, TASK, cx.v(ptr)?, unit);
+    let deg = |ptr: &str| as_given(cx, TASK, cx.v(ptr)?.to_degrees(), "u_deg");
+    let mut rows = vec![
+        (cx.w("cy_q_hmin")?, given("/cylinder/geometry/h_min", "cy_u_m")?),
+        (cx.w("cy_q_hmax")?, given("/cylinder/geometry/h_max", "cy_u_m")?),
+        (cx.w("cy_q_rod")?, given("/cylinder/geometry/rod", "cy_u_m")?),
+        (cx.w("cy_q_lcs2")?, given("/cylinder/geometry/l_CS2", "cy_u_m")?),
+        (cx.w("cy_q_lak")?, given("/cylinder/geometry/l_AK", "cy_u_m")?),
+        (cx.w("cy_q_alpha")?, deg("/cylinder/geometry/alpha")?),
+        (cx.w("cy_q_load")?, given("/cylinder/masses/load", "u_kg")?),
+        (cx.w("cy_q_m1")?, given("/cylinder/masses/m1", "u_kg")?),
+        (cx.w("cy_q_i1")?, given("/cylinder/masses/I1S", "u_kgm2")?),
+        (cx.w("cy_q_m2")?, given("/cylinder/masses/m2", "u_kg")?),
+        (cx.w("cy_q_i2")?, given("/cylinder/masses/I2S", "u_kgm2")?),
+        (cx.w("cy_q_m3")?, given("/cylinder/masses/m3", "u_kg")?),
+        (cx.w("cy_q_i3")?, given("/cylinder/masses/I3S", "u_kgm2")?),
+        (cx.w("cy_q_switch")?, given("/cylinder/control/switch", "cy_u_m")?),
+        (cx.w("cy_q_at")?, given("/cylinder/kinetostatics/s", "cy_u_m")?),
     ];
     if synthesised {
-        given.insert(3, (cx.w("cy_q_swing")?, cx.deg("/cylinder/geometry/swing")?));
+        rows.insert(3, (cx.w("cy_q_swing")?, deg("/cylinder/geometry/swing")?));
         // the pressure angle given at the end or the start, and Y_D
         let mut at = 4;
         for (key, word) in [("pressure_end", "cy_q_pressure_end"), ("pressure_start", "cy_q_pressure_start")] {
@@ -52,18 +59,15 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
                 .pointer(&format!("/cylinder/synthesis/given/{key}"))
                 .and_then(Value::as_f64)
             {
-                given.insert(at, (cx.w(word)?, cx.q(v.to_degrees(), "u_deg")?));
+                rows.insert(at, (cx.w(word)?, as_given(cx, TASK, v.to_degrees(), "u_deg")?));
                 at += 1;
             }
         }
         if cx.report.pointer("/cylinder/synthesis/given/frame_y").is_some() {
-            given.insert(
-                at,
-                (cx.w("cy_q_frame_y")?, cx.qv("/cylinder/synthesis/given/frame_y", 1.0, "cy_u_m")?),
-            );
+            rows.insert(at, (cx.w("cy_q_frame_y")?, given("/cylinder/synthesis/given/frame_y", "cy_u_m")?));
         }
     }
-    Ok(given)
+    Ok(rows)
 }
 
 /// The section, if the report has `cylinder`.

@@ -4,23 +4,35 @@
 
 use serde_json::Value;
 
+use super::assignment::as_given;
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Section};
+
+/// The task's table of the gear pair's givens.
+const GEAR: &[&str] = &["gear"];
 
 /// The given values of the pair as (name, value) rows.
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let rows = vec![
         (cx.w("q_z1")?, format!("{}", cx.v("/gear/z1")?)),
         (cx.w("q_z2")?, format!("{}", cx.v("/gear/z2")?)),
-        (cx.w("q_module")?, cx.given("/gear/m", 1000.0, "u_mm")?),
-        (cx.w("q_x1")?, cx.given("/gear/x1", 1.0, "")?),
-        (cx.w("q_x2")?, cx.given("/gear/x2", 1.0, "")?),
-        (cx.w("q_alpha")?, cx.deg("/gear/rack/alpha")?),
-        (cx.w("q_ha")?, cx.given("/gear/rack/ha", 1.0, "")?),
-        (cx.w("q_c")?, cx.given("/gear/rack/c", 1.0, "")?),
+        (cx.w("q_module")?, as_given(cx, GEAR, cx.v("/gear/m")? * 1000.0, "u_mm")?),
+        (cx.w("q_x1")?, as_given(cx, GEAR, cx.v("/gear/x1")?, "")?),
+        (cx.w("q_x2")?, as_given(cx, GEAR, cx.v("/gear/x2")?, "")?),
+        (
+            cx.w("q_alpha")?,
+            as_given(cx, GEAR, cx.v("/gear/rack/alpha")?.to_degrees(), "u_deg")?,
+        ),
+        (cx.w("q_ha")?, as_given(cx, GEAR, cx.v("/gear/rack/ha")?, "")?),
+        (cx.w("q_c")?, as_given(cx, GEAR, cx.v("/gear/rack/c")?, "")?),
     ];
+    // a centre distance the task gives (a_w = 560 мм)
+    let mut rows = rows;
+    if cx.task.get("gear").and_then(|g| g.get("aw")).is_some() {
+        rows.push((cx.w("q_aw")?, as_given(cx, GEAR, cx.v("/gear/aw")? * 1000.0, "u_mm")?));
+    }
     Ok(rows)
 }
 

@@ -63,6 +63,8 @@ struct Symbols {
     omegas: Vec<String>,
     epsilons: Vec<String>,
     lengths: Vec<String>,
+    /// the input slider's given speed v or acceleration a along its guide
+    slider: Vec<String>,
 }
 
 fn add(list: &mut Vec<String>, s: &str) {
@@ -197,12 +199,41 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
+    /// A point whose velocity and acceleration the plans find (v_B, a_B).
+    fn point(&mut self, p: &str) {
+        add(&mut self.v.points, p);
+        add(&mut self.a.points, p);
+    }
+
+    /// A point of a link at a pair's place (v_B3, a_B3).
+    fn coincident(&mut self, p: &str) {
+        add(&mut self.v.coincident, p);
+        add(&mut self.a.coincident, p);
+    }
+
+    /// The Coriolis acceleration of a sliding `rel` along the guide `guide`
+    /// that turns: a^k = 2·ω·v_r (Артоболевский 1988, § 15).
+    fn coriolis(&mut self, rel: &str, guide: &str, ex: &mut Extra) {
+        add(&mut self.a.coriolis, rel);
+        let omega = format!("omega_{}", link_no(guide));
+        add(&mut self.m.omegas, &omega);
+        add(&mut self.m.coriolis, rel);
+        add(&mut self.m.sliding, rel);
+        ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+    }
+
+    /// A sliding along a guide: its velocity v_KKo and relative
+    /// acceleration a^r_KKo.
+    fn slide(&mut self, rel: &str) {
+        add(&mut self.v.sliding, rel);
+        add(&mut self.a.relative, rel);
+    }
+
     /// One side through a turning pair at `x` of link `g`: the unknown
     /// point `k` (math) turns about `x` with `g`.
     fn turning(&mut self, k: &str, x: &str, g: &str, on_frame: bool, ex: &mut Extra) -> (String, String) {
         let xm = math_name(x);
-        add(&mut self.v.points, &xm);
-        add(&mut self.a.points, &xm);
+        self.point(&xm);
         let rel = two(k, &xm);
         add(&mut self.v.rotation, &rel);
         add(&mut self.a.normal, &rel);
@@ -227,11 +258,9 @@ impl Builder<'_> {
     /// `slider` against the coincident point of the guide `guide` at `at`.
     fn sliding(&mut self, k: &str, at: &str, guide: &str, ex: &mut Extra) -> (String, String) {
         let ko = on(at, guide);
-        add(&mut self.v.coincident, &ko);
-        add(&mut self.a.coincident, &ko);
+        self.coincident(&ko);
         let rel = two(k, &ko);
-        add(&mut self.v.sliding, &rel);
-        add(&mut self.a.relative, &rel);
+        self.slide(&rel);
         if guide == "frame" {
             ex.v.push(format!("v_({ko}) = 0"));
             ex.a.push(format!("a_({ko}) = 0"));
@@ -239,12 +268,7 @@ impl Builder<'_> {
         let acc = if self.still.contains(guide) {
             format!("arrow(a)_({ko}) + arrow(a)^r_({rel})")
         } else {
-            add(&mut self.a.coriolis, &rel);
-            let omega = format!("omega_{}", link_no(guide));
-            add(&mut self.m.omegas, &omega);
-            add(&mut self.m.coriolis, &rel);
-            add(&mut self.m.sliding, &rel);
-            ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+            self.coriolis(&rel, guide, ex);
             format!("arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
         };
         (format!("arrow(v)_({ko}) + arrow(v)_({rel})"), acc)
@@ -277,8 +301,7 @@ impl Builder<'_> {
         match inner.as_slice() {
             [k] if g.class == 2 && g.links.len() == 2 && !k.sliding => {
                 let km = math_name(&k.point);
-                add(&mut self.v.points, &km);
-                add(&mut self.a.points, &km);
+                self.point(&km);
                 let (mut ex, mut sides) = (Extra::default(), Vec::new());
                 for link in &g.links {
                     let Some((p, other)) = g.outer(link) else { continue };
@@ -297,23 +320,15 @@ impl Builder<'_> {
                 let a = g.links.iter().find(|l| at_k(l)).unwrap_or(&g.links[0]).clone();
                 let b = g.links.iter().find(|l| **l != a).cloned().unwrap_or_default();
                 let (ka, kb) = (on(&k.point, &a), on(&k.point, &b));
-                add(&mut self.v.coincident, &ka);
-                add(&mut self.v.coincident, &kb);
-                add(&mut self.a.coincident, &ka);
-                add(&mut self.a.coincident, &kb);
+                self.coincident(&ka);
+                self.coincident(&kb);
                 let rel = two(&kb, &ka);
-                add(&mut self.v.sliding, &rel);
-                add(&mut self.a.relative, &rel);
+                self.slide(&rel);
                 let mut ex = Extra::default();
                 let first_a = if self.still.contains(&b) {
                     format!("arrow(a)_({ka}) + arrow(a)^r_({rel})")
                 } else {
-                    add(&mut self.a.coriolis, &rel);
-                    let omega = format!("omega_{}", link_no(&b));
-                    add(&mut self.m.omegas, &omega);
-                    add(&mut self.m.coriolis, &rel);
-                    add(&mut self.m.sliding, &rel);
-                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    self.coriolis(&rel, &b, &mut ex);
                     format!("arrow(a)_({ka}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})")
                 };
                 let mut sides = vec![(format!("arrow(v)_({ka}) + arrow(v)_({rel})"), first_a)];
@@ -345,18 +360,10 @@ impl Builder<'_> {
                 if p.sliding || p.point == first.point {
                     let (ko, kl) = (on(&p.point, &p.links[0]), on(&p.point, &p.links[1]));
                     let rel = two(&kl, &ko);
-                    for s in [&ko, &kl] {
-                        add(&mut self.v.coincident, s);
-                        add(&mut self.a.coincident, s);
-                    }
-                    add(&mut self.v.sliding, &rel);
-                    add(&mut self.a.coriolis, &rel);
-                    add(&mut self.a.relative, &rel);
-                    let omega = format!("omega_{}", link_no(&p.links[0]));
-                    add(&mut self.m.omegas, &omega);
-                    add(&mut self.m.coriolis, &rel);
-                    add(&mut self.m.sliding, &rel);
-                    ex.mags.push(format!("a^k_({rel}) = 2 {omega} v_({rel})"));
+                    self.coincident(&ko);
+                    self.coincident(&kl);
+                    self.slide(&rel);
+                    self.coriolis(&rel, &p.links[0], &mut ex);
                     eqs.push(format!("arrow(v)_({kl}) = arrow(v)_({ko}) + arrow(v)_({rel})"));
                     aeqs.push(format!(
                         "arrow(a)_({kl}) = arrow(a)_({ko}) + arrow(a)^k_({rel}) + arrow(a)^r_({rel})"
@@ -364,10 +371,8 @@ impl Builder<'_> {
                     continue;
                 }
                 let pm = math_name(&p.point);
-                for s in [&q, &pm] {
-                    add(&mut self.v.points, s);
-                    add(&mut self.a.points, s);
-                }
+                self.point(&q);
+                self.point(&pm);
                 let rel = two(&pm, &q);
                 add(&mut self.v.rotation, &rel);
                 add(&mut self.a.normal, &rel);
@@ -399,15 +404,15 @@ fn strip_link(k: &str) -> String {
     k.split('_').next().unwrap_or(k).to_string()
 }
 
-/// The equations of the crank-driven mechanism: the input link (its axis
-/// `axis` on the frame, its other joints), then every Assur group.
-pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
+/// The equations of a mechanism: the input link's lines written by
+/// `input` (`None` if it has none), then every Assur group's.
+fn equations(cx: &Ctx, input: impl FnOnce(&mut Builder, &[Pair], &str) -> Option<()>) -> Option<Equations> {
     let pairs = read_pairs(cx);
     let groups = read_groups(cx, &pairs);
     if groups.is_empty() {
         return None;
     }
-    let input = cx.s("/linkage/input/link")?.to_string();
+    let link = cx.s("/linkage/input/link")?.to_string();
     let still = not_turning(&pairs);
     let mut b = Builder {
         still: &still,
@@ -418,47 +423,7 @@ pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
         a_lines: Vec::new(),
         m_lines: Vec::new(),
     };
-    // the input link's moving joints (A of OA; A and D of the engine's crank)
-    let mut joints: Vec<String> = Vec::new();
-    for p in pairs.iter().filter(|p| p.links.contains(&input) && p.point != axis) {
-        add(&mut joints, &p.point);
-    }
-    if joints.is_empty() {
-        return None;
-    }
-    let eps = cx.opt("/linkage/input/epsilon").unwrap_or(0.0);
-    let one = link_no(&input);
-    let omega = format!("omega_{one}");
-    let am = math_name(axis);
-    let (mut v, mut a, mut m) = (Vec::new(), Vec::new(), Vec::new());
-    add(&mut b.v.omegas, &omega);
-    add(&mut b.m.omegas, &omega);
-    for j in &joints {
-        let jm = math_name(j);
-        let len = format!("l_({am} {jm})");
-        let rel = two(&jm, &am);
-        add(&mut b.v.points, &jm);
-        add(&mut b.v.lengths, &len);
-        add(&mut b.a.points, &jm);
-        add(&mut b.a.normal, &rel);
-        add(&mut b.m.normal, &rel);
-        add(&mut b.m.lengths, &len);
-        v.push(format!("v_({jm}) = {omega} {len}"));
-        m.push(format!("a^n_({rel}) = {omega}^2 {len}"));
-        if eps.abs() > 1e-12 {
-            add(&mut b.a.tangential, &rel);
-            add(&mut b.m.tangential, &rel);
-            let e = format!("epsilon_{one}");
-            add(&mut b.m.epsilons, &e);
-            m.push(format!("a^tau_({rel}) = {e} {len}"));
-            a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"));
-        } else {
-            a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel})"));
-        }
-    }
-    b.v_lines.push(v.join(", quad "));
-    b.a_lines.push(a.join(", quad "));
-    b.m_lines.push(m.join(", quad "));
+    input(&mut b, &pairs, &link)?;
     for g in &groups {
         b.group(g);
     }
@@ -469,6 +434,95 @@ pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
         velocity_symbols: b.v,
         acceleration_symbols: b.a,
         magnitude_symbols: b.m,
+    })
+}
+
+/// The equations of the crank-driven mechanism: the input link (its axis
+/// `axis` on the frame, its other joints) turning at ω_1 (v_A = ω_1·l_OA,
+/// a^n_AO = ω_1²·l_OA, a^τ_AO = ε_1·l_OA), then every Assur group.
+pub(crate) fn crank_equations(cx: &Ctx, axis: &str) -> Option<Equations> {
+    let eps = cx.opt("/linkage/input/epsilon").unwrap_or(0.0);
+    equations(cx, |b, pairs, input| {
+        // the input link's moving joints (A of OA; A and D of the engine's crank)
+        let mut joints: Vec<String> = Vec::new();
+        for p in pairs.iter().filter(|p| p.links.iter().any(|l| l == input) && p.point != axis) {
+            add(&mut joints, &p.point);
+        }
+        if joints.is_empty() {
+            return None;
+        }
+        let one = link_no(input);
+        let omega = format!("omega_{one}");
+        let am = math_name(axis);
+        let (mut v, mut a, mut m) = (Vec::new(), Vec::new(), Vec::new());
+        add(&mut b.v.omegas, &omega);
+        add(&mut b.m.omegas, &omega);
+        for j in &joints {
+            let jm = math_name(j);
+            let len = format!("l_({am} {jm})");
+            let rel = two(&jm, &am);
+            add(&mut b.v.points, &jm);
+            add(&mut b.v.lengths, &len);
+            add(&mut b.a.points, &jm);
+            add(&mut b.a.normal, &rel);
+            add(&mut b.m.normal, &rel);
+            add(&mut b.m.lengths, &len);
+            v.push(format!("v_({jm}) = {omega} {len}"));
+            m.push(format!("a^n_({rel}) = {omega}^2 {len}"));
+            if eps.abs() > 1e-12 {
+                add(&mut b.a.tangential, &rel);
+                add(&mut b.m.tangential, &rel);
+                let e = format!("epsilon_{one}");
+                add(&mut b.m.epsilons, &e);
+                m.push(format!("a^tau_({rel}) = {e} {len}"));
+                a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel}) + arrow(a)^tau_({rel})"));
+            } else {
+                a.push(format!("arrow(a)_({jm}) = arrow(a)^n_({rel})"));
+            }
+        }
+        b.v_lines.push(v.join(", quad "));
+        b.a_lines.push(a.join(", quad "));
+        b.m_lines.push(m.join(", quad "));
+        Some(())
+    })
+}
+
+/// The equations of a mechanism driven by a slider on a fixed guide
+/// (ведущий ползун): the slider moves along its guide with the given speed
+/// v and acceleration a, and so does each of its joints (a body that does
+/// not turn: every point has the same velocity and acceleration,
+/// Артоболевский 1988, § 13): v_B = v, a_B = a, no ω·l; then every Assur
+/// group.
+pub(crate) fn slider_equations(cx: &Ctx) -> Option<Equations> {
+    let accel = cx.opt("/linkage/input/acceleration").unwrap_or(0.0);
+    equations(cx, |b, pairs, input| {
+        let mine = || pairs.iter().filter(|p| p.links.iter().any(|l| l == input));
+        // the slider's joints with the driven links, else its guide's point
+        let mut joints: Vec<String> = Vec::new();
+        for p in mine().filter(|p| !p.sliding) {
+            add(&mut joints, &p.point);
+        }
+        if joints.is_empty() {
+            for p in mine() {
+                add(&mut joints, &p.point);
+            }
+        }
+        if joints.is_empty() {
+            return None;
+        }
+        let (mut v, mut a) = (Vec::new(), Vec::new());
+        add(&mut b.v.slider, "v");
+        add(&mut b.a.slider, "a");
+        let a_value = if accel.abs() > 1e-12 { "a" } else { "a = 0" };
+        for j in &joints {
+            let jm = math_name(j);
+            b.point(&jm);
+            v.push(format!("v_({jm}) = v"));
+            a.push(format!("a_({jm}) = {a_value}"));
+        }
+        b.v_lines.push(v.join(", quad "));
+        b.a_lines.push(a.join(", quad "));
+        Some(())
     })
 }
 
@@ -523,6 +577,7 @@ impl Equations {
                 (list("v_", &s.sliding), "eqw_v_sliding", String::new()),
                 (list("", &s.omegas), "eqw_omega_input", String::new()),
                 (list("", &s.lengths), "eqw_lengths", String::new()),
+                (list("", &s.slider), "eqw_v_slider", String::new()),
             ],
         )
     }
@@ -539,6 +594,7 @@ impl Equations {
                 (list("a^tau_", &s.tangential), "eqw_a_tangential", String::new()),
                 (list("a^k_", &s.coriolis), "eqw_a_coriolis", String::new()),
                 (list("a^r_", &s.relative), "eqw_a_relative", String::new()),
+                (list("", &s.slider), "eqw_a_slider", String::new()),
             ],
         )
     }

@@ -109,17 +109,26 @@ fn kinematic_equations(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             formula("arrow(a)_C = arrow(a)_B + arrow(a)^n_(C B) + arrow(a)^tau_(C B)"),
         ]);
     };
-    Ok(vec![
+    equation_blocks(cx, &eq)
+}
+
+/// The blocks of the equations: the velocities, the accelerations and the
+/// magnitudes (where any), each formula with its line of symbols.
+fn equation_blocks(cx: &Ctx, eq: &super::group_equations::Equations) -> Result<Vec<Block>, NoteError> {
+    let mut b = vec![
         cx.para("lk_f_velocity_groups", &[])?,
         formula(&eq.velocity),
         eq.where_velocity(cx)?,
         cx.para("lk_f_acceleration_groups", &[])?,
         formula(&eq.acceleration),
         eq.where_acceleration(cx)?,
-        cx.para("lk_f_magnitudes", &[])?,
-        formula(&eq.magnitudes),
-        eq.where_magnitudes(cx)?,
-    ])
+    ];
+    if !eq.magnitudes.is_empty() {
+        b.push(cx.para("lk_f_magnitudes", &[])?);
+        b.push(formula(&eq.magnitudes));
+        b.push(eq.where_magnitudes(cx)?);
+    }
+    Ok(b)
 }
 
 /// The section, if the report has `linkage`.
@@ -202,10 +211,18 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     ];
     // the analysed mechanism (the task's lengths) against the synthesised one
     let mut conclusions = conclusions;
-    if let (Some(kv), Some(ks)) = (kv, cx.opt("/synthesis/check/k"))
-        && cx.q(kv, "")? != cx.q(ks, "")?
-    {
-        conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[cx.q(ks, "")?, cx.q(kv, "")?])?);
+    // with the given K_v's digits, or the first more that tell the two
+    // apart (1,10650 synthesised, 1,10647 analysed), up to seven
+    if let (Some(kv), Some(ks), Some(given)) = (kv, cx.opt("/synthesis/check/k"), cx.opt("/synthesis/k")) {
+        let digits = super::assignment::given_precision(cx, &["synthesis"], given, "");
+        let f = |x: f64, d: u8| crate::number::format_number(x, d, cx.lang).map(|n| n.to_string());
+        for d in digits..=digits.max(7) {
+            let (s, a) = (f(ks, d)?, f(kv, d)?);
+            if s != a {
+                conclusions.push(cx.para("lk_conclusion_vs_synthesis", &[s, a])?);
+                break;
+            }
+        }
     }
     Ok(Some(four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)?))
 }
@@ -301,9 +318,10 @@ impl Structure {
     }
 }
 
-/// A length of the report (m) printed in mm.
+/// A length of the report (m) printed in mm, as the task's `[linkage]`
+/// writes it.
 fn mm(cx: &Ctx, ptr: &str) -> Result<String, NoteError> {
-    cx.q(cx.v(ptr)? * 1e3, "u_mm")
+    super::assignment::as_given(cx, &["linkage"], cx.v(ptr)? * 1e3, "u_mm")
 }
 
 /// The section of a linkage driven by a slider on a fixed guide: the
@@ -316,7 +334,7 @@ fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
             "lk_slider_given",
             &[
                 cx.s("/linkage/input/link").unwrap_or("").to_string(),
-                cx.q(cx.v("/linkage/input/speed")?, "u_m_s")?,
+                super::assignment::as_given(cx, &["linkage"], cx.v("/linkage/input/speed")?, "u_m_s")?,
                 mm(cx, "/linkage/input/travel/from")?,
                 mm(cx, "/linkage/input/travel/to")?,
                 mm(cx, "/linkage/plans/s")?,
@@ -324,12 +342,16 @@ fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
         )?,
         cx.para("lk_slider_method", &[])?,
     ];
-    let formulas = vec![
+    let mut formulas = vec![
         cx.para("lk_f_dof", &[])?,
         formula("W = 3 n - 2 p_5 - p_4"),
         cx.para("where_dof", &[])?,
-        formula("x' = dot(x) / v, quad x'' = (dot.double(x) - x' a) / v^2"),
     ];
+    // the slider's own equations (v_B = v, a_B = a), then the groups'
+    if let Some(eq) = super::group_equations::slider_equations(cx) {
+        formulas.extend(equation_blocks(cx, &eq)?);
+    }
+    formulas.push(formula("x' = dot(x) / v, quad x'' = (dot.double(x) - x' a) / v^2"));
     let mut results = structure.dof_blocks(cx)?;
     structure.paragraph_and_figures(cx, &mut results)?;
     let rows = plan_rows(lk);

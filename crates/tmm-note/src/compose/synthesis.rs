@@ -4,6 +4,7 @@
 
 use serde_json::Value;
 
+use super::assignment::as_given;
 use super::context::{Ctx, formula, four_parts, num, text};
 use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
@@ -30,18 +31,21 @@ const PURE: &[&str] = &["k", "kv", "lambda", "ratio", "h_over_b"];
 const VELOCITIES: &[&str] = &["v_mean", "v_cut"];
 
 /// One given value printed with its unit: angles in degrees, ratios bare,
-/// everything else a length in mm.
+/// everything else a length in mm; its digits and unit as the task's
+/// `[synthesis]` writes them ([`as_given`]).
 fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
     // the numbered angles of a function generator: phi1, psi2 …
     let stem = key.trim_end_matches(|c: char| c.is_ascii_digit());
+    // as the task writes it (K_v = 1,1065, not 1,107; 380 мм, not 380,0 мм)
+    let task = &["synthesis"];
     if ANGLES.contains(&key) || ANGLES.contains(&stem) || is_angle_name(key) {
-        cx.q(v.to_degrees(), "u_deg")
+        as_given(cx, task, v.to_degrees(), "u_deg")
     } else if VELOCITIES.contains(&key) {
-        cx.q(v, "u_m_s")
+        as_given(cx, task, v, "u_m_s")
     } else if PURE.contains(&key) || key == "lambda_e" {
-        cx.q(v, "")
+        as_given(cx, task, v, "")
     } else {
-        cx.q(v * 1000.0, "u_mm")
+        as_given(cx, task, v * 1000.0, "u_mm")
     }
 }
 
@@ -150,7 +154,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let k = cx.v("/synthesis/k")?;
     let statement = vec![
         Block::List(vec![cx.w("assume_rigid")?.into(), cx.w("assume_pairs")?.into()]),
-        cx.para("sy_given", &[cx.q(k, "")?])?,
+        cx.para("sy_given", &[as_given(cx, &["synthesis"], k, "")?])?,
         cx.quantities("tab_given", given_rows(cx)?)?,
         // the textbook's П3: the crank pivot sees the chord between the
         // extreme positions of B at θ, one equation for the direction of OC
@@ -190,17 +194,26 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     if !found.is_empty() {
         results.push(cx.quantities("tab_synth_found", found)?);
     }
+    // the K_v reproduced, with the given's digits (1,1065 against 1,1065)
+    let check = cx.v("/synthesis/check/k")?;
+    let digits = super::assignment::given_precision(cx, &["synthesis"], k, "");
+    let f = |x: f64| crate::number::format_number(crate::number::zero_noise(x, 0.0), digits, cx.lang).map(|n| n.to_string());
+    // met: written as the given is (1,28 for 1,28, not 1,280)
+    let k_check = if f(check)? == f(k)? {
+        as_given(cx, &["synthesis"], k, "")?
+    } else {
+        f(check)?
+    };
     let mut q = vec![
         (cx.w("q_theta")?, cx.deg("/synthesis/theta")?),
-        (cx.w("q_k_check")?, cx.qv("/synthesis/check/k", 1.0, "")?),
+        (cx.w("q_k_check")?, k_check.clone()),
     ];
     q.extend(angle_checks(cx)?);
     results.push(cx.quantities("tab_synth_results", q)?);
     results.extend(figures(cx)?);
-    let check = cx.v("/synthesis/check/k")?;
     let conclusions = vec![cx.para(
         "sy_conclusion",
-        &[cx.q(check, "")?, cx.q(k, "")?, cx.relative(((check - k) / k).abs())?],
+        &[k_check, as_given(cx, &["synthesis"], k, "")?, cx.relative(((check - k) / k).abs())?],
     )?];
     Ok(Some(four_parts(cx, "sec_synthesis", statement, formulas, results, conclusions)?))
 }

@@ -6,9 +6,13 @@
 //! mass per length, k of J_S = k·m·l², gravity on or off, each link's length
 //! and the frame between the fixed joints, an engine's bore and peak
 //! pressure, the cam's phase angles, the planetary train's scheme — and the
-//! mechanism's scheme as its first figure. Failed before: the assignment had
+//! mechanism's scheme as its first figure; and every number of the task's
+//! `[synthesis]`, `[cam]`, `[gear]`, `[planetary]`, `[cylinder]`, δ and the
+//! input's speed and position, read from the task's text, printed as the
+//! task writes it (K_v = 1,1065, 13 мм, 0,5 м/с, 1/30). Failed before: the assignment had
 //! no figure, no resistance, no mass rule, no gravity statement, no frame
-//! and no phases, and printed 900,0 об/мин.
+//! and no phases, and printed 900,0 об/мин; then K_v 1,107, 13,00 мм,
+//! 20,00°, 0,5000 м/с, 0,03333 for 1/30.
 
 use tmm_note::notation::{MATH_CLOSE, MATH_OPEN};
 use tmm_note::{Block, Cell, Lang, Span, Text, compose};
@@ -186,8 +190,131 @@ fn unit(u: &str, lang: Lang) -> &'static str {
                 "МПа"
             }
         }
+        "deg" => "°",
+        "rad/s" => {
+            if en {
+                "rad/s"
+            } else {
+                "рад/с"
+            }
+        }
+        "rpm" => match lang {
+            Lang::Ru => "об/мин",
+            Lang::Uk => "об/хв",
+            Lang::En => "rpm",
+        },
+        "m/s" => {
+            if en {
+                "m/s"
+            } else {
+                "м/с"
+            }
+        }
+        "kg" => {
+            if en {
+                "kg"
+            } else {
+                "кг"
+            }
+        }
+        "kgm^2" => {
+            if en {
+                "kg·m²"
+            } else {
+                "кг·м²"
+            }
+        }
         other => panic!("a unit the test does not know: {other}"),
     }
+}
+
+/// A given of the task's text as the note must print it: the number as the
+/// task writes it (its own digits, the language's decimal separator, the
+/// minus sign), a length in metres in millimetres (the course's unit; the
+/// digits of x·1000), a fraction as written (`1/30`), the unit in the
+/// note's words; `None` for a text that is no number (a law, a kind) or a
+/// number written with more than six significant digits (a computed value
+/// pasted into the task: the note prints four of them).
+fn written(v: &toml::Value, lang: Lang) -> Option<String> {
+    let sep = |t: &str| {
+        let t = if lang == Lang::En { t.to_string() } else { t.replace('.', ",") };
+        t.replace('-', "\u{2212}")
+    };
+    let digits = |t: &str| t.trim_start_matches(['-', '0', '.']).chars().filter(char::is_ascii_digit).count();
+    let (number, u) = match v {
+        toml::Value::Integer(i) => (i.to_string(), String::new()),
+        toml::Value::Float(f) => (f.to_string(), String::new()),
+        toml::Value::String(s) => {
+            let s = s.trim();
+            if let Some((a, b)) = s.split_once('/') {
+                let int = |t: &str| t.trim().trim_start_matches('-').chars().all(|c| c.is_ascii_digit());
+                return (int(a) && int(b)).then(|| s.replace('-', "\u{2212}"));
+            }
+            let (n, u) = s.split_once(' ').unwrap_or((s, ""));
+            n.parse::<f64>().ok()?;
+            (n.to_string(), u.replace(' ', ""))
+        }
+        _ => return None,
+    };
+    if digits(&number) > 6 {
+        return None;
+    }
+    Some(match u.as_str() {
+        "m" => {
+            let mm = (number.parse::<f64>().ok()? * 1e3 * 1e6).round() / 1e6;
+            format!("{}{}", sep(&mm.to_string()), unit("mm", lang))
+        }
+        "" => sep(&number),
+        other => format!("{}{}", sep(&number), unit(other, lang)),
+    })
+}
+
+/// The givens of the task's tables the assignment states as rows, each
+/// with its text: every number of `[synthesis]`, `[cam]`, `[gear]`,
+/// `[planetary]`, `[cylinder]`, δ of `[dynamics]` and the input's speed,
+/// position and travel of `[linkage]`. Left out: the values the assignment
+/// does not state yet — a cam's profile margins, the gear pair's minimal
+/// tip thickness, a few
+/// synthesis kinds' auxiliary data (the design position, the frame's
+/// angle, the knee press' horizontal, the six-bar's pivot line), the
+/// planetary search's tolerance — and the dynamics' number of integration
+/// points (not a given of the machine).
+fn task_givens(task: &toml::Table) -> Vec<(String, &toml::Value)> {
+    const NOT_STATED: &[&str] = &[
+        "cam.min_curvature",
+        "cam.face_margin",
+        "gear.sa_min",
+        "synthesis.design_position",
+        "synthesis.frame_angle",
+        "synthesis.horizontal",
+        "synthesis.pivot_through",
+        "planetary.tolerance",
+    ];
+    fn walk<'a>(path: &str, v: &'a toml::Value, out: &mut Vec<(String, &'a toml::Value)>) {
+        match v {
+            toml::Value::Table(t) => t.iter().for_each(|(k, w)| walk(&format!("{path}.{k}"), w, out)),
+            toml::Value::Array(a) => a.iter().for_each(|w| walk(path, w, out)),
+            _ => out.push((path.to_string(), v)),
+        }
+    }
+    let mut out = Vec::new();
+    for section in ["synthesis", "cam", "gear", "planetary", "cylinder"] {
+        if let Some(v) = task.get(section) {
+            walk(section, v, &mut out);
+        }
+    }
+    if let Some(d) = task.get("dynamics").and_then(|d| d.get("delta")) {
+        out.push(("dynamics.delta".to_string(), d));
+    }
+    if let Some(l) = task.get("linkage") {
+        for key in ["at", "travel", "input"] {
+            if let Some(v) = l.get(key) {
+                walk(&format!("linkage.{key}"), v, &mut out);
+            }
+        }
+    }
+    out.retain(|(k, _)| !NOT_STATED.contains(&k.as_str()));
+    out
 }
 
 /// A length of the task in mm.
@@ -216,8 +343,12 @@ fn check(name: &str, task_text: &str, lang: Lang, a: &Assignment) -> Vec<String>
         Lang::Uk => "Схема механізму",
         Lang::En => "Scheme of the mechanism",
     };
+    // a mechanism's scheme (a gear pair alone has none drawn)
+    let mechanism = ["linkage", "synthesis", "cylinder", "planetary", "cam"]
+        .iter()
+        .any(|k| task.contains_key(*k));
     want(
-        a.figures.first().is_some_and(|f| *f == squeeze(scheme)),
+        !mechanism || a.figures.first().is_some_and(|f| *f == squeeze(scheme)),
         format!("the first figure is not «{scheme}»: {:?}", a.figures),
     );
     if let Some(f) = task.get("forces") {
@@ -304,6 +435,13 @@ fn check(name: &str, task_text: &str, lang: Lang, a: &Assignment) -> Vec<String>
             want(a.row_with(&s, &[]), format!("no phase angle {s}"));
         }
     }
+    // every given as the task writes it (K_v = 1,1065, not 1,107; 13 мм,
+    // not 13,00 мм)
+    for (key, v) in task_givens(&task) {
+        if let Some(w) = written(v, lang) {
+            want(all.contains(&squeeze(&w)), format!("{key} = {v} not as written «{w}»"));
+        }
+    }
     if let Some(p) = task.get("planetary") {
         if p["scheme"].as_str() == Some("sun-planet-ring") {
             let ring = match lang {
@@ -313,8 +451,14 @@ fn check(name: &str, task_text: &str, lang: Lang, a: &Assignment) -> Vec<String>
             };
             want(all.contains(&squeeze(ring)), format!("no «{ring}» in the scheme's words"));
         }
-        let ratio = as_given(quantity(&p["ratio"]).0, lang);
-        want(a.row_with(&ratio, &[]), format!("no ratio {ratio} as given"));
+        // a fraction (`"1/30"`) is read as written above, with the givens
+        let ratio = match &p["ratio"] {
+            toml::Value::String(r) if r.contains('/') => None,
+            r => Some(as_given(quantity(r).0, lang)),
+        };
+        if let Some(ratio) = ratio {
+            want(a.row_with(&ratio, &[]), format!("no ratio {ratio} as given"));
+        }
     }
     faults
 }
@@ -334,6 +478,16 @@ fn the_assignment_states_every_given_of_its_task_with_the_scheme() {
         example("cam-seed-001-roller.toml"),
         example("textbook/p6-cam-translating.toml"),
         example("planetary-sun-planet-ring.toml"),
+        example("planetary-ext-ext.toml"),
+        example("slider-input.toml"),
+        example("textbook/p5-pneumatic-cylinder.toml"),
+        example("textbook/p1-5-oscillating-cylinder-v2.toml"),
+        example("textbook/p1-4-four-bar-three-positions.toml"),
+        example("synth-seed-003-six-bar.toml"),
+        example("cam-oscillating-roller.toml"),
+        example("gear-seed001.toml"),
+        example("gear-seed003.toml"),
+        example("textbook/p6-cam-oscillating.toml"),
     ];
     let mut faults = Vec::new();
     for task in &tasks {

@@ -98,11 +98,15 @@ fn check_default(lang: Lang) {
         "/dynamics/driving_moment",
         "/dynamics/flywheel_inertia",
         "/gear/eps_alpha",
-        "/cam/omega",
     ] {
         let s = printed(ptr(&r, p), lang);
         assert!(text.contains(&s), "{lang:?}: {p} = {s} missing");
     }
+    // a given as the task writes it: the cam's ω = 200 rad/s, not 200,0
+    let task: toml::Table = toml::from_str(DEFAULT_TASK).unwrap();
+    let omega = task["cam"]["omega"].as_str().unwrap().split_whitespace().next().unwrap();
+    let given = format!("{omega} {}", w.get("u_rad_s").unwrap());
+    assert!(text.contains(&given), "{lang:?}: the cam's ω {given} missing");
     // εα of z1 = 15, z2 = 20, m = 5, x1 = 0.2, x2 = 0.85 is 1.2048 (seed 001,
     // with its typo corrected; recomputed in tmm-gears' tests): 1.205
     // typeset as ε with the subscript α: in the conclusion a math run ε_α

@@ -6,11 +6,12 @@
 //! synthesis' tables name every given and every unknown in words and
 //! symbols, never by the task's keys (`h_min`, `rod`, `phi3_start`).
 
-use tmm_note::notation::{MATH_CLOSE, MATH_OPEN};
 use tmm_note::{Block, Cell, Note, Section, Span, compose};
 use tmm_report::TaskSource;
 use tmm_report::project::Language;
 use tmm_report::run::run_task_in;
+
+use super::fixtures::{outside_math, section_blocks, task};
 
 const VARIANTS: [&str; 3] = [
     "textbook/p1-5-oscillating-cylinder-v1.toml",
@@ -25,11 +26,6 @@ fn pair_words(lang: Language) -> &'static str {
         Language::Uk => "в парі штока й важеля",
         Language::En => "rod–lever pair",
     }
-}
-
-fn task(name: &str) -> TaskSource {
-    let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
-    TaskSource::new(path.clone(), std::fs::read_to_string(&path).unwrap())
 }
 
 /// A given of the task's `[synthesis]` in SI units: "50 mm" → 0.05, "60 deg"
@@ -64,13 +60,10 @@ fn plain(t: &tmm_note::Text, lang: Language) -> String {
 }
 
 fn paragraphs(s: &Section, lang: Language, out: &mut Vec<String>) {
-    for b in &s.blocks {
+    for b in section_blocks(s) {
         if let Block::Paragraph(t) = b {
             out.push(plain(t, lang));
         }
-    }
-    for sub in &s.subsections {
-        paragraphs(sub, lang, out);
     }
 }
 
@@ -193,36 +186,18 @@ fn the_cylinder_notes_conclusion_gives_the_rods_pressure_angle_on_the_lever() {
 /// A table cell's text outside its math runs.
 fn words_outside_math(c: &Cell) -> String {
     let Cell::Text(t) = c else { return String::new() };
-    let mut out = String::new();
-    let mut depth = 0;
-    for span in &t.0 {
-        if let Span::Plain(p) = span {
-            for ch in p.chars() {
-                match ch {
-                    MATH_OPEN => depth += 1,
-                    MATH_CLOSE => depth -= 1,
-                    _ if depth == 0 => out.push(ch),
-                    _ => {}
-                }
-            }
-        }
-    }
-    out
+    t.0.iter()
+        .map(|span| match span {
+            Span::Plain(p) => outside_math(p),
+            _ => String::new(),
+        })
+        .collect()
 }
 
-fn tables<'a>(s: &'a Section, out: &mut Vec<&'a Block>) {
-    out.extend(s.blocks.iter().filter(|b| matches!(b, Block::Table { .. })));
-    for sub in &s.subsections {
-        tables(sub, out);
-    }
-}
-
+/// The tables of the note's first section (the synthesis).
 fn synthesis_tables(note: &Note) -> Vec<&Block> {
-    let mut out = Vec::new();
-    if let Some(s) = note.sections.first() {
-        tables(s, &mut out);
-    }
-    out
+    let first = note.sections.first().map(section_blocks).unwrap_or_default();
+    first.into_iter().filter(|b| matches!(b, Block::Table { .. })).collect()
 }
 
 /// Every synthesis by positions (the textbook's П1.1–П1.5): the names in

@@ -6,7 +6,10 @@
 //! with a sliding pair on a turning guide has a Coriolis term
 //! (Артоболевский 1988, § 15: a^k = 2 ω v_r), one whose guides do not turn
 //! (the frame, a ram sliding on it) has none; the line under each formula
-//! names every symbol it uses and no other; no link is called a coupler.
+//! names every symbol it uses and no other; no link is called a coupler;
+//! a slider driving the mechanism has its own line (v_B = v, a_B = a, no
+//! ω·l). Failed before for the slider-driven linkage: its note had no
+//! vector equations at all.
 
 use std::collections::BTreeSet;
 
@@ -20,8 +23,9 @@ use super::fixtures::task;
 /// The mechanisms: the four-bar (RRR), seed 003's six-bar (RRR + RRP,
 /// crank OA), the engine (two RRP), the shaper with the rocking guide
 /// (RPR + RRP), the shaper with the ram (RRR + RPP), the knee press, the
-/// oscillating cylinder (RPR) and the moving guides (PRP).
-const TASKS: [&str; 8] = [
+/// oscillating cylinder (RPR), the moving guides (PRP) and the linkage
+/// driven by a slider on a fixed guide (slider 1, RRR).
+const TASKS: [&str; 9] = [
     "default",
     "seed-003-sixbar.toml",
     "textbook/p2-engine.toml",
@@ -30,6 +34,7 @@ const TASKS: [&str; 8] = [
     "seed-002-knee-press.toml",
     "textbook/p1-5-oscillating-cylinder-v1.toml",
     "prp-moving-guides.toml",
+    "slider-input.toml",
 ];
 
 struct Pair {
@@ -175,6 +180,14 @@ fn each_mechanism_has_its_own_group_equations() {
                 .collect();
             assert!(letters(v_lines[0]).is_subset(&own), "{name}: {} against {own:?}", v_lines[0]);
             assert!(!letters(v_lines[0]).is_empty(), "{name}: {}", v_lines[0]);
+            // a slider on a fixed guide does not turn: each of its points
+            // moves with the slider's given v and a (v_B = v, a_B = a), no ω·l
+            if report.pointer("/linkage/input/kind").and_then(Value::as_str) == Some("slider") {
+                for (line, given) in [(v_lines[0], "= v"), (a_lines[0], "= a")] {
+                    assert!(line.contains(given), "{name} {lang:?}: {line}");
+                    assert!(!line.contains("omega") && !line.contains("l_("), "{name} {lang:?}: {line}");
+                }
+            }
             for (k, g) in groups.iter().enumerate() {
                 let links: Vec<&str> = g["links"].as_array().unwrap().iter().map(|l| l.as_str().unwrap()).collect();
                 let mine: Vec<&Pair> = pairs

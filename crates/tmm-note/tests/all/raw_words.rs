@@ -5,26 +5,11 @@
 //! in any example or the default project, in ru, uk and en; and every
 //! note has a title.
 
-use tmm_note::notation::{MATH_CLOSE, MATH_OPEN};
-use tmm_note::{Block, Cell, Section, Span, Text, compose};
-use tmm_report::TaskSource;
+use tmm_note::{Block, Cell, Span, Text, compose};
 use tmm_report::project::Language;
-use tmm_report::run::{DEFAULT_TASK, run_task_in};
+use tmm_report::run::run_task_in;
 
-/// The text of `s` outside its math runs.
-fn outside_math(s: &str) -> String {
-    let mut out = String::new();
-    let mut depth = 0_i32;
-    for ch in s.chars() {
-        match ch {
-            MATH_OPEN => depth += 1,
-            MATH_CLOSE => depth -= 1,
-            _ if depth == 0 => out.push(ch),
-            _ => {}
-        }
-    }
-    out
-}
+use super::fixtures::{all_tasks, note_blocks, note_sections, outside_math, section_blocks, task};
 
 /// The raw notation of a text: a `^`, or a `_` between letters or digits.
 fn raw(s: &str) -> Option<String> {
@@ -51,53 +36,24 @@ fn text_raw(t: &Text, out: &mut Vec<String>) {
     }
 }
 
-fn blocks_raw(bs: &[Block], out: &mut Vec<String>) {
-    for b in bs {
-        match b {
-            Block::Paragraph(t) => text_raw(t, out),
-            Block::List(items) => items.iter().for_each(|t| text_raw(t, out)),
-            Block::Table { caption, header, rows, .. } => {
-                out.extend(raw(caption));
-                out.extend(header.iter().filter_map(|h| raw(h)));
-                for row in rows {
-                    for c in row {
-                        if let Cell::Text(t) = c {
-                            text_raw(t, out);
-                        }
+fn block_raw(b: &Block, out: &mut Vec<String>) {
+    match b {
+        Block::Paragraph(t) => text_raw(t, out),
+        Block::List(items) => items.iter().for_each(|t| text_raw(t, out)),
+        Block::Table { caption, header, rows, .. } => {
+            out.extend(raw(caption));
+            out.extend(header.iter().filter_map(|h| raw(h)));
+            for row in rows {
+                for c in row {
+                    if let Cell::Text(t) = c {
+                        text_raw(t, out);
                     }
                 }
             }
-            Block::Figure { caption, .. } => out.extend(raw(caption)),
-            _ => {}
         }
+        Block::Figure { caption, .. } => out.extend(raw(caption)),
+        _ => {}
     }
-}
-
-fn section_raw(s: &Section, out: &mut Vec<String>) {
-    out.extend(raw(&s.title));
-    blocks_raw(&s.blocks, out);
-    for sub in &s.subsections {
-        section_raw(sub, out);
-    }
-}
-
-/// Every task file under examples/ and examples/textbook/, and the default.
-fn tasks() -> Vec<TaskSource> {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
-    let mut out = vec![TaskSource::new("default.toml", DEFAULT_TASK)];
-    for dir in [root.clone(), root.join("textbook")] {
-        let mut paths: Vec<_> = std::fs::read_dir(&dir)
-            .unwrap()
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-            .collect();
-        paths.sort();
-        for p in paths {
-            let text = std::fs::read_to_string(&p).unwrap();
-            out.push(TaskSource::new(p.display().to_string(), text));
-        }
-    }
-    out
 }
 
 /// No raw `^` or `_` outside the math in any composed note, and no empty
@@ -109,7 +65,7 @@ fn tasks() -> Vec<TaskSource> {
 fn no_note_prints_raw_notation_outside_its_math() {
     let mut faults = Vec::new();
     let mut notes = 0;
-    for task in tasks() {
+    for task in all_tasks() {
         for lang in [Language::Ru, Language::Uk, Language::En] {
             let Ok(run) = run_task_in(&task, Some(lang)) else { continue };
             let Ok(note) = compose(&run, &task) else { continue };
@@ -117,16 +73,9 @@ fn no_note_prints_raw_notation_outside_its_math() {
             if note.project.title.trim().is_empty() {
                 faults.push(format!("{} {lang:?}: an empty title, «» on the title page", task.name));
             }
-            let mut found = Vec::new();
-            blocks_raw(&note.assignment, &mut found);
-            for s in note
-                .introduction
-                .iter()
-                .chain(&note.sections)
-                .chain(&note.conclusion)
-                .chain(&note.appendices)
-            {
-                section_raw(s, &mut found);
+            let mut found: Vec<String> = note_sections(&note).iter().filter_map(|s| raw(&s.title)).collect();
+            for b in note_blocks(&note) {
+                block_raw(b, &mut found);
             }
             // the caller's own strings stay literal (a title "m = 30 мм, a_w = 560 мм")
             let title = note.project.title.as_str();
@@ -145,27 +94,24 @@ fn no_note_prints_raw_notation_outside_its_math() {
 /// and speed v = ω·ds/dφ. Failed before: "хід h = 20,00°" and v, a in m/s.
 #[test]
 fn an_oscillating_followers_note_gives_its_swing_and_angular_analogues() {
-    let path = format!("{}/../../examples/cam-oscillating-roller.toml", env!("CARGO_MANIFEST_DIR"));
-    let task = TaskSource::new(path.clone(), std::fs::read_to_string(&path).unwrap());
+    let task = task("cam-oscillating-roller.toml");
     for lang in [Language::Ru, Language::Uk, Language::En] {
         let run = run_task_in(&task, Some(lang)).unwrap();
         let note = compose(&run, &task).unwrap();
         let cam = &note.sections[0];
         let mut text = String::new();
         let mut formulas = Vec::new();
-        for sub in &cam.subsections {
-            for b in &sub.blocks {
-                match b {
-                    Block::Paragraph(t) => {
-                        for s in &t.0 {
-                            if let Span::Plain(p) = s {
-                                text.push_str(&outside_math(p));
-                            }
+        for b in section_blocks(cam) {
+            match b {
+                Block::Paragraph(t) => {
+                    for s in &t.0 {
+                        if let Span::Plain(p) = s {
+                            text.push_str(&outside_math(p));
                         }
                     }
-                    Block::Formula { typst_math, .. } => formulas.push(typst_math.clone()),
-                    _ => {}
                 }
+                Block::Formula { typst_math, .. } => formulas.push(typst_math.clone()),
+                _ => {}
             }
         }
         for stroke in [" ход ", " хід ", " stroke "] {
@@ -188,7 +134,7 @@ fn an_oscillating_followers_note_gives_its_swing_and_angular_analogues() {
 /// ahead of the tables.
 #[test]
 fn the_dynamics_tables_come_before_its_diagrams() {
-    let task = TaskSource::new("default.toml", DEFAULT_TASK);
+    let task = task("default");
     for lang in [Language::Ru, Language::Uk, Language::En] {
         let run = run_task_in(&task, Some(lang)).unwrap();
         let note = compose(&run, &task).unwrap();
