@@ -17,7 +17,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         Block::List(vec![
             cx.w("assume_rigid")?.into(),
             cx.w("assume_friction")?.into(),
-            cx.w("assume_md_constant")?.into(),
+            cx.w(if engine(cx) { "assume_mres_constant" } else { "assume_md_constant" })?.into(),
         ]),
         cx.para(
             "dy_given",
@@ -53,12 +53,23 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         cx.para("dy_f_inertia", &[])?,
         formula("I_\"II\"(phi) = sum_(i != 1) [m_i (v_(S i) / omega_1)^2 + J_(S i) (omega_i / omega_1)^2]"),
         cx.para("where_reduced_inertia", &[])?,
-        cx.para("dy_f_moment", &[])?,
+        cx.para(if engine(cx) { "dy_f_moment_engine" } else { "dy_f_moment" }, &[])?,
         formula("M_c (phi) = sum_i (arrow(F)_i dot arrow(v)_i + M_i omega_i) / omega_1, quad A_c (phi) = integral_0^phi M_c dif phi"),
-        cx.para("where_reduced_moment", &[])?,
-        cx.para("dy_f_md", &[])?,
-        formula(&format!("{} = -(A_c (2 pi)) / (2 pi), quad Delta T = A_d + A_c", cx.sym("sym_md")?)),
-        cx.para("where_md", &[])?,
+        cx.para(
+            if engine(cx) {
+                "where_reduced_moment_engine"
+            } else {
+                "where_reduced_moment"
+            },
+            &[],
+        )?,
+        cx.para(if engine(cx) { "dy_f_md_engine" } else { "dy_f_md" }, &[])?,
+        formula(&format!(
+            "{} = -(A_c ({p})) / ({p}), quad Delta T = A_d + A_c",
+            cx.sym(md_sym(cx))?,
+            p = period(cx).1
+        )),
+        cx.para(if engine(cx) { "where_md_engine" } else { "where_md" }, &[])?,
         // Mertsalov's construction (mertsalov.rs in tmm-linkage): T_II at the
         // mean speed, T_I = ΔT − T_II, its swing sizes the flywheel
         cx.para("dy_f_mertsalov", &[])?,
@@ -78,7 +89,10 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     results.push(cx.quantities(
         "tab_dynamics",
         vec![
-            (cx.w("q_md")?, cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?),
+            (
+                cx.w(if engine(cx) { "q_md_engine" } else { "q_md" })?,
+                cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?,
+            ),
             (cx.w("q_energy_swing")?, cx.qv("/dynamics/mertsalov/energy_swing", 1.0, "u_j")?),
             (
                 cx.w("q_i_mertsalov")?,
@@ -142,7 +156,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         }
     }
     let mut conclusions = vec![cx.para(
-        "dy_conclusion",
+        if engine(cx) { "dy_conclusion_engine" } else { "dy_conclusion" },
         &[
             cx.qv("/dynamics/driving_moment", 1.0, "u_nm")?,
             cx.qv("/dynamics/flywheel_inertia", 1.0, "u_kgm2")?,
@@ -156,6 +170,44 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         conclusions.push(flywheel_conclusion(cx)?);
     }
     Ok(Some(four_parts(cx, "sec_dynamics", statement, formulas, results, conclusions)?))
+}
+
+/// Whether the machine is an engine (`driving = "engine"`): its loads
+/// (the gas forces, the weights) drive, and the constant moment found from
+/// the cycle's zero work is the driven machine's resistance, not a driving
+/// torque (Чёрная, Тимофеев 2019, П2).
+fn engine(cx: &Ctx) -> bool {
+    // the report's `driving` names the constant moment's model; the task
+    // names the engine
+    cx.task.get("dynamics").and_then(|d| d.get("driving")).and_then(toml::Value::as_str) == Some("engine")
+}
+
+/// The symbol of the constant moment: the driving torque, or an engine's
+/// moment of resistance.
+fn md_sym(cx: &Ctx) -> &'static str {
+    if engine(cx) { "sym_mres" } else { "sym_md" }
+}
+
+/// The machine's cycle Φ in radians and as typst math: 2π for one turn,
+/// 4π for the two turns of a four-stroke engine (`/dynamics/cycle_period`);
+/// the constant moment is −A_c(Φ)/Φ (the work over the cycle is zero).
+fn period(cx: &Ctx) -> (f64, String) {
+    let tau = std::f64::consts::TAU;
+    let phi = cx
+        .opt("/dynamics/cycle_period")
+        .filter(|p| p.is_finite() && *p > 0.0)
+        .unwrap_or(tau);
+    let turns = (phi / tau).round();
+    if turns >= 1.0 && (phi - turns * tau).abs() < 1e-9 * phi {
+        (turns * tau, format!("{} pi", 2.0 * turns))
+    } else {
+        (
+            phi,
+            crate::number::format_number(phi, 4, cx.lang)
+                .map(|f| f.mantissa)
+                .unwrap_or_default(),
+        )
+    }
 }
 
 /// Whether the task's flywheel is a rim (обод), not a disc (диск).
@@ -218,11 +270,12 @@ fn worked(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
     let (Some(ac), Some(md)) = (work_end, cx.opt("/dynamics/driving_moment")) else {
         return Ok(out);
     };
-    let two_pi = || calc::exact(std::f64::consts::TAU, "2 pi");
-    out.push(cx.para("calc_md", &[])?);
+    // the machine's cycle: one turn, or two of a four-stroke engine (4π)
+    let (phi_c, p) = period(cx);
+    out.push(cx.para(if engine(cx) { "calc_md_engine" } else { "calc_md" }, &[])?);
     out.push(Block::Calculation(Calculation::new(
-        Quantity::new(&cx.sym("sym_md")?, md, &cx.w("u_nm")?),
-        calc::neg(calc::div(calc::q("A_c (2 pi)", ac, ""), two_pi())),
+        Quantity::new(&cx.sym(md_sym(cx))?, md, &cx.w("u_nm")?),
+        calc::neg(calc::div(calc::q(&format!("A_c ({p})"), ac, ""), calc::exact(phi_c, &p))),
     )));
     let omega = cx.v("/dynamics/omega_nominal")?;
     let delta = cx.v("/dynamics/delta_requested")?;

@@ -10,6 +10,31 @@ use crate::calc::{self, Calculation, Expr, Quantity};
 use crate::error::NoteError;
 use crate::model::{Block, Cell, Section};
 
+/// The statement's sentence on the crank's motion: uniform at the nominal
+/// ω1, or (the task's `crank_motion = "dynamics"`) the true ω1 and ε1 of
+/// the machine with its flywheel at the position analysed.
+fn given(cx: &Ctx, phi: &str) -> Result<Block, NoteError> {
+    if cx.s("/forces/crank_motion") == Some("dynamics")
+        && let (Some(w), Some(e)) = (cx.opt("/forces/detail/omega1"), cx.opt("/forces/detail/epsilon1"))
+    {
+        return cx.para("fo_given_dynamics", &[phi.to_string(), cx.q(w, "u_rad_s")?, cx.q(e, "u_rad_s2")?]);
+    }
+    cx.para("fo_given", &[cx.qv("/forces/omega1", 1.0, "u_rad_s")?, phi.to_string()])
+}
+
+/// A reaction's or couple's name of the task (`R30`, `M50`) as the course
+/// writes it, its links' numbers lowered (R₃₀) and marked as math; any
+/// other name stays literal.
+fn reaction_symbol(name: &str) -> String {
+    let mut chars = name.chars();
+    match (chars.next(), chars.as_str()) {
+        (Some(c @ ('R' | 'M')), digits) if !digits.is_empty() && digits.chars().all(|d| d.is_ascii_digit()) => {
+            crate::notation::notation(&format!("{c}_{digits}"))
+        }
+        _ => crate::notation::strip(name),
+    }
+}
+
 /// The section, if the report has `forces`.
 pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
     let Some(fo) = cx.report.get("forces") else { return Ok(None) };
@@ -20,7 +45,7 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
             cx.w("assume_pairs")?.into(),
             cx.w("assume_friction")?.into(),
         ]),
-        cx.para("fo_given", &[cx.qv("/forces/omega1", 1.0, "u_rad_s")?, phi.clone()])?,
+        given(cx, &phi)?,
         cx.para("fo_method", &[])?,
         cx.para("fo_sought", &[])?,
     ];
@@ -151,7 +176,13 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
         };
         let mut figs: Vec<(String, &str, String)> = Vec::new();
         for n in names("diagrams") {
-            figs.push((format!("forces/reaction-{n}.svg"), "fig_reaction_cycle", n));
+            // a reaction R50 or a guide's couple M50
+            let key = if n.starts_with('M') {
+                "fig_couple_over_cycle"
+            } else {
+                "fig_reaction_over_cycle"
+            };
+            figs.push((format!("forces/reaction-{n}.svg"), key, n));
         }
         for n in names("hodographs") {
             figs.push((format!("forces/hodograph-{n}.svg"), "fig_hodograph", n.clone()));
@@ -165,8 +196,14 @@ pub(crate) fn section(cx: &Ctx) -> Result<Option<Section>, NoteError> {
                 label,
             }) = cx.figure(&path, key)?
             {
+                let name = reaction_symbol(&name);
+                let caption = if caption.contains("{1}") {
+                    caption.replace("{1}", &name)
+                } else {
+                    format!("{caption} {name}")
+                };
                 results.push(Block::Figure {
-                    caption: format!("{caption} {name}"),
+                    caption,
                     svg,
                     width_mm,
                     label,

@@ -367,6 +367,23 @@ fn slider_section(cx: &Ctx, lk: &Value) -> Result<Section, NoteError> {
     four_parts(cx, "sec_linkage", statement, formulas, results, conclusions)
 }
 
+/// A point's name as the plans and the scheme letter it: in italics, its
+/// trailing number lowered (`S2` → S₂, as the drawings' `S_2`); a name of
+/// other characters stays literal.
+fn point_cell(name: &str) -> crate::model::Cell {
+    let base = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    let index = &name[base.len()..];
+    if base.is_empty() || !base.chars().all(|c| c.is_ascii_alphabetic()) {
+        return text(name);
+    }
+    let math = if index.is_empty() {
+        math_name(base)
+    } else {
+        format!("{}_({index})", math_name(base))
+    };
+    crate::model::Cell::Text(crate::model::Text(vec![crate::model::Span::Math(math)]))
+}
+
 /// The points' speeds and accelerations read off the plans' absolute vectors.
 fn plan_rows(lk: &Value) -> Vec<Vec<crate::model::Cell>> {
     let Some(plan) = lk.pointer("/plans/velocity").and_then(Value::as_array) else {
@@ -389,7 +406,7 @@ fn plan_rows(lk: &Value) -> Vec<Vec<crate::model::Cell>> {
                     && a.get("label").and_then(Value::as_str).map(|l| l.trim_start_matches("a_")) == Some(point)
             })
             .map(vec_len);
-        rows.push(vec![text(point), num(mag), a.map_or(crate::model::Cell::Empty, num)]);
+        rows.push(vec![point_cell(point), num(mag), a.map_or(crate::model::Cell::Empty, num)]);
     }
     rows
 }

@@ -42,16 +42,28 @@ fn given_value(cx: &Ctx, key: &str, v: f64) -> Result<String, NoteError> {
         as_given(cx, task, v.to_degrees(), "u_deg")
     } else if VELOCITIES.contains(&key) {
         as_given(cx, task, v, "u_m_s")
-    } else if PURE.contains(&key) || key == "lambda_e" {
+    } else if PURE.contains(&key) || key == "lambda_e" || coupler_ratio(cx, key) {
         as_given(cx, task, v, "")
     } else {
         as_given(cx, task, v * 1000.0, "u_mm")
     }
 }
 
-/// Names of the textbook's angles (γн, φ12, θк, …): printed in degrees.
+/// Names of the textbook's angles (γн, φ12, θк, …) and the task's other
+/// angles (`frame_angle`, `pivot_angle`, `extreme_pressure`,
+/// `pivot_max_pressure`, `transmission_min`, `design_position`: the
+/// angles of tmm-report's `param_dim`): printed in degrees.
 fn is_angle_name(key: &str) -> bool {
     ["gamma", "phi", "psi", "theta", "pressure_"].iter().any(|p| key.starts_with(p))
+        || key.ends_with("_angle")
+        || key.ends_with("_pressure")
+        || matches!(key, "transmission_min" | "design_position")
+}
+
+/// Whether the given `coupler` is the slotted lever's ratio of the coupler
+/// to the rocker (the task's `coupler_ratio`, a bare number), not a length.
+fn coupler_ratio(cx: &Ctx, key: &str) -> bool {
+    key == "coupler" && cx.task.get("synthesis").and_then(|s| s.get("coupler_ratio")).is_some()
 }
 
 /// The kinds solved by positions and loop equations (the textbook's П1),
@@ -115,6 +127,9 @@ fn cylinder_word(cx: &Ctx, key: &str) -> Option<String> {
 /// The name of a given value: the cylinder's own words, the words'
 /// `given_<key>`, else the key.
 fn given_name(cx: &Ctx, key: &str) -> String {
+    if coupler_ratio(cx, key) {
+        return cx.w("given_coupler_ratio").unwrap_or_else(|_| key.to_string());
+    }
     cylinder_word(cx, key)
         .or_else(|| cx.w(&format!("given_{key}")).ok())
         .unwrap_or_else(|| key.to_string())

@@ -125,6 +125,8 @@ fn the_engine_and_six_bar_examples_formulas_check() {
     for (file, expected) in [
         ("compressor-two-stage.toml", &["W", "v_(A)"][..]),
         ("seed-003-sixbar.toml", &["W", "v_(A)"][..]),
+        // the engine's cycle is two turns: its constant moment is −A_c(4π)/4π
+        ("textbook/p2-engine.toml", &["W", "v_(A)", "M_\"сопр\"", "I_\"M\""][..]),
     ] {
         let note = note_of(file, &examples::text(file), Language::Ru);
         check_all(&note, expected);

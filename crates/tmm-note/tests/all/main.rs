@@ -28,5 +28,6 @@ mod raw_words;
 mod scales_pdf;
 mod sheets_dxf_pdf;
 mod sheets_pdf;
+mod teacher_marks;
 mod typeset;
 mod where_lines;

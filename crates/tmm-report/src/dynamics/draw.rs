@@ -544,7 +544,10 @@ pub fn draw_all(d: &Dynamics, prefix: &str, lang: Language, sheet: SheetFormat, 
 
     // the reduced moments
     let md = c.driving_moment;
-    let (mc, mdn) = (wd("sym_mc"), wd("sym_md"));
+    // an engine's constant moment is the driven machine's resistance (its
+    // loads drive), not a driving torque
+    let engine = d.spec.driving == tmm_linkage::dynamics::DrivingMoment::Engine;
+    let (mc, mdn) = (wd("sym_mc"), wd(if engine { "sym_mres" } else { "sym_md" }));
     let mut ch = chart(
         &wd("title_moments"),
         ("M", &u_nm),

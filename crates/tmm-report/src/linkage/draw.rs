@@ -397,17 +397,20 @@ fn scheme(l: &Loaded, a: &Analysis, task: &TaskSource) -> Picture {
         let pin = sol.points[m.crank.pin].p;
         c.label_toward(xy(pin), outward(pin), &bold_label(a, lang), H_SMALL, "#000");
     }
+    // a link's number with no clear place by its link goes out on a
+    // leader line, never onto the scale line or another label (the
+    // engine's short crank on the note's page)
     let mut numbered: Vec<usize> = Vec::new();
     for (li, p, q) in &segs {
         if !numbered.contains(li) {
             numbered.push(*li);
-            c.label(xy((*p + *q) * 0.5), &m.link_names[*li], H_TITLE, "#000");
+            c.label_led(xy((*p + *q) * 0.5), &m.link_names[*li], H_TITLE, "#000");
         }
     }
     for (li, at) in sliders {
         if !numbered.contains(&li) {
             numbered.push(li);
-            c.label(xy(at), &m.link_names[li], H_TITLE, "#000");
+            c.label_led(xy(at), &m.link_names[li], H_TITLE, "#000");
         }
     }
     c.end_group();

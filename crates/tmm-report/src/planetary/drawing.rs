@@ -369,10 +369,10 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
             } else {
                 format!(" = {}", fraction_text(b))
             },
-            num(lang, b.ratio.value(), 6)
+            ratio_text(lang, b.ratio.value())
         ),
-        format!("{} = {}", word(lang, "planetary.read_picture"), num(lang, ratio_picture, 6)),
-        format!("{} = {}", word(lang, "planetary.read_diagram"), num(lang, ratio_diagram, 6)),
+        format!("{} = {}", word(lang, "planetary.read_picture"), ratio_text(lang, ratio_picture)),
+        format!("{} = {}", word(lang, "planetary.read_diagram"), ratio_text(lang, ratio_diagram)),
         format!(
             // no-break spaces hold each "name = value unit" on one line
             "k\u{a0}=\u{a0}{}; {}\u{a0}{}; a_w\u{a0}=\u{a0}{}\u{a0}{mm}; m\u{a0}=\u{a0}{}\u{a0}{mm}; η\u{a0}=\u{a0}{} ({})",
@@ -403,4 +403,14 @@ pub fn sheet(a: &Analysis, lang: Language, format: SheetFormat) -> Sheet {
         ratio_picture,
         ratio_diagram,
     }
+}
+
+/// A ratio with four significant digits, as the note prints its numbers
+/// (−0,05000, 6,000, 12,50), not six decimals (−0,050000, 6,000000).
+fn ratio_text(lang: Language, v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return num(lang, v, 0);
+    }
+    let decimals = (3 - v.abs().log10().floor() as i64).clamp(0, 8) as usize;
+    num(lang, v, decimals)
 }

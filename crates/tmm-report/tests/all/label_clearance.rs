@@ -254,3 +254,29 @@ fn level_names_keep_off_the_curves() {
     assert!(seen >= 20, "only {seen} level names read");
     assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
 }
+
+/// The scheme in 12 positions keeps its scale line clear: no link number
+/// or other label prints into "М 1:4, μ_l = 0,004 м/мм" (the engine's short
+/// crank once put its number 1 between "1:4," and "μ_l" on the note's
+/// page), on the A1 sheet and the note's page, in ru, uk and en.
+#[test]
+fn positions_scheme_labels_keep_off_the_scale_line() {
+    let mut bad = Vec::new();
+    let text = examples::text("textbook/p2-engine.toml");
+    for lang in [Language::Ru, Language::Uk, Language::En] {
+        let t = TaskSource::new("textbook/p2-engine.toml", text.clone()).with_lang(lang);
+        let runs = [("A1", run_task(&t).unwrap().docs), ("A4", note_figures(&t, None).unwrap())];
+        for (what, docs) in runs {
+            let pic = docs.picture("linkage/positions.svg").unwrap();
+            let all = crate::label_ink::texts(pic);
+            let scale: Vec<_> = all.iter().filter(|b| b.text.contains("μ")).collect();
+            assert_eq!(scale.len(), 1, "{lang:?} {what}: one scale line among {all:?}");
+            for b in all.iter().filter(|b| !b.text.contains("μ")) {
+                if b.gap(scale[0]) < 0.3 {
+                    bad.push(format!("{lang:?} {what}: «{}» on the scale line «{}»", b.text, scale[0].text));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}

@@ -32,3 +32,22 @@ fn drawn_ratio_is_willis() {
         assert!(!s.svg.contains("NaN") && !s.svg.contains("inf"));
     }
 }
+
+/// The drawing's ratios (Willis', read off the picture and off the
+/// diagram) carry four significant digits as the note's numbers do: the
+/// int-int train's u_1H = −1/20 (z = 100, 30, 28, 98 of
+/// examples/planetary-int-int.toml: 1 − 30·98/(100·28)) as −0,05000, not
+/// −0,050000; the sun-planet-ring train's 1 + 85/17 = 6 as 6,000.
+#[test]
+fn drawn_ratios_have_four_significant_digits() {
+    for (scheme, u, printed, silly) in [
+        (Scheme::IntInt, -0.05, "0,05000", "0,050000"),
+        (Scheme::SunPlanetRing, 6.0, "6,000", "6,0000"),
+    ] {
+        let a = analyse(&Params::new(Request::new(scheme, u, 3)), &Origin::cli()).unwrap();
+        let s = sheet(&a, Default::default(), Default::default());
+        assert!((a.best.ratio.value() - u).abs() < 1e-12, "{scheme:?}");
+        assert_eq!(s.svg.matches(printed).count(), 3, "{scheme:?}: the three ratios as {printed}");
+        assert!(!s.svg.contains(silly), "{scheme:?}: a ratio with six decimals");
+    }
+}
