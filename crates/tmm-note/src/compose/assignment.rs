@@ -216,7 +216,7 @@ fn task_quantity(v: &toml::Value) -> Option<(f64, String)> {
 /// `"380 N m"` → «380 Н·м», `"10 kg/m"` → «10 кг/м», `"9.81 m/s^2"` →
 /// «9,81 м/с²»; a multiple (kN, m of a length) in the note's unit (Н, мм).
 /// A unit the note does not know is printed as the task writes it.
-fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
+pub(crate) fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteError> {
     let Some((value, unit)) = task_quantity(v) else {
         return Ok(match v {
             toml::Value::String(s) => s.clone(),

@@ -21,6 +21,8 @@ const ANGLES: &[&str] = &[
     "transmission_angle",
     "arm_angle",
     "max_pressure",
+    "extreme_pressure",
+    "frame_angle",
     "delta",
 ];
 /// Keys of the given values without a unit.
@@ -143,15 +145,37 @@ fn found_name(cx: &Ctx, key: &str) -> String {
         .unwrap_or_else(|| key.to_string())
 }
 
-/// The given values of the synthesis as (name, value) rows.
+/// Givens of the task's `[synthesis]` the report does not repeat: the
+/// frame's direction, the knee press' horizontal, the shaper's design
+/// position, the line of the six-bar's crank pivot.
+const TASK_ONLY: &[&str] = &["frame_angle", "horizontal", "design_position", "pivot_through"];
+
+/// The given values of the synthesis as (name, value) rows, then the
+/// task's givens the report does not repeat, as the task writes them.
 pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     let mut rows = Vec::new();
-    if let Some(g) = cx.report.pointer("/synthesis/given").and_then(Value::as_object) {
+    let given = cx.report.pointer("/synthesis/given").and_then(Value::as_object);
+    if let Some(g) = given {
         for (k, v) in g {
             if let Some(x) = v.as_f64() {
                 rows.push((given_name(cx, k), given_value(cx, k, x)?));
             }
         }
+    }
+    let task = cx.task.get("synthesis").and_then(toml::Value::as_table);
+    for key in TASK_ONLY {
+        let (Some(v), false) = (task.and_then(|t| t.get(*key)), given.is_some_and(|g| g.contains_key(*key))) else {
+            continue;
+        };
+        let value = match v {
+            // a point (x; y)
+            toml::Value::Array(a) => {
+                let parts: Result<Vec<String>, NoteError> = a.iter().map(|p| super::assignment::quantity_text(cx, p)).collect();
+                format!("({})", parts?.join("; "))
+            }
+            _ => super::assignment::quantity_text(cx, v)?,
+        };
+        rows.push((given_name(cx, key), value));
     }
     Ok(rows)
 }

@@ -274,22 +274,10 @@ fn written(v: &toml::Value, lang: Lang) -> Option<String> {
 /// `[planetary]`, `[cylinder]`, δ of `[dynamics]` and the input's speed,
 /// position and travel of `[linkage]`. Left out: the values the assignment
 /// does not state yet — a cam's profile margins, the gear pair's minimal
-/// tip thickness, a few
-/// synthesis kinds' auxiliary data (the design position, the frame's
-/// angle, the knee press' horizontal, the six-bar's pivot line), the
-/// planetary search's tolerance — and the dynamics' number of integration
+/// tip thickness, the planetary search's tolerance — and the dynamics' number of integration
 /// points (not a given of the machine).
 fn task_givens(task: &toml::Table) -> Vec<(String, &toml::Value)> {
-    const NOT_STATED: &[&str] = &[
-        "cam.min_curvature",
-        "cam.face_margin",
-        "gear.sa_min",
-        "synthesis.design_position",
-        "synthesis.frame_angle",
-        "synthesis.horizontal",
-        "synthesis.pivot_through",
-        "planetary.tolerance",
-    ];
+    const NOT_STATED: &[&str] = &["cam.min_curvature", "cam.face_margin", "gear.sa_min", "planetary.tolerance"];
     fn walk<'a>(path: &str, v: &'a toml::Value, out: &mut Vec<(String, &'a toml::Value)>) {
         match v {
             toml::Value::Table(t) => t.iter().for_each(|(k, w)| walk(&format!("{path}.{k}"), w, out)),
@@ -488,6 +476,9 @@ fn the_assignment_states_every_given_of_its_task_with_the_scheme() {
         example("gear-seed001.toml"),
         example("gear-seed003.toml"),
         example("textbook/p6-cam-oscillating.toml"),
+        example("synth-seed-002-ex1-crank-rocker.toml"),
+        example("synth-seed-002-ex2-knee-press.toml"),
+        example("synth-seed-002-ex4-six-bar.toml"),
     ];
     let mut faults = Vec::new();
     for task in &tasks {
