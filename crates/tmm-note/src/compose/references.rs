@@ -138,3 +138,66 @@ fn join_in(lang: Lang, blocks: &mut Vec<Block>) {
         i = end;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sentence_for(l: &str) -> Block {
+        Block::Paragraph(super::sentence("На рисунке {1} — {2}.", l, "План"))
+    }
+    fn figure(l: &str) -> Block {
+        Block::Figure {
+            caption: "План".into(),
+            svg: String::new(),
+            width_mm: 10.0,
+            label: Some(l.into()),
+        }
+    }
+
+    /// Two figures in a row, each after its sentence, are named in one
+    /// paragraph, the second sentence in lower case after a semicolon; a
+    /// lone figure keeps its sentence.
+    #[test]
+    fn a_run_of_figures_is_named_in_one_paragraph() {
+        let mut s = Section::new("2.3");
+        s.blocks = vec![
+            sentence_for("f1"),
+            figure("f1"),
+            sentence_for("f2"),
+            figure("f2"),
+            Block::Paragraph(Text::plain("Текст.")),
+            sentence_for("f3"),
+            figure("f3"),
+        ];
+        join_figure_runs(Lang::Ru, std::slice::from_mut(&mut s));
+        let kinds: Vec<&str> = s
+            .blocks
+            .iter()
+            .map(|b| match b {
+                Block::Paragraph(_) => "p",
+                Block::Figure { .. } => "f",
+                _ => "?",
+            })
+            .collect();
+        assert_eq!(kinds, ["p", "f", "f", "p", "p", "f"]);
+        let Block::Paragraph(t) = &s.blocks[0] else { unreachable!() };
+        assert_eq!(
+            t.0,
+            vec![
+                Span::Plain("На рисунке ".into()),
+                Span::Ref("f1".into()),
+                Span::Plain(" — план;".into()),
+                Span::Plain(" на рисунке ".into()),
+                Span::Ref("f2".into()),
+                Span::Plain(" — план.".into()),
+            ]
+        );
+        // English keeps the capital, glued to the semicolon
+        let mut s = Section::new("2.3");
+        s.blocks = vec![sentence_for("f1"), figure("f1"), sentence_for("f2"), figure("f2")];
+        join_figure_runs(Lang::En, std::slice::from_mut(&mut s));
+        let Block::Paragraph(t) = &s.blocks[0] else { unreachable!() };
+        assert_eq!(t.0[3], Span::Plain("\u{a0}На рисунке ".into()));
+    }
+}
