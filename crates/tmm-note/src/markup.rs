@@ -62,7 +62,7 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
         contents: Vec::new(),
     };
     w.out.push_str(
-        "#import \"/template.typ\": note, sources, appendices, svg-figure, float-side, table-continued, section-break, with-next, numbered-formula\n",
+        "#import \"/template.typ\": note, sources, appendices, svg-figure, figure-row, float-side, table-continued, section-break, with-next, numbered-formula\n",
     );
     // the course's tangent in Russian and Ukrainian is tg (ctg), as the
     // where-lines and the textbooks write it; typst's math names it tan
@@ -124,6 +124,65 @@ pub fn generate(note: &Note, tr: &Translation) -> Result<Generated, NoteError> {
     w.out.insert_str(contents_at, &contents);
     let main = w.resolve_refs();
     Ok(Generated { main, figures: w.figures })
+}
+
+/// The narrower text width of the note's page, mm: 165 mm with the GOST
+/// 7.32 margins (175 mm inside the frame).
+const TEXT_WIDTH_MM: f64 = 165.0;
+/// The gap between the figures of a row, mm.
+const ROW_GAP_MM: f64 = 8.0;
+
+/// A figure's printed width, mm (at most the text's), if its SVG states its
+/// size in mm.
+fn figure_width(b: &Block) -> Option<f64> {
+    let Block::Figure { svg, width_mm, .. } = b else {
+        return None;
+    };
+    let root = &svg[svg.find("<svg")?..];
+    let root = &root[..root.find('>')?];
+    let attr = |name: &str| -> Option<f64> {
+        let key = format!(" {name}=\"");
+        let v = &root[root.find(&key)? + key.len()..];
+        v[..v.find('"')?].strip_suffix("mm")?.parse().ok()
+    };
+    let (w, h) = (attr("width")?, attr("height")?);
+    if !(w > 0.0 && h > 0.0) {
+        return None;
+    }
+    let printed = width_mm.min(TEXT_WIDTH_MM);
+    Some(printed)
+}
+
+/// The rows among `bs`' figures, by the index of their first block: how
+/// many figures stand side by side. Only figures standing next to each
+/// other are grouped, as many as fit the text width with the gaps between
+/// (pieces narrower than half of it). Figures are not stacked as one float
+/// (the two plans of one position): a pair too tall for the foot of a page
+/// under the section's last text would leave that foot empty, where the
+/// first plan alone fits; the plans' μ lets them share a page instead.
+fn figure_rows(bs: &[Block]) -> HashMap<usize, usize> {
+    let mut out = HashMap::new();
+    let mut i = 0;
+    while i < bs.len() {
+        let Some(w) = figure_width(&bs[i]) else {
+            i += 1;
+            continue;
+        };
+        let mut n = 1;
+        let mut width = w;
+        while let Some(w2) = bs.get(i + n).and_then(figure_width) {
+            if width + ROW_GAP_MM + w2 > TEXT_WIDTH_MM {
+                break;
+            }
+            width += ROW_GAP_MM + w2;
+            n += 1;
+        }
+        if n > 1 {
+            out.insert(i, n);
+        }
+        i += n;
+    }
+    out
 }
 
 /// The mark standing for a reference's number until the whole note is
@@ -280,7 +339,18 @@ impl Writer<'_> {
     /// figures before it. So is a sentence ending with a colon with the
     /// formula it introduces.
     fn blocks(&mut self, bs: &[Block]) -> Result<(), NoteError> {
+        let rows = figure_rows(bs);
+        let mut skip = 0;
         for (i, b) in bs.iter().enumerate() {
+            if skip > 0 {
+                skip -= 1;
+                continue;
+            }
+            if let Some(n) = rows.get(&i) {
+                self.figure_row(&bs[i..i + n])?;
+                skip = n - 1;
+                continue;
+            }
             let names_next = match (b, bs.get(i + 1)) {
                 (Block::Paragraph(t), Some(Block::Table { label: Some(l), .. })) => t.0.iter().any(|s| matches!(s, Span::Ref(r) if r == l)),
                 // a sentence ending with a colon introduces the formula
@@ -345,35 +415,13 @@ impl Writer<'_> {
                     self.label(label);
                 }
             }
-            Block::Figure {
-                caption,
-                svg,
-                width_mm,
-                label,
-            } => {
-                if !(width_mm.is_finite() && (1.0..=1000.0).contains(width_mm)) {
-                    return Err(NoteError::FigureWidth {
-                        caption: caption.clone(),
-                        width_mm: *width_mm,
-                    });
-                }
-                let path = format!("/fig-{}.svg", self.figures.len() + 1);
-                let number = self.number_object(Object::Figure, label);
+            Block::Figure { .. } => {
                 // made inside a context, which chooses the side the k-th
                 // figure floats to (template.typ, `float-side`), the label
                 // on the figure
-                let _ = write!(
-                    self.out,
-                    "#context [#svg-figure({}, {}mm, {}, float-side({}))",
-                    string_literal(&path),
-                    width_mm,
-                    Self::caption(&self.figure_word, &number, caption),
-                    self.figures.len()
-                );
-                self.figures.push((path, svg.clone()));
-                if let Some(l) = label {
-                    let _ = write!(self.out, " <{l}>");
-                }
+                let side = format!("float-side({})", self.figures.len());
+                self.out.push_str("#context [");
+                self.figure(b, &side)?;
                 self.out.push_str("]\n\n");
             }
             Block::Calculation(c) => {
@@ -392,6 +440,64 @@ impl Writer<'_> {
                 self.out.push_str(")\n\n");
             }
         }
+        Ok(())
+    }
+
+    /// A figure (`svg-figure`) placed at `placement` (a typst expression:
+    /// `float-side(k)` for a figure that floats, `none` for one inside a
+    /// group), its label on it.
+    fn figure(&mut self, b: &Block, placement: &str) -> Result<(), NoteError> {
+        let Block::Figure {
+            caption,
+            svg,
+            width_mm,
+            label,
+        } = b
+        else {
+            return Ok(());
+        };
+        if !(width_mm.is_finite() && (1.0..=1000.0).contains(width_mm)) {
+            return Err(NoteError::FigureWidth {
+                caption: caption.clone(),
+                width_mm: *width_mm,
+            });
+        }
+        let path = format!("/fig-{}.svg", self.figures.len() + 1);
+        let number = self.number_object(Object::Figure, label);
+        let _ = write!(
+            self.out,
+            "#svg-figure({}, {}mm, {}, {placement})",
+            string_literal(&path),
+            width_mm,
+            Self::caption(&self.figure_word, &number, caption),
+        );
+        self.figures.push((path, svg.clone()));
+        if let Some(l) = label {
+            let _ = write!(self.out, " <{l}>");
+        }
+        Ok(())
+    }
+
+    /// Figures side by side that float as one (template.typ,
+    /// `figure-row`): each with its own caption and number (GOST 2.105-95,
+    /// 4.3.1), the row floating to the side its first figure's place
+    /// chooses.
+    fn figure_row(&mut self, figs: &[Block]) -> Result<(), NoteError> {
+        let first = self.figures.len();
+        let widths: Vec<String> = figs
+            .iter()
+            .map(|f| match f {
+                Block::Figure { width_mm, .. } => format!("{}mm", width_mm.min(TEXT_WIDTH_MM)),
+                _ => "auto".into(),
+            })
+            .collect();
+        let _ = write!(self.out, "#context figure-row(float-side({first}), ({},), (", widths.join(", "));
+        for f in figs {
+            self.out.push('[');
+            self.figure(f, "none")?;
+            self.out.push_str("], ");
+        }
+        self.out.push_str("))\n\n");
         Ok(())
     }
 
@@ -721,5 +827,61 @@ mod numbering_tests {
         assert!(g.main.contains("#numbered-formula(\"(1.1)\")"), "{}", g.main);
         assert!(!g.main.contains("#ref(") && !g.main.contains("counter("), "{}", g.main);
         assert!(!g.main.contains('\0'));
+    }
+}
+
+#[cfg(test)]
+mod row_tests {
+    use crate::model::{Block, Section, Text};
+
+    fn figure(label: &str, width: f64) -> Block {
+        Block::Figure {
+            caption: format!("Деталь {label}"),
+            svg: format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}mm\" height=\"40mm\" viewBox=\"0 0 {width} 40\"/>"),
+            width_mm: width,
+            label: Some(label.into()),
+        }
+    }
+
+    /// Figures next to each other stand in one row while their widths and
+    /// the 8 mm gaps fit the 165 mm text: 70 + 8 + 70 = 148 mm do, a third
+    /// of 70 mm does not, nor a figure of 120 mm; a paragraph parts them.
+    #[test]
+    fn narrow_figures_next_to_each_other_stand_in_a_row() {
+        let bs = vec![
+            figure("a", 70.0),
+            figure("b", 70.0),
+            figure("c", 70.0),
+            figure("d", 120.0),
+            Block::Paragraph(Text::plain("Текст.")),
+            figure("e", 60.0),
+            Block::Paragraph(Text::plain("Текст.")),
+            figure("f", 60.0),
+            figure("g", 90.0),
+        ];
+        let rows = super::figure_rows(&bs);
+        let mut got: Vec<(usize, usize)> = rows.into_iter().collect();
+        got.sort();
+        assert_eq!(got, vec![(0, 2), (7, 2)]);
+        // in the source: two rows, each figure with its own caption and
+        // number, in order
+        let mut note = crate::model::Note::default();
+        let mut s = Section::new("Раздел");
+        s.blocks = bs;
+        note.sections.push(s);
+        let tr = crate::translation::Translation::load(note.lang).unwrap();
+        let main = super::generate(&note, &tr).unwrap().main;
+        assert_eq!(main.matches("figure-row(").count(), 2, "{main}");
+        let at = |l: &str| main.find(&format!(" <{l}>")).unwrap_or_else(|| panic!("no figure {l}: {main}"));
+        let row = main.find("figure-row(").unwrap();
+        let row_end = row + main[row..].find("\n").unwrap();
+        assert!(
+            row < at("a") && at("a") < at("b") && at("b") < row_end && row_end < at("c"),
+            "{main}"
+        );
+        assert!(
+            at("c") < at("d") && at("d") < at("e") && at("e") < at("f") && at("f") < at("g"),
+            "{main}"
+        );
     }
 }

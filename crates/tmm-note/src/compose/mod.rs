@@ -150,6 +150,7 @@ pub fn compose(run: &Run, task: &TaskSource) -> Result<Note, NoteError> {
             order::figures_early(std::slice::from_mut(s));
         }
     }
+    references::join_figure_runs(lang, &mut sections);
     let mut sources = Vec::new();
     for i in 1.. {
         match words.get(&format!("source_{i}")) {

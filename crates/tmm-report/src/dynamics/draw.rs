@@ -144,6 +144,18 @@ pub struct Chart {
     pub levels_outside: Vec<bool>,
 }
 
+/// The longest y axis of a diagram in the note (A4), mm: a diagram is then
+/// at most about 40 + 21 + 11 − 8 mm high with its scales (its name left
+/// out, the caption names it), and three with their captions (about 15 mm
+/// each) fill the 243 mm of a framed page, where two left a third of it
+/// empty.
+const NOTE_AXIS_MM: f64 = 40.0;
+
+/// The longest y axis of a larger diagram in the note (A4; the energy–mass
+/// diagram, Wittenbauer's), mm: with a diagram of [`NOTE_AXIS_MM`] and
+/// their captions it fits a page.
+const NOTE_SMALL_AXIS_MM: f64 = 75.0;
+
 /// `a unit/mm`, the unit in brackets when it is a ratio.
 fn per_mm(unit: &str, lang: Language) -> String {
     let mm = word(lang, "dynamics.unit_mm");
@@ -172,6 +184,14 @@ impl Chart {
         xr: (f64, f64),
     ) -> Self {
         let (w, h) = slot_mm(slot, sheet);
+        // on the note's page (A4) a diagram's y axis at most NOTE_AXIS_MM
+        // long, μ the next of the standard series: three diagrams with
+        // their captions share a page
+        let h = match (sheet, slot) {
+            (SheetFormat::A4, Slot::Diagram) => h.min(TOP + NOTE_AXIS_MM + BOTTOM),
+            (SheetFormat::A4, Slot::Small) => h.min(TOP + NOTE_SMALL_AXIS_MM + BOTTOM),
+            _ => h,
+        };
         let (mut ya, mut yb) = yr;
         if zero {
             ya = ya.min(0.0);

@@ -693,6 +693,14 @@ fn signed(v: f64, lang: Language) -> String {
     if v < 0.0 { format!("−{t}") } else { t }
 }
 
+/// The greatest height of a plan's vectors on the note's page, mm: the
+/// velocity and the acceleration plan of one position, each with its μ line
+/// (about 8 mm) and its caption and the gaps around it (about 20 mm), stand
+/// together in the text area of an A4 page with the frame (243 mm):
+/// 2 · (95 + 8 + 20) = 246 mm at the worst, the labels usually inside the
+/// vectors' box.
+const PLAN_PAIR_MM: f64 = 95.0;
+
 /// Which plan.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Kind {
@@ -735,7 +743,16 @@ fn plan(task: &TaskSource, kind: Kind, v: &[PlanVector], position: &str) -> Pict
         ymax = ymax.max(p.y);
     }
     let (margin, top) = (14.0, 18.0);
-    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / (h - 2.0 * margin - top));
+    // on the note's page (A4) the two plans of one position share a page:
+    // each plan's vectors at most PLAN_PAIR_MM high, so the pair with its
+    // captions fits the text area (243 mm with the frame), μ the next of
+    // the standard series (`round_mu`: 1, 2, 2.5, 4, 5 · 10ᵏ)
+    let tall = if task.sheet == crate::project::SheetFormat::A4 {
+        PLAN_PAIR_MM
+    } else {
+        h - 2.0 * margin - top
+    };
+    let raw = ((xmax - xmin) / (w - 2.0 * margin)).max((ymax - ymin) / tall);
     let mu = round_mu(raw.max(1e-12));
     let s = 1.0 / mu;
     let cx = 0.5 * w - s * 0.5 * (xmin + xmax);
