@@ -12,7 +12,7 @@ use crate::linkage::Loaded;
 use crate::output::Documents;
 use crate::paper::{Slot, round_mu, slot_mm};
 use crate::picture::Picture;
-use crate::project::Language;
+use crate::project::{Language, SheetFormat};
 use crate::svg::{Anchor, Canvas, Series, Style, mu_text, num, plot_in};
 use crate::words::word;
 use crate::{Error, TaskSource};
@@ -661,8 +661,11 @@ pub fn draw_all(l: &Loaded, _t: &ForcesTask, a: &Analysis, task: &TaskSource, di
     docs.add_text(format!("{dir}balancing-torque.svg"), svg)?;
     // the chosen reactions over the cycle and their hodographs
     if let Some(rc) = &a.reaction_cycle {
+        // 200 × 110 mm on a sheet; on A4 (the note's width, 165 mm) lower,
+        // so that three of them share a page with their captions
+        let height = if task.sheet == SheetFormat::A4 { 85.0 } else { 110.0 };
         for name in &rc.diagrams {
-            if let Some(svg) = rc.diagram(lang, name) {
+            if let Some(svg) = rc.diagram(lang, name, height) {
                 docs.add_text(format!("{dir}reaction-{name}.svg"), svg)?;
             }
         }

@@ -320,8 +320,9 @@ impl ReactionCycle {
     }
 
     /// The diagram of `name` over the cycle: a reaction's x and y
-    /// components and magnitude, or a guide couple.
-    pub fn diagram(&self, lang: Language, name: &str) -> Option<Picture> {
+    /// components and magnitude, or a guide couple; 200 mm wide and
+    /// `height` mm high.
+    pub fn diagram(&self, lang: Language, name: &str, height: f64) -> Option<Picture> {
         let (j, couple) = self.index(name)?;
         let x = |k: usize| self.psi[k].to_degrees();
         let xl = word(lang, "forces.cycle_angle");
@@ -339,7 +340,7 @@ impl ReactionCycle {
                 &format!("{name}, {}", word(lang, "forces.unit_nm")),
                 &s,
                 200.0,
-                110.0,
+                height,
             ));
         }
         let comp = |c: usize| -> Vec<(f64, f64)> {
@@ -376,7 +377,7 @@ impl ReactionCycle {
             &format!("{name}, {}", word(lang, "forces.unit_n")),
             &s,
             200.0,
-            110.0,
+            height,
         ))
     }
 

@@ -652,9 +652,19 @@ pub(crate) fn cycle_diagram(
     // position numbers under the axis, clear of the curve
     // the full turn's end numbered after the last position, unless a
     // position stands there already (a range that ends within 2 mm of it)
-    let end_free = marks.iter().all(|(x, _)| (map(360.0, 0.0).0 - map(*x, 0.0).0).abs() > 2.0);
-    let end = end_free.then(|| (360.0, "12".to_string()));
-    for (x, label) in marks.iter().chain(end.iter()) {
+    // (the cycle's end: 360°, or 720° for a four-stroke engine, numbered
+    // as many as there are positions)
+    let count = marks.iter().filter(|m| !m.1.ends_with('\'')).count();
+    let end_free = marks.iter().all(|(x, _)| (map(span, 0.0).0 - map(*x, 0.0).0).abs() > 2.0);
+    let end = end_free.then(|| (span, count.to_string()));
+    // numbers closer than two digits' width (about 4.5 mm at 2.5 mm
+    // lettering) are written at every other position, the ticks kept
+    let pitch = marks
+        .windows(2)
+        .map(|m| (m[1].0 - m[0].0).abs() / mu_phi)
+        .fold(f64::INFINITY, f64::min);
+    let every = if pitch < 4.5 && count > 12 { 2 } else { 1 };
+    for (i, (x, label)) in marks.iter().chain(end.iter()).enumerate() {
         if label.ends_with('\'') && marks.len() > 1 {
             // the extreme position: its number above the axis
             let (xp, _) = map(*x, 0.0);
@@ -662,11 +672,10 @@ pub(crate) fn cycle_diagram(
             continue;
         }
         let (xp, _) = map(*x, 0.0);
-        let n = if *x >= 360.0 - 1e-9 {
-            (marks.iter().filter(|m| !m.1.ends_with('\'')).count()).to_string()
-        } else {
-            label.clone()
-        };
+        let n = if *x >= span - 1e-9 { count.to_string() } else { label.clone() };
+        if every > 1 && i < marks.len() && label.parse::<usize>().is_ok_and(|k| k % every != 0) {
+            continue;
+        }
         // under the axis unless the curve or a circle passes there: then above
         let (bx0, bx1) = (xp - 1.5, xp + 1.5);
         let hits = |y0: f64, y1: f64| {

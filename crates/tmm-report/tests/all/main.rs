@@ -3,6 +3,7 @@
 //! a module here: run one with `cargo test --release -p tmm-report --test all <module>::`.
 
 mod cam_diagrams;
+mod cycle_marks;
 mod drawings_cam_diagrams;
 mod drawings_dynamics_synthesis;
 mod drawings_gear_cam;
