@@ -332,29 +332,37 @@ fn draw_links(c: &mut Canvas, m: &Mechanism, sol: &Solution, p: &Panel, to: &dyn
                     c.joint(at, JOINT);
                 }
             }
-            Pair::P { guide, d, point, .. } => {
-                let u = tmm_linkage::state::rot(sol.links[guide].u, d);
-                // the guide on the side of the block away from the links
-                // jointed there
-                let here = sol.points[point].p;
-                let mut away = Vec2::new(0.0, 0.0);
-                for q in m.pairs.iter().filter(|q| q.point() == point) {
-                    let (x, y) = q.links();
-                    for li in [x, y].into_iter().filter(|&li| li != 0 && li != guide) {
-                        for jt in joints_of(m, sol, li) {
-                            away += jt - here;
-                        }
-                    }
-                }
-                let n = Vec2::new(-u.y, u.x);
-                let side = if away.dot(n) < 0.0 { -1.0 } else { 1.0 };
-                let dir = (u.x, u.y);
-                let normal = (n.x * side, n.y * side);
+            Pair::P { guide, .. } => {
+                let (dir, normal) = slider_axes(m, sol, pr);
                 slider(c, at, dir, normal, with_frame && p.frame, p.links.contains(&guide) || guide == 0);
             }
         }
         c.reserve_point(at, 1.8);
     }
+}
+
+/// A slider's block axes at its pair: the unit direction of its guide and
+/// the unit normal towards the links jointed at its point (the guide lies
+/// on the other side, `-normal`); ((1, 0), (0, 1)) for a turning pair.
+fn slider_axes(m: &Mechanism, sol: &Solution, pr: &Pair) -> ((f64, f64), (f64, f64)) {
+    let Pair::P { guide, d, point, .. } = *pr else {
+        return ((1.0, 0.0), (0.0, 1.0));
+    };
+    let u = tmm_linkage::state::rot(sol.links[guide].u, d);
+    // the guide on the side of the block away from the links jointed there
+    let here = sol.points[point].p;
+    let mut away = Vec2::new(0.0, 0.0);
+    for q in m.pairs.iter().filter(|q| q.point() == point) {
+        let (x, y) = q.links();
+        for li in [x, y].into_iter().filter(|&li| li != 0 && li != guide) {
+            for jt in joints_of(m, sol, li) {
+                away += jt - here;
+            }
+        }
+    }
+    let n = Vec2::new(-u.y, u.x);
+    let side = if away.dot(n) < 0.0 { -1.0 } else { 1.0 };
+    ((u.x, u.y), (n.x * side, n.y * side))
 }
 
 /// The labels of a panel: each pair's point once, the frame's 0 by its
@@ -382,10 +390,15 @@ fn labels(c: &mut Canvas, m: &Mechanism, sol: &Solution, p: &Panel, to: &dyn Fn(
             if (a == 0 || b == 0) && !done.iter().any(|q| (*q - here).hypot() < 1e-9) {
                 done.push(here);
                 let (x, y) = to(here);
-                // below the ground symbol (a pivot) or beside the guide
+                // below the ground symbol (a pivot) or beyond the guide's
+                // hatching, off the block (not crowded beside the slider's
+                // point and number as "3 B 0")
                 let under = match pr {
                     Pair::R { .. } => (x, y - 3.0 * JOINT * 2.3),
-                    Pair::P { .. } => (x, y),
+                    Pair::P { .. } => {
+                        let (_, (nx, ny)) = slider_axes(m, sol, pr);
+                        (x - nx * 6.5, y - ny * 6.5)
+                    }
                 };
                 c.label_led(under, "0", size, "#000");
             }
@@ -393,8 +406,33 @@ fn labels(c: &mut Canvas, m: &Mechanism, sol: &Solution, p: &Panel, to: &dyn Fn(
     }
     for &li in &p.links {
         let joints = joints_of(m, sol, li);
-        let at = number_spot(&joints).unwrap_or_else(|| joints.first().copied().unwrap_or_default());
-        c.label(to(at), &m.link_names[li], size, "#000");
+        // a slider (one point) numbered beyond its block's end away from
+        // the links jointed at it, apart from its point's letter and the
+        // frame's 0 beyond the guide
+        let block = m
+            .pairs
+            .iter()
+            .find(|pr| matches!(pr, Pair::P { slider, .. } if *slider == li) && joints.len() == 1);
+        let spot = match block {
+            Some(pr) => {
+                let here = sol.points[pr.point()].p;
+                let (x, y) = to(here);
+                let ((ux, uy), (nx, ny)) = slider_axes(m, sol, pr);
+                let mut along = 0.0;
+                for q in m.pairs.iter().filter(|q| q.point() == pr.point()) {
+                    let (a, b) = q.links();
+                    for l in [a, b].into_iter().filter(|&l| l != 0 && l != li) {
+                        for jt in joints_of(m, sol, l) {
+                            along += (jt.x - here.x) * ux + (jt.y - here.y) * uy;
+                        }
+                    }
+                }
+                let s = if along > 0.0 { -1.0 } else { 1.0 };
+                (x + s * ux * 6.5 + nx * 1.5, y + s * uy * 6.5 + ny * 1.5)
+            }
+            None => to(number_spot(&joints).unwrap_or_else(|| joints.first().copied().unwrap_or_default())),
+        };
+        c.label(spot, &m.link_names[li], size, "#000");
     }
 }
 

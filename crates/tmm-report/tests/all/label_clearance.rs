@@ -280,3 +280,39 @@ fn positions_scheme_labels_keep_off_the_scale_line() {
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }
+
+/// The structural scheme letters a slider on the fixed guide apart: the
+/// frame's 0 beyond the guide's hatching, not in one row with the point's
+/// letter and the slider's number ("3 B 0", "0 F 5" of the engine): the
+/// nearest 0 to each slider's letter B, F lies at least 3 mm above or
+/// below it, on the A1 sheet and the note's page, in ru, uk and en.
+#[test]
+fn structure_scheme_puts_the_guides_0_beyond_its_hatching() {
+    let mut bad = Vec::new();
+    let text = examples::text("textbook/p2-engine.toml");
+    for lang in [Language::Ru, Language::Uk, Language::En] {
+        let t = TaskSource::new("textbook/p2-engine.toml", text.clone()).with_lang(lang);
+        let runs = [("A1", run_task(&t).unwrap().docs), ("A4", note_figures(&t, None).unwrap())];
+        for (what, docs) in runs {
+            let pic = docs.picture("linkage/structure.svg").unwrap();
+            let all = crate::label_ink::texts(pic);
+            let centre = |b: &crate::label_ink::InkBox| (0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
+            let zeros: Vec<_> = all.iter().filter(|b| b.text == "0").map(centre).collect();
+            assert!(zeros.len() >= 3, "{lang:?} {what}: the frame's 0 at O and at both guides");
+            for letter in all.iter().filter(|b| b.text == "B" || b.text == "F") {
+                let (x, y) = centre(letter);
+                let near = zeros
+                    .iter()
+                    .min_by(|a, b| (a.0 - x).hypot(a.1 - y).total_cmp(&(b.0 - x).hypot(b.1 - y)))
+                    .unwrap();
+                if (near.1 - y).abs() < 3.0 {
+                    bad.push(format!(
+                        "{lang:?} {what}: 0 in one row with {} ({near:?} by ({x}, {y}))",
+                        letter.text
+                    ));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
