@@ -729,8 +729,11 @@ fn mass_centres(cx: &Ctx) -> Result<String, NoteError> {
 fn planetary_scheme(cx: &Ctx) -> Result<Option<Block>, NoteError> {
     let Some(scheme) = cx.s("/planetary/scheme") else { return Ok(None) };
     let key = format!("pl_scheme_{}", scheme.replace('-', "_"));
-    let words = cx.w(&key).unwrap_or_else(|_| scheme.to_string());
-    Ok(Some(cx.para("assign_pl_scheme", &[words])?))
+    // the scheme's words are the note's own: their symbols (carrier H) stay
+    // marked, unlike a caller's string filled into a place
+    let words = cx.w(&key).unwrap_or_else(|_| crate::notation::strip(scheme));
+    let text = cx.w("assign_pl_scheme")?.replace("{1}", &words);
+    Ok(Some(Block::Paragraph(crate::model::Text::plain(text))))
 }
 
 /// The cam's phases as the task gives them: each phase's kind, angle and
