@@ -62,12 +62,26 @@ pub fn notation(text: &str) -> String {
 /// assert_eq!(notation_with("freedom W = 1", false), format!("freedom {O}W{C} = 1"));
 /// assert_eq!(notation_with("a = b", false), "a = b");
 /// assert_eq!(notation_with("ΔT —", false), format!("{O}Δ T{C} —"));
+/// // `$…$` marks its letters as symbols in every language, a squared one too
+/// assert_eq!(notation_with("per metre $q$,", false), format!("per metre {O}q{C},"));
+/// assert_eq!(notation_with("$k·l²$", false), format!("{O}k{C}·{O}l{C}²"));
+/// assert_eq!(notation_with("5 $ only", false), "5 $ only");
 /// ```
 pub fn notation_with(text: &str, lone_latin: bool) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::new();
     let mut i = 0;
     while i < chars.len() {
+        // `$q$`: the words mark a symbol themselves (a lone Latin letter of
+        // an English label, `$k·m·l²$`): every letter between is one
+        if chars[i] == '$'
+            && let Some(end) = chars[i + 1..].iter().position(|c| *c == '$')
+        {
+            let inner: String = chars[i + 1..i + 1 + end].iter().collect();
+            out.push_str(&notation_with(&inner, true));
+            i += end + 2;
+            continue;
+        }
         // a token starts at a letter that follows a non-letter
         let starts = is_base(chars[i]) && (i == 0 || !is_base(chars[i - 1]) && !chars[i - 1].is_alphanumeric())
             // a Greek letter after a number: 2π as in the formulas' 2𝜋
@@ -171,7 +185,11 @@ fn derivative(s: &[char]) -> Option<(String, usize)> {
 /// are words) a Latin letter other than `a`, `A`, `I` followed by ` = `
 /// is a symbol too (`W = 1`, `D = 426.9 mm`), set as in the formulas.
 fn lone(s: &[char], lone_latin: bool) -> Option<(String, usize)> {
-    let free = |k: usize| s.get(k).is_none_or(|c| !c.is_alphanumeric() && !matches!(c, '_' | '^'));
+    // a square or a cube after the letter (`l²`) leaves it alone
+    let free = |k: usize| {
+        s.get(k)
+            .is_none_or(|c| matches!(c, '²' | '³') || !c.is_alphanumeric() && !matches!(c, '_' | '^'))
+    };
     let c = *s.first()?;
     let equated = !matches!(c, 'a' | 'A' | 'I') && matches!(s.get(1), Some(' ' | '\u{a0}')) && matches!(s.get(2), Some('=' | '≈'));
     let lone_latin = lone_latin || equated;

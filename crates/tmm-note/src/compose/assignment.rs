@@ -101,22 +101,32 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
         }
         let omega = cx.v("/planetary/request/omega1")?;
         let pl = &["planetary"];
-        b.push(cx.quantities(
-            "assign_planetary",
-            vec![
-                (cx.w("q_ratio")?, as_given(cx, pl, cx.v("/planetary/request/ratio")?, "")?),
-                (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
-                (
-                    cx.w("q_module")?,
-                    as_given(cx, pl, cx.v("/planetary/request/module")? * 1e3, "u_mm")?,
-                ),
-                (cx.w("q_omega_sun")?, as_given(cx, pl, omega, "u_rad_s")?),
-                (
-                    cx.w("q_n_sun")?,
-                    as_given(cx, pl, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
-                ),
-            ],
-        )?);
+        let mut rows = vec![(cx.w("q_ratio")?, as_given(cx, pl, cx.v("/planetary/request/ratio")?, "")?)];
+        // the ratio's allowed deviation where the task gives it: as written,
+        // a plain share with its per cent beside it (0,01 (1 %))
+        if let Some(mut t) = task_given(cx, "planetary", "tolerance", "")? {
+            if !t.contains('%')
+                && let Some(x) = task_share(cx, "planetary", "tolerance")
+            {
+                let mut p = given_number(cx, x * 100.0)?;
+                crate::number::push_unit(&mut p, &cx.w("u_percent")?);
+                t = format!("{t} ({p})");
+            }
+            rows.push((cx.w("q_ratio_tolerance")?, t));
+        }
+        rows.extend([
+            (cx.w("q_planets")?, format!("{}", cx.v("/planetary/request/planets")?)),
+            (
+                cx.w("q_module")?,
+                as_given(cx, pl, cx.v("/planetary/request/module")? * 1e3, "u_mm")?,
+            ),
+            (cx.w("q_omega_sun")?, as_given(cx, pl, omega, "u_rad_s")?),
+            (
+                cx.w("q_n_sun")?,
+                as_given(cx, pl, omega.abs() * 30.0 / std::f64::consts::PI, "u_rpm")?,
+            ),
+        ]);
+        b.push(cx.quantities("assign_planetary", rows)?);
     }
     if cx.report.get("cam").is_some() {
         b.push(cx.quantities("assign_cam", super::cam::given_rows(cx)?)?);
@@ -246,6 +256,7 @@ pub(crate) fn quantity_text(cx: &Ctx, v: &toml::Value) -> Result<String, NoteErr
         "rpm" => (1.0, "u_rpm"),
         "rad/s" => (1.0, "u_rad_s"),
         "m/s" => (1.0, "u_m_s"),
+        "%" => (1.0, "u_percent"),
         _ => {
             let s = match v {
                 toml::Value::String(s) => s.clone(),
@@ -433,6 +444,40 @@ pub(crate) fn as_given(cx: &Ctx, sections: &[&str], x: f64, unit: &str) -> Resul
             Ok(s)
         }
     }
+}
+
+/// The task's `[section]`'s `key` as the task writes it, `None` where the
+/// task does not give it: a quantity with its unit in the note's words
+/// (`"10 mm"` → «10 мм», `"1 %"` → «1 %»), a fraction as written
+/// (`"1/4"`), a plain number (SI, as the task reader takes it) in the
+/// note's unit of the words key `unit` with its own digits (`0.01` of a
+/// length → «10 мм»).
+pub(crate) fn task_given(cx: &Ctx, section: &str, key: &str, unit: &str) -> Result<Option<String>, NoteError> {
+    let Some(v) = cx.task.get(section).and_then(|s| s.get(key)) else {
+        return Ok(None);
+    };
+    match task_quantity(v) {
+        Some((x, u)) if u.is_empty() => {
+            let si = note_unit_si(unit).map_or(1.0, |(f, _)| f);
+            as_given(cx, &[section], x / si, unit).map(Some)
+        }
+        _ => quantity_text(cx, v).map(Some),
+    }
+}
+
+/// A share the task gives as `key` of `[section]` (`0.3`, `"1/4"`,
+/// `"30 %"`) as a number (0,3; 0,25; 0,3).
+pub(crate) fn task_share(cx: &Ctx, section: &str, key: &str) -> Option<f64> {
+    let v = cx.task.get(section)?.get(key)?;
+    if let Some(x) = task_fraction(v) {
+        return Some(x);
+    }
+    match task_quantity(v)? {
+        (x, u) if u.is_empty() => Some(x),
+        (x, u) if u == "%" => Some(x / 100.0),
+        _ => None,
+    }
+    .filter(|x| x.is_finite())
 }
 
 /// The task's `[section]`'s `key` as written where it is a length
@@ -684,8 +729,11 @@ fn mass_centres(cx: &Ctx) -> Result<String, NoteError> {
 fn planetary_scheme(cx: &Ctx) -> Result<Option<Block>, NoteError> {
     let Some(scheme) = cx.s("/planetary/scheme") else { return Ok(None) };
     let key = format!("pl_scheme_{}", scheme.replace('-', "_"));
-    let words = cx.w(&key).unwrap_or_else(|_| scheme.to_string());
-    Ok(Some(cx.para("assign_pl_scheme", &[words])?))
+    // the scheme's words are the note's own: their symbols (carrier H) stay
+    // marked, unlike a caller's string filled into a place
+    let words = cx.w(&key).unwrap_or_else(|_| crate::notation::strip(scheme));
+    let text = cx.w("assign_pl_scheme")?.replace("{1}", &words);
+    Ok(Some(Block::Paragraph(crate::model::Text::plain(text))))
 }
 
 /// The cam's phases as the task gives them: each phase's kind, angle and

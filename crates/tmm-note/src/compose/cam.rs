@@ -30,6 +30,13 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     {
         rows.push((cx.w("q_roller")?, as_given(cx, CAM, r * 1000.0, "u_mm")?));
     }
+    // the profile's least radius of curvature and the flat face's margin
+    // where the task gives them (ρ_min = 10 мм, 5 мм)
+    for (key, word) in [("min_curvature", "q_min_curvature"), ("face_margin", "q_face_margin")] {
+        if let Some(v) = super::assignment::task_given(cx, "cam", key, "u_mm")? {
+            rows.push((cx.w(word)?, v));
+        }
+    }
     if let Some(p) = cx.opt("/cam/pressure_angle_limit_rise") {
         rows.push((cx.w("q_limit_rise")?, as_given(cx, CAM, p.to_degrees(), "u_deg")?));
     }

@@ -33,6 +33,21 @@ pub(crate) fn given_rows(cx: &Ctx) -> Result<Vec<(String, String)>, NoteError> {
     if cx.task.get("gear").and_then(|g| g.get("aw")).is_some() {
         rows.push((cx.w("q_aw")?, as_given(cx, GEAR, cx.v("/gear/aw")? * 1000.0, "u_mm")?));
     }
+    // the least tip thickness where the task gives it, a share of the
+    // module as written and in mm (s_a min = 0,3·m = 1,5 мм; ГОСТ 16532-70)
+    if let Some(given) = super::assignment::task_given(cx, "gear", "sa_min", "")? {
+        let m = cx.v("/gear/m")? * 1000.0;
+        let value = match super::assignment::task_share(cx, "gear", "sa_min") {
+            Some(share) if given.contains('%') => format!("{given} ({})", cx.q(share * m, "u_mm")?),
+            Some(share) => format!(
+                "{given}·{} = {}",
+                crate::notation::notation_with("m", true),
+                cx.q(share * m, "u_mm")?
+            ),
+            None => given,
+        };
+        rows.push((cx.w("q_sa_min")?, value));
+    }
     Ok(rows)
 }
 

@@ -130,3 +130,66 @@ fn no_raw_notation_in_the_engine_and_six_bar_notes() {
         assert!(flat.is_empty(), "{file}: {} flat Greek symbols: {flat:#?}", flat.len());
     }
 }
+
+/// The plain (not typeset) Latin letters of an English words text that are
+/// symbols: one standing alone at the text's end ("Module m", "Number of
+/// planets k") or a lower-case one in a product of such letters ("k·m·l²",
+/// "q·l"; not a unit's "kg·m" nor "N·m").
+fn upright_symbols(marked: &str) -> Vec<String> {
+    let pieces = tmm_note::notation::runs(marked);
+    let mut found = Vec::new();
+    for (n, (math, run)) in pieces.iter().enumerate() {
+        if *math {
+            continue;
+        }
+        let c: Vec<char> = run.chars().collect();
+        let lone = |i: usize| {
+            c[i].is_ascii_alphabetic()
+                && (i == 0 || !c[i - 1].is_alphanumeric())
+                && c.get(i + 1).is_none_or(|d| !d.is_alphanumeric() || matches!(d, '²' | '³'))
+        };
+        let last = n + 1 == pieces.len();
+        // not the unit after a name's comma ("the lengths …, m")
+        let unit = c.len() >= 3 && c[c.len() - 3] == ',';
+        if last && !unit && c.len() >= 2 && c[c.len() - 2] == ' ' && lone(c.len() - 1) && !matches!(c[c.len() - 1], 'a' | 'A' | 'I') {
+            found.push(run.clone());
+        }
+        for i in 0..c.len() {
+            let product = c.get(i + 1) == Some(&'·') && c.get(i + 2).is_some_and(|d| d.is_ascii_lowercase()) && lone(i + 2)
+                || i >= 2 && c[i - 1] == '·' && c[i - 2].is_ascii_lowercase() && lone(i - 2);
+            if c[i].is_ascii_lowercase() && lone(i) && product {
+                found.push(run.clone());
+            }
+        }
+    }
+    found
+}
+
+/// Every English words text sets its symbols as the formulas do: a letter
+/// standing alone at a label's end (the module m, the planets' number k,
+/// the follower's stroke h) and the letters of a product (q of m = q·l, k
+/// of J_S = k·m·l²) are math, as the Russian and Ukrainian texts set them.
+/// Failed before: `q_mass_per_length`, `q_inertia_k`, `q_module`,
+/// `q_planets` and 20 more printed upright "q", "k", "m".
+#[test]
+fn english_labels_typeset_their_lone_and_product_symbols() {
+    assert_eq!(upright_symbols("Module m").len(), 1);
+    assert_eq!(upright_symbols("J_S = k·m·l²").len(), 3);
+    assert!(upright_symbols("Moment, N·m; inertia, kg·m²; a share of a").is_empty());
+    assert!(upright_symbols("the lengths of the links, m").is_empty());
+    let words = tmm_note::compose::Words::load(tmm_note::Lang::En).unwrap();
+    let mut raw = Vec::new();
+    for key in words.keys() {
+        let marked = tmm_note::notation::notation_with(words.get(key).unwrap(), false);
+        let found = upright_symbols(&marked);
+        if !found.is_empty() {
+            raw.push(format!("{key}: {found:?}"));
+        }
+    }
+    assert!(
+        raw.is_empty(),
+        "{} English texts with upright symbols:\n{}",
+        raw.len(),
+        raw.join("\n")
+    );
+}

@@ -111,8 +111,17 @@ fn the_crank_rockers_frame_angle_is_printed_in_degrees() {
         }
         let frame: Vec<_> = angles
             .iter()
-            .filter(|(k, _)| k.contains("стойки") || k.contains("стояка") || k.contains("Frame"))
+            .filter(|(k, _)| k.contains("стойки") || k.contains("стояка") || k.to_lowercase().contains("frame"))
             .collect();
+        // δ of the synthesis (tmm-linkage's `FrameAngle`, docs/synthesis.md
+        // § 4): the angle from the frame line to the bisector of the
+        // rocker's swing, not an angle from the vertical
+        for (k, _) in &frame {
+            assert!(
+                ["биссектрис", "бісектрис", "bisector"].iter().any(|w| k.contains(w)) && !k.contains("вертикал") && !k.contains("vertical"),
+                "{lang:?}: «{k}» does not name the angle the synthesis takes"
+            );
+        }
         assert_eq!(
             frame.len(),
             2,
