@@ -67,18 +67,41 @@ pub(crate) fn blocks(cx: &Ctx) -> Result<Vec<Block>, NoteError> {
             b.push(cx.quantities("assign_forces", given)?);
         }
         let mut rows = Vec::new();
-        if let Some(links) = cx.report.pointer("/forces/links").and_then(|v| v.as_object()) {
+        // the masses and inertias the task gives link by link are among
+        // the givens above as written: the table lists those the mass rule
+        // computes
+        let given = |key: &str| {
+            cx.task
+                .get("forces")
+                .and_then(|f| f.get("links"))
+                .and_then(toml::Value::as_table)
+                .map_or(0, |ls| ls.values().filter(|l| l.get(key).is_some()).count())
+        };
+        let links_n = cx
+            .report
+            .pointer("/forces/links")
+            .and_then(|v| v.as_object())
+            .map_or(0, |l| l.len());
+        let all_given = links_n > 0 && given("mass") >= links_n && given("inertia") >= links_n;
+        if let Some(links) = cx
+            .report
+            .pointer("/forces/links")
+            .and_then(|v| v.as_object())
+            .filter(|_| !all_given)
+        {
             for (name, l) in links {
                 let m = l.get("mass").and_then(|v| v.as_f64()).unwrap_or(0.0);
                 let j = l.get("inertia").and_then(|v| v.as_f64()).unwrap_or(0.0);
                 rows.push(vec![text(cx.fill("link_n", std::slice::from_ref(name))?), num(m), num(j)]);
             }
         }
-        b.push(cx.table(
-            "assign_masses",
-            &[("col_link", ""), ("col_mass", "u_kg"), ("col_inertia", "u_kgm2")],
-            rows,
-        )?);
+        if !rows.is_empty() {
+            b.push(cx.table(
+                "assign_masses",
+                &[("col_link", ""), ("col_mass", "u_kg"), ("col_inertia", "u_kgm2")],
+                rows,
+            )?);
+        }
     }
     if cx.report.get("dynamics").is_some() && cx.s("/dynamics/motion") != Some("single-stroke") {
         b.push(cx.quantities(

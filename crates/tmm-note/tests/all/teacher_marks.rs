@@ -4,8 +4,10 @@
 //! kinetostatics of the engine (whose crank turns at the true ω1(φ) of the
 //! dynamics) said to turn uniformly, the engine's constant moment called a
 //! driving torque, the task's keys `R30`, `R21` printed raw in captions and
-//! the centres of mass `S1`, `S2` raw in the plan's table. Each test reads
-//! the composed note against the task file's givens.
+//! the centres of mass `S1`, `S2` raw in the plan's table, the masses the
+//! task gives link by link repeated in a table of computed values
+//! («0,3400» for the given 0.34 kg). Each test reads the composed note
+//! against the task file's givens.
 
 use tmm_note::notation::{MATH_OPEN, runs, strip};
 use tmm_note::{Block, Cell, Note, Section, Span, compose};
@@ -218,5 +220,54 @@ fn the_cycles_reactions_and_the_plans_points_are_typeset() {
         }
         // the task's diagrams R30, R50 and the hodographs of R21 (two)
         assert_eq!(captions, 4, "{lang:?}");
+    }
+}
+
+/// П2 gives every link's mass and inertia («0.34 kg», «0.002 kg m^2»): the
+/// assignment prints each as written, and no table repeats them with the
+/// digits of a computed value («0,3400», «0,002000»).
+#[test]
+fn masses_given_link_by_link_are_printed_as_written_once() {
+    let text = tmm_testkit::examples::text("textbook/p2-engine.toml");
+    let t: toml::Table = toml::from_str(&text).unwrap();
+    let links = t["forces"]["links"].as_table().expect("П2 gives its links' masses");
+    let mut given = Vec::new();
+    for l in links.values() {
+        for key in ["mass", "inertia"] {
+            let v = l[key].as_str().expect("a quantity with its unit");
+            given.push(v.split_whitespace().next().unwrap().to_string());
+        }
+    }
+    for lang in LANGS {
+        let n = note("textbook/p2-engine.toml", lang);
+        // every cell as printed, a number cell with its digits
+        let mut cells = Vec::new();
+        for b in &n.assignment {
+            if let Block::Table { rows, .. } = b {
+                cells.extend(rows.iter().flatten().map(|c| {
+                    match c {
+                        Cell::Number { value, digits } => tmm_note::number::format_number(*value, *digits, n.lang)
+                            .map(|f| f.to_string())
+                            .unwrap_or_default(),
+                        c => cell_text(c),
+                    }
+                }));
+            }
+        }
+        for g in &given {
+            let want: f64 = g.parse().unwrap();
+            let written = if lang == Language::En { g.clone() } else { g.replace('.', ",") };
+            for c in &cells {
+                let Some(first) = c.split_whitespace().next() else { continue };
+                let Some(x) = number(first) else { continue };
+                if x == want && want != 0.0 {
+                    assert_eq!(first, written, "{lang:?}: the given {g} printed as «{c}»");
+                }
+            }
+            assert!(
+                want == 0.0 || cells.iter().any(|c| c.starts_with(&written)),
+                "{lang:?}: the given {g} is not in the assignment"
+            );
+        }
     }
 }
