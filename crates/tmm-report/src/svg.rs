@@ -1431,7 +1431,7 @@ pub fn plot_with_impulses_in(
         if series.len() > 1 || !s.name.is_empty() {
             let ly = 14.0 + 4.5 * k as f64;
             // the legend's column as far right as its longest name allows
-            let longest = series.iter().map(|s| s.name.chars().count()).max().unwrap_or(0);
+            let longest = series.iter().map(|s| shown_len(s.name)).max().unwrap_or(0);
             let lx = (width - 2.0 - text_width(2.8, longest)).min(width - 40.0);
             c.line_paper(
                 (lx - 8.0, ly - 1.0),
@@ -1443,7 +1443,8 @@ pub fn plot_with_impulses_in(
                     fill: None,
                 },
             );
-            c.text_paper((lx, ly), s.name, 2.8, Anchor::Start, "#000");
+            // the legend in the course's notation (R_{30x} is R₃₀ₓ)
+            c.rich_paper((lx, ly), s.name, 2.8, Anchor::Start, "#000");
         }
     }
     for (k, imp) in impulses.iter().enumerate() {

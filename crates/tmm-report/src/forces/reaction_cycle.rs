@@ -335,9 +335,9 @@ impl ReactionCycle {
             }];
             return Some(plot_in(
                 lang,
-                &format!("{}: {name}", word(lang, "forces.couple_title")),
+                &format!("{}: {}", word(lang, "forces.couple_title"), typeset(name, "")),
                 xl,
-                &format!("{name}, {}", word(lang, "forces.unit_nm")),
+                &format!("M, {}", word(lang, "forces.unit_nm")),
                 &s,
                 200.0,
                 height,
@@ -352,7 +352,7 @@ impl ReactionCycle {
                 .collect()
         };
         let (px, py, pm) = (comp(0), comp(1), comp(2));
-        let (nx, ny, nm) = (format!("{name}x"), format!("{name}y"), format!("|{name}|"));
+        let (nx, ny, nm) = (typeset(name, "x"), typeset(name, "y"), format!("|{}|", typeset(name, "")));
         let s = [
             Series {
                 name: &nx,
@@ -372,9 +372,9 @@ impl ReactionCycle {
         ];
         Some(plot_in(
             lang,
-            &format!("{}: {name}", word(lang, "forces.reaction_title")),
+            &format!("{}: {}", word(lang, "forces.reaction_title"), typeset(name, "")),
             xl,
-            &format!("{name}, {}", word(lang, "forces.unit_n")),
+            &format!("R, {}", word(lang, "forces.unit_n")),
             &s,
             200.0,
             height,
@@ -413,8 +413,9 @@ impl ReactionCycle {
         let mut c = Canvas::new(w, h);
         c.fit((xmin, xmax, ymin, ymax), (18.0, 14.0, w - 32.0, h - 34.0));
         let title = format!(
-            "{} {name}{}",
+            "{} {}{}",
             word(lang, "forces.hodograph_title"),
+            typeset(name, ""),
             if polar {
                 format!(" ({})", word(lang, "forces.hodograph_polar"))
             } else {
@@ -444,12 +445,19 @@ impl ReactionCycle {
                 c.line((0.0, 0.0), e, Style::THIN.colored("#a0a0a0"));
                 c.text_colored((e.0 * 1.02, e.1 * 1.02), &format!("{}°", 30 * k), 2.5, Anchor::Middle, "#606060");
             }
-            c.text_paper((w - 10.0, h - 6.0), &format!("|{name}|, {unit}"), 3.0, Anchor::End, "#000000");
+            c.rich_paper(
+                (w - 10.0, h - 6.0),
+                &format!("|{}|, {unit}", typeset(name, "")),
+                3.0,
+                Anchor::End,
+                "#000000",
+            );
         } else {
             c.arrow((xmin, 0.0), (xmax, 0.0), Style::THIN, 2.5);
             c.arrow((0.0, ymin), (0.0, ymax), Style::THIN, 2.5);
-            c.text((xmax, 0.0), &format!("{name}x, {unit}"), 3.0, Anchor::End);
-            c.text((0.0, ymax), &format!(" {name}y, {unit}"), 3.0, Anchor::Start);
+            let (px, py) = (c.to_paper(xmax, 0.0), c.to_paper(0.0, ymax));
+            c.rich_paper(px, &format!("{}, {unit}", typeset(name, "x")), 3.0, Anchor::End, "#000000");
+            c.rich_paper(py, &format!(" {}, {unit}", typeset(name, "y")), 3.0, Anchor::Start, "#000000");
             let t = nice((xmax - xmin).max(ymax - ymin) / 6.0);
             let mut v = (xmin / t).ceil() * t;
             while v <= xmax {
@@ -511,4 +519,20 @@ fn nice(x: f64) -> f64 {
         }
     }
     10.0 * p
+}
+
+/// A reaction's or a couple's task name in the course's notation: `R30` →
+/// `R_{30}` (R₃₀), `M50` → `M_{50}`, with `extra` appended to the index
+/// (`R_{30x}`, the component along x).
+///
+/// ```
+/// assert_eq!(tmm_report::forces::reaction_cycle::typeset("R30", ""), "R_{30}");
+/// assert_eq!(tmm_report::forces::reaction_cycle::typeset("R21", "x"), "R_{21x}");
+/// ```
+pub fn typeset(name: &str, extra: &str) -> String {
+    let mut chars = name.chars();
+    match chars.next() {
+        Some(head) if !chars.as_str().is_empty() => format!("{head}_{{{}{extra}}}", chars.as_str()),
+        _ => format!("{name}{extra}"),
+    }
 }
