@@ -255,6 +255,19 @@ fn level_names_keep_off_the_curves() {
     assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
 }
 
+/// The П2 engine's drawings in ru, uk and en, each on the A1 sheet and on
+/// the note's page: (language, "A1" or "A4", the run's documents).
+fn engine_drawings() -> Vec<(Language, &'static str, tmm_report::output::Documents)> {
+    let text = examples::text("textbook/p2-engine.toml");
+    let mut out = Vec::new();
+    for lang in [Language::Ru, Language::Uk, Language::En] {
+        let t = TaskSource::new("textbook/p2-engine.toml", text.clone()).with_lang(lang);
+        out.push((lang, "A1", run_task(&t).unwrap().docs));
+        out.push((lang, "A4", note_figures(&t, None).unwrap()));
+    }
+    out
+}
+
 /// The scheme in 12 positions keeps its scale line clear: no link number
 /// or other label prints into "М 1:4, μ_l = 0,004 м/мм" (the engine's short
 /// crank once put its number 1 between "1:4," and "μ_l" on the note's
@@ -262,19 +275,14 @@ fn level_names_keep_off_the_curves() {
 #[test]
 fn positions_scheme_labels_keep_off_the_scale_line() {
     let mut bad = Vec::new();
-    let text = examples::text("textbook/p2-engine.toml");
-    for lang in [Language::Ru, Language::Uk, Language::En] {
-        let t = TaskSource::new("textbook/p2-engine.toml", text.clone()).with_lang(lang);
-        let runs = [("A1", run_task(&t).unwrap().docs), ("A4", note_figures(&t, None).unwrap())];
-        for (what, docs) in runs {
-            let pic = docs.picture("linkage/positions.svg").unwrap();
-            let all = crate::label_ink::texts(pic);
-            let scale: Vec<_> = all.iter().filter(|b| b.text.contains("μ")).collect();
-            assert_eq!(scale.len(), 1, "{lang:?} {what}: one scale line among {all:?}");
-            for b in all.iter().filter(|b| !b.text.contains("μ")) {
-                if b.gap(scale[0]) < 0.3 {
-                    bad.push(format!("{lang:?} {what}: «{}» on the scale line «{}»", b.text, scale[0].text));
-                }
+    for (lang, what, docs) in engine_drawings() {
+        let pic = docs.picture("linkage/positions.svg").unwrap();
+        let all = crate::label_ink::texts(pic);
+        let scale: Vec<_> = all.iter().filter(|b| b.text.contains("μ")).collect();
+        assert_eq!(scale.len(), 1, "{lang:?} {what}: one scale line among {all:?}");
+        for b in all.iter().filter(|b| !b.text.contains("μ")) {
+            if b.gap(scale[0]) < 0.3 {
+                bad.push(format!("{lang:?} {what}: «{}» on the scale line «{}»", b.text, scale[0].text));
             }
         }
     }
@@ -289,28 +297,23 @@ fn positions_scheme_labels_keep_off_the_scale_line() {
 #[test]
 fn structure_scheme_puts_the_guides_0_beyond_its_hatching() {
     let mut bad = Vec::new();
-    let text = examples::text("textbook/p2-engine.toml");
-    for lang in [Language::Ru, Language::Uk, Language::En] {
-        let t = TaskSource::new("textbook/p2-engine.toml", text.clone()).with_lang(lang);
-        let runs = [("A1", run_task(&t).unwrap().docs), ("A4", note_figures(&t, None).unwrap())];
-        for (what, docs) in runs {
-            let pic = docs.picture("linkage/structure.svg").unwrap();
-            let all = crate::label_ink::texts(pic);
-            let centre = |b: &crate::label_ink::InkBox| (0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
-            let zeros: Vec<_> = all.iter().filter(|b| b.text == "0").map(centre).collect();
-            assert!(zeros.len() >= 3, "{lang:?} {what}: the frame's 0 at O and at both guides");
-            for letter in all.iter().filter(|b| b.text == "B" || b.text == "F") {
-                let (x, y) = centre(letter);
-                let near = zeros
-                    .iter()
-                    .min_by(|a, b| (a.0 - x).hypot(a.1 - y).total_cmp(&(b.0 - x).hypot(b.1 - y)))
-                    .unwrap();
-                if (near.1 - y).abs() < 3.0 {
-                    bad.push(format!(
-                        "{lang:?} {what}: 0 in one row with {} ({near:?} by ({x}, {y}))",
-                        letter.text
-                    ));
-                }
+    for (lang, what, docs) in engine_drawings() {
+        let pic = docs.picture("linkage/structure.svg").unwrap();
+        let all = crate::label_ink::texts(pic);
+        let centre = |b: &crate::label_ink::InkBox| (0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
+        let zeros: Vec<_> = all.iter().filter(|b| b.text == "0").map(centre).collect();
+        assert!(zeros.len() >= 3, "{lang:?} {what}: the frame's 0 at O and at both guides");
+        for letter in all.iter().filter(|b| b.text == "B" || b.text == "F") {
+            let (x, y) = centre(letter);
+            let near = zeros
+                .iter()
+                .min_by(|a, b| (a.0 - x).hypot(a.1 - y).total_cmp(&(b.0 - x).hypot(b.1 - y)))
+                .unwrap();
+            if (near.1 - y).abs() < 3.0 {
+                bad.push(format!(
+                    "{lang:?} {what}: 0 in one row with {} ({near:?} by ({x}, {y}))",
+                    letter.text
+                ));
             }
         }
     }
